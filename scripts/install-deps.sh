@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs kinestat's build and test dependencies from Debian 12 packages, only those missing.
+# Runs as root on CI; uses sudo otherwise.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libeigen3-dev            # dense linear algebra
+  libsuitesparse-dev       # CHOLMOD (sparse Cholesky), with METIS ordering
+  libopenblas0-pthread     # optimized BLAS under CHOLMOD's supernodal factorization
+  libcgal-dev              # Mesh_3 tetrahedral meshing
+  libvtk9-dev              # VTK XML (.vtu/.pvd) output for ParaView
+  libgtest-dev libgmock-dev
+  libbenchmark-dev
+  libyaml-cpp-dev          # structure files
+  libcli11-dev             # command-line options
+  nlohmann-json3-dev       # JSON results
+  libfmt-dev               # formatting
+  libtbb-dev               # threads (FEA assembly)
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all dependencies present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

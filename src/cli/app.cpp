@@ -1,0 +1,29 @@
+#include "cli/app.hpp"
+
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+
+namespace kinestat::cli {
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). SI units unless a file says otherwise."};
+  app.require_subcommand(1);
+  Context ctx{out, err};
+  // Every subcommand is listed here once.
+  for (const CommandRegistrar& r : std::initializer_list<CommandRegistrar>{
+           register_solve_command,
+           register_fivebar_command,
+       })
+    r(app, ctx);
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ParseError& e) {
+    // --help prints and returns 0; a bad option prints CLI11's message and is bad input.
+    return app.exit(e, out, err) == 0 ? kExitOk : kExitBadInput;
+  }
+  return ctx.exit_code;
+}
+
+}  // namespace kinestat::cli

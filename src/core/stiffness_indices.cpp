@@ -1,0 +1,55 @@
+#include "core/stiffness_indices.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace kinestat {
+
+StiffnessIndices stiffness_indices(const MatX& K) {
+  StiffnessIndices s;
+  s.size = static_cast<int>(K.rows());
+  if (K.rows() == 0 || K.rows() != K.cols()) return s;
+  const double fro = K.norm();
+  s.norm_frobenius = fro;
+  s.symmetry_error = fro > 0 ? (K - K.transpose()).norm() / fro : 0.0;
+  s.trace = K.trace();
+  s.norm_1 = K.cwiseAbs().colwise().sum().maxCoeff();
+  s.norm_inf = K.cwiseAbs().rowwise().sum().maxCoeff();
+  s.max_abs_entry = K.cwiseAbs().maxCoeff();
+
+  const MatX Ks = 0.5 * (K + K.transpose());
+  Eigen::SelfAdjointEigenSolver<MatX> eig(Ks);
+  s.eigenvalues = eig.eigenvalues();
+  s.eigenvectors = eig.eigenvectors();
+  const VecX a = s.eigenvalues.cwiseAbs();
+  s.norm_2 = a.maxCoeff();
+  const double amin = a.minCoeff();
+  s.condition_number = amin > 0 ? s.norm_2 / amin : std::numeric_limits<double>::infinity();
+
+  // Determinant through an LU factorization with partial pivoting, accumulated in logs.
+  Eigen::PartialPivLU<MatX> lu(K);
+  const MatX& LU = lu.matrixLU();
+  int sign = lu.permutationP().determinant();
+  double log10_det = 0.0;
+  for (Eigen::Index i = 0; i < LU.rows(); ++i) {
+    const double d = LU(i, i);
+    if (d == 0.0) {
+      sign = 0;
+      break;
+    }
+    if (d < 0) sign = -sign;
+    log10_det += std::log10(std::abs(d));
+  }
+  s.det_sign = sign;
+  s.log10_abs_det = sign == 0 ? -std::numeric_limits<double>::infinity() : log10_det;
+  if (sign == 0) {
+    s.determinant = 0.0;
+  } else if (log10_det > 307.0) {
+    s.determinant = sign * std::numeric_limits<double>::infinity();
+  } else {
+    s.determinant = sign * std::pow(10.0, log10_det);
+  }
+  return s;
+}
+
+}  // namespace kinestat

@@ -1,0 +1,16 @@
+// Linear elastic isotropic material. Units: Pa (N/m^2) in SI.
+#pragma once
+
+#include <string>
+
+namespace kinestat {
+
+struct Material {
+  std::string id;
+  double E = 0.0;    // Young's modulus
+  double G = 0.0;    // shear modulus
+  double nu() const { return E / (2.0 * G) - 1.0; }
+  static Material from_E_nu(std::string id, double E, double nu) { return {std::move(id), E, E / (2.0 * (1.0 + nu))}; }
+};
+
+}  // namespace kinestat

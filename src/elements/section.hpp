@@ -1,0 +1,32 @@
+// Cross-section properties of a prismatic beam, in the beam's local axes (x along the beam).
+// Units: m^2 for areas, m^4 for second moments and the torsion constant.
+#pragma once
+
+#include <string>
+
+namespace kinestat {
+
+struct Section {
+  std::string id;
+  double A = 0.0;    // area
+  double Iy = 0.0;   // second moment about local y (bending in the local x-z plane)
+  double Iz = 0.0;   // second moment about local z (bending in the local x-y plane)
+  double J = 0.0;    // Saint-Venant torsion constant
+  double Asy = 0.0;  // shear area along local y (Timoshenko); 0 = no shear deformation
+  double Asz = 0.0;  // shear area along local z
+};
+
+// Standard shapes. Shear areas use the usual shear coefficients: 9/10 for a solid circle,
+// 1/2 for a thin tube, 5/6 for a rectangle, the webs for a hollow rectangle.
+Section circle_section(double diameter);
+Section tube_section(double outer_diameter, double wall);
+// Rectangle of width b (along local y) and height h (along local z). J from the exact
+// Saint-Venant series (Timoshenko & Goodier), not the thin-strip approximation.
+Section rectangle_section(double b, double h);
+// Hollow rectangle, outer b x h, wall t (constant). J from Bredt's thin-wall formula.
+Section hollow_rectangle_section(double b, double h, double t);
+
+// Saint-Venant torsion constant of a solid b x h rectangle.
+double rectangle_torsion_constant(double b, double h);
+
+}  // namespace kinestat

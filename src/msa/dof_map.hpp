@@ -1,0 +1,38 @@
+// Reduction of the 6N nodal dofs to the independent unknowns: u = C q + u0.
+// C removes supported dofs (also in a rotated support frame) and eliminates rigid links and the rigid
+// components of joints (master-slave elimination, exact, no penalty); u0 holds prescribed displacements.
+#pragma once
+
+#include <vector>
+
+#include "core/status.hpp"
+#include "msa/structure.hpp"
+#include "solver/sparse_cholesky.hpp"
+
+namespace kinestat::msa {
+
+struct ReducedDof {
+  int node = -1;
+  int component = 0;           // 0..5 in `frame`
+  Mat3 frame = Mat3::Identity();  // axes in which the component is measured (support or tie frame)
+};
+
+struct DofMap {
+  solver::SparseMatrix C;            // 6N x n_free
+  std::vector<ReducedDof> reduced;   // what each column of C is
+  std::vector<bool> supported_node;  // node has a support
+  std::vector<int> slave_of_tie;     // per node: index into ties, or -1
+  struct Tie { int master, slave; DofMask mask; Mat3 frame; int joint = -1; };  // joint: source joint or -1
+  std::vector<Tie> ties;
+  int num_free() const { return static_cast<int>(C.cols()); }
+};
+
+StatusOr<DofMap> build_dof_map(const Structure& s);
+
+// Prescribed nodal displacements of a load case (6N, global axes).
+VecX prescribed_displacements(const Structure& s, const LoadCase& lc);
+
+// Nodal loads of a load case (6N, global axes).
+VecX nodal_loads(const Structure& s, const LoadCase& lc);
+
+}  // namespace kinestat::msa

@@ -1,0 +1,103 @@
+// msa::full_report: the human-readable summary printed by `kinestat solve` and `kinestat fivebar`.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "msa/static_analysis.hpp"
+
+namespace kinestat::msa {
+namespace {
+
+const char* kDofUnits[6] = {"m", "m", "m", "rad", "rad", "rad"};
+
+std::string matrix6(const Mat6& M, const char* title, const char* units) {
+  std::string out = fmt::format("  {} [{}]\n", title, units);
+  static const char* names[6] = {"x", "y", "z", "rx", "ry", "rz"};
+  out += "          ";
+  for (const char* n : names) out += fmt::format("{:>12}", n);
+  out += "\n";
+  for (int i = 0; i < 6; ++i) {
+    out += fmt::format("    {:>4}  ", names[i]);
+    for (int j = 0; j < 6; ++j) out += fmt::format("{:>12.4e}", M(i, j));
+    out += "\n";
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string indices_report(const StiffnessIndices& ix) {
+  std::string out;
+  out += fmt::format("    size {}x{}, symmetry error {:.1e}\n", ix.size, ix.size, ix.symmetry_error);
+  out += fmt::format("    determinant       {} (sign {}, log10|det| = {:.4f})\n",
+                     std::isfinite(ix.determinant) ? fmt::format("{:.4e}", ix.determinant) : std::string("overflows double"),
+                     ix.det_sign, ix.log10_abs_det);
+  out += fmt::format("    trace             {:.4e}\n", ix.trace);
+  out += fmt::format("    1-norm            {:.4e}\n", ix.norm_1);
+  out += fmt::format("    2-norm            {:.4e}\n", ix.norm_2);
+  out += fmt::format("    Frobenius norm    {:.4e}\n", ix.norm_frobenius);
+  out += fmt::format("    inf-norm (rows)   {:.4e}\n", ix.norm_inf);
+  out += fmt::format("    max |k_ij|        {:.4e}\n", ix.max_abs_entry);
+  out += fmt::format("    condition number  {:.4e}\n", ix.condition_number);
+  return out;
+}
+
+std::string full_report(const Structure& s, const Solution& sol) {
+  std::string out;
+  out += fmt::format("kinestat MSA report{}\n", s.title().empty() ? "" : ": " + s.title());
+  out += fmt::format("  model: {} nodes, {} beams, {} joints, {} rigid links, {} supports, {} load cases\n",
+                     s.nodes().size(), s.beams().size(), s.joints().size(), s.rigid_links().size(),
+                     s.supports().size(), s.load_cases().size());
+  out += fmt::format("  dofs: {} total, {} free after supports and constraints\n", sol.num_dofs, sol.num_free_dofs);
+  const auto& f = sol.factorization;
+  if (f.n > 0) {
+    out += fmt::format("  solver: {}\n", sol.backend);
+    out += fmt::format("  factorization: {} {} ordering, nnz(K) = {}, nnz(L) = {}, {:.3g} Mflop, symbolic analysis {}, "
+                       "analyse {:.2e} s, factor {:.2e} s\n",
+                       f.supernodal ? "supernodal" : "simplicial", f.ordering, f.nnz_matrix, f.nnz_factor, f.flops / 1e6,
+                       f.reused_symbolic ? "reused" : "new", f.analyze_seconds, f.factor_seconds);
+    if (f.min_pivot_column >= 0)
+      out += fmt::format("  smallest pivot ratio d_j/K_jj = {:.2e} (singular below {:.0e})\n", f.min_pivot_ratio, 1e-12);
+  }
+  if (!sol.status.ok()) {
+    out += fmt::format("\nSTATUS: {}\n", sol.status.code() == StatusCode::kSingular ? "SINGULAR" : "FAILED");
+    out += sol.status.message() + "\n";
+    if (!sol.regularized) return out;
+  }
+  for (const auto& c : sol.cases) {
+    out += fmt::format("\nload case '{}'{}\n", c.name, sol.regularized ? " (REGULARIZED)" : "");
+    if (c.max_translation_node >= 0) {
+      const Vec6& u = c.displacement[c.max_translation_node];
+      out += fmt::format("  max translation {:.4e} m at node '{}' (ux, uy, uz) = ({:.4e}, {:.4e}, {:.4e}) m\n",
+                         c.max_translation, s.nodes()[c.max_translation_node].id, u(0), u(1), u(2));
+    }
+    out += fmt::format("  equilibrium: resultant of loads + reactions F = ({:.2e}, {:.2e}, {:.2e}) N, "
+                       "M = ({:.2e}, {:.2e}, {:.2e}) N m; relative error {:.1e}; free-dof residual {:.1e}\n",
+                       c.resultant(0), c.resultant(1), c.resultant(2), c.resultant(3), c.resultant(4), c.resultant(5),
+                       c.equilibrium_error, c.free_dof_residual);
+    if (s.report_node()) {
+      const Vec6& u = c.displacement[*s.report_node()];
+      out += fmt::format("  node '{}':", s.nodes()[*s.report_node()].id);
+      for (int i = 0; i < 6; ++i) out += fmt::format(" {}={:.4e} {}", dof_name(i), u(i), kDofUnits[i]);
+      out += "\n";
+    }
+  }
+  if (sol.cartesian) {
+    const auto& c = *sol.cartesian;
+    out += fmt::format("\nCartesian stiffness of node '{}' (static condensation, global axes)\n", s.nodes()[c.node].id);
+    if (c.stiffness_defined) {
+      out += matrix6(c.stiffness, "stiffness K", "N/m, N/rad; N m/m, N m/rad");
+      out += "  indices of K:\n" + indices_report(c.indices);
+      out += "  eigenvalues of K: ";
+      for (int i = 0; i < c.indices.eigenvalues.size(); ++i) out += fmt::format("{:.4e} ", c.indices.eigenvalues(i));
+      out += "\n";
+    } else {
+      out += "  " + c.note + "\n";
+    }
+    out += matrix6(c.compliance, "compliance C = K^-1", "m/N, m/(N m); rad/N, rad/(N m)");
+  }
+  if (sol.global_indices) out += "\nindices of the reduced global stiffness matrix:\n" + indices_report(*sol.global_indices);
+  return out;
+}
+
+}  // namespace kinestat::msa

@@ -1,0 +1,102 @@
+#include "msa/singularity.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/frame.hpp"
+#include "solver/null_space.hpp"
+
+namespace kinestat::msa {
+namespace {
+
+std::string direction_words(const Vec3& v) {
+  const double n = v.norm();
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(v(i)) > 0.999 * n) return fmt::format("{}{}", v(i) > 0 ? '+' : '-', "xyz"[i]);
+  const Vec3 d = v / n;
+  return fmt::format("({:.3f}, {:.3f}, {:.3f})", d.x(), d.y(), d.z());
+}
+
+std::string weak_dof_words(const Structure& s, const ReducedDof& rd) {
+  const bool global = rd.frame.isApprox(Mat3::Identity());
+  return fmt::format("node '{}' {}{}", s.nodes()[rd.node].id, dof_name(rd.component), global ? "" : " (local frame)");
+}
+
+}  // namespace
+
+std::string describe_node_motion(const Vec6& m, double L) {
+  const Vec3 t = m.head<3>(), r = m.tail<3>();
+  const double scale = std::max(t.norm(), r.norm() * L);
+  std::string out;
+  if (t.norm() > 0.05 * scale) out += fmt::format("translates along {} ({:.3g})", direction_words(t), t.norm());
+  if (r.norm() * L > 0.05 * scale) {
+    if (!out.empty()) out += " and ";
+    out += fmt::format("rotates about {} ({:.3g} rad per unit)", direction_words(r), r.norm());
+  }
+  return out;
+}
+
+SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map, const solver::SparseMatrix& Kr,
+                                          const solver::FactorizationReport& report) {
+  SingularityDiagnosis d;
+  d.singular = true;
+  std::vector<int> cols = report.weak_columns;
+  if (report.failed_column >= 0) cols.push_back(report.failed_column);
+  for (int c : cols) d.weak_dofs.push_back({map.reduced[c].node, map.reduced[c].component});
+
+  const double L = s.length_scale();
+  const int nn = static_cast<int>(s.nodes().size());
+  std::string text = "The structure is singular: some motion is resisted by no element (a mechanism, a released "
+                     "chain, a missing support, or a singular posture).\n";
+  text += "  Elimination found no stiffness at: ";
+  for (size_t i = 0; i < cols.size(); ++i)
+    text += (i ? ", " : "") + weak_dof_words(s, map.reduced[cols[i]]);
+  text += "\n";
+
+  const int block = std::min<int>(Kr.rows(), static_cast<int>(cols.size()) + 6);
+  auto ns = solver::near_null_space(Kr, block);
+  if (!ns.ok()) {
+    d.message = text + "  (the free motions could not be computed: " + ns.status().message() + ")";
+    return d;
+  }
+  for (int k = 0; k < ns->modes.cols(); ++k) {
+    const VecX u = map.C * ns->modes.col(k);
+    FreeMotion fm;
+    fm.rayleigh_ratio = ns->ratios(k);
+    fm.node_motion.resize(nn);
+    // Scale so that the largest translation (or rotation times the model size) is 1, sign so that
+    // the largest component is positive: the printed mode is then reproducible.
+    double big = 0.0;
+    int big_i = 0;
+    for (int i = 0; i < u.size(); ++i) {
+      const double v = std::abs(u(i)) * ((i % 6) < 3 ? 1.0 : L);
+      if (v > big) big = v, big_i = i;
+    }
+    const double scale = (big > 0 ? 1.0 / (std::abs(u(big_i)) * ((big_i % 6) < 3 ? 1.0 : L)) : 1.0) *
+                         (u(big_i) < 0 ? -1.0 : 1.0);
+    for (int n = 0; n < nn; ++n) fm.node_motion[n] = scale * u.segment<6>(6 * n);
+    std::vector<int> order(nn);
+    for (int n = 0; n < nn; ++n) order[n] = n;
+    auto size = [&](int n) { return std::max(fm.node_motion[n].head<3>().norm(), fm.node_motion[n].tail<3>().norm() * L); };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return size(a) > size(b); });
+    fm.description = fmt::format("free motion {} (stiffness ratio {:.1e}):", k + 1, fm.rayleigh_ratio);
+    int listed = 0;
+    for (int n : order) {
+      if (size(n) < 0.05 || listed == 8) break;
+      fm.description += fmt::format("\n    node '{}' {}", s.nodes()[n].id, describe_node_motion(fm.node_motion[n], L));
+      ++listed;
+    }
+    const int moving = static_cast<int>(std::count_if(order.begin(), order.end(), [&](int n) { return size(n) >= 0.05; }));
+    if (moving > listed) fm.description += fmt::format("\n    ... and {} more nodes", moving - listed);
+    text += "  " + fm.description + "\n";
+    d.modes.push_back(std::move(fm));
+  }
+  text += "  Fix: add the missing support or stiffness, or move away from the singular posture "
+          "(--regularize gives a marked, regularized answer).";
+  d.message = text;
+  return d;
+}
+
+}  // namespace kinestat::msa

@@ -1,0 +1,213 @@
+#include "msa/static_analysis.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/frame.hpp"
+#include "elements/joint_element.hpp"
+#include "msa/assembly.hpp"
+#include "msa/dof_map.hpp"
+#include "msa/singularity.hpp"
+
+namespace kinestat::msa {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Everything one posture needs: C, K, K_r (reduced), factorized in the workspace.
+struct System {
+  DofMap map;
+  solver::SparseMatrix K;
+  solver::SparseMatrix Kr;
+};
+
+StatusOr<System> build_system(const Structure& s) {
+  if (Status st = s.validate(); !st.ok()) return st;
+  auto map = build_dof_map(s);
+  if (!map.ok()) return map.status();
+  auto K = assemble_stiffness(s);
+  if (!K.ok()) return K.status();
+  System sys{std::move(*map), std::move(*K), {}};
+  // The product's pattern is structural (zero values are kept), so every posture of one topology
+  // has the same pattern and the workspace reuses its symbolic analysis.
+  sys.Kr = sys.map.C.transpose() * sys.K * sys.map.C;
+  return sys;
+}
+
+// Factorizes K_r; on a singular structure fills the diagnosis and, if asked, factorizes K_r + eps D.
+Status factorize(const Structure& s, const System& sys, Workspace& ws, const SolveOptions& opt, Solution& sol,
+                 std::unique_ptr<solver::SparseCholesky>& regularized) {
+  Status st = ws.cholesky().Factorize(sys.Kr, &sol.factorization);
+  if (st.code() != StatusCode::kSingular) return st;
+  sol.singularity = diagnose_singularity(s, sys.map, sys.Kr, sol.factorization);
+  if (!opt.regularize) return Status::Singular(sol.singularity.message);
+  solver::SparseMatrix R = sys.Kr;
+  const double dmax = R.diagonal().cwiseAbs().maxCoeff();
+  for (int i = 0; i < R.rows(); ++i) R.coeffRef(i, i) += opt.regularization * std::max(std::abs(R.coeff(i, i)), 1e-12 * dmax);
+  regularized = solver::SparseCholesky::Create({.singular_pivot_ratio = 0.0});
+  if (Status r = regularized->Factorize(R, nullptr); !r.ok()) return r;
+  sol.regularized = true;
+  return Status::Ok();
+}
+
+LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCase& lc, const VecX& u, const VecX& f,
+                            const VecX& u0) {
+  LoadCaseResult r;
+  r.name = lc.name;
+  const int nn = static_cast<int>(s.nodes().size());
+  const VecX residual = sys.K * u - f;  // reactions at supports, constraint forces at tied nodes
+  r.displacement.resize(nn);
+  r.reaction.assign(nn, Vec6::Zero());
+  double fscale = 0.0, mscale = 0.0;
+  for (int n = 0; n < nn; ++n) {
+    r.displacement[n] = u.segment<6>(6 * n);
+    if (sys.map.supported_node[n]) r.reaction[n] = residual.segment<6>(6 * n);
+    const double t = r.displacement[n].head<3>().norm();
+    if (t > r.max_translation || r.max_translation_node < 0) {
+      r.max_translation = t;
+      r.max_translation_node = n;
+    }
+    // Resultant of loads + reactions about the origin: zero for a structure in equilibrium.
+    const Vec6 w = f.segment<6>(6 * n) + r.reaction[n];
+    const Vec3& x = s.nodes()[n].position;
+    r.resultant.head<3>() += w.head<3>();
+    r.resultant.tail<3>() += w.tail<3>() + x.cross(w.head<3>());
+    fscale += w.head<3>().norm();
+    mscale += w.tail<3>().norm() + x.norm() * w.head<3>().norm();
+  }
+  const double ef = fscale > 0 ? r.resultant.head<3>().norm() / fscale : 0.0;
+  const double em = mscale > 0 ? r.resultant.tail<3>().norm() / mscale : 0.0;
+  r.equilibrium_error = std::max(ef, em);
+  const VecX rr = sys.map.C.transpose() * residual;
+  const double fn = (sys.map.C.transpose() * (f - sys.K * u0)).norm();  // the reduced right-hand side
+  r.free_dof_residual = fn > 0 ? rr.norm() / fn : rr.norm();
+
+  for (const Beam& b : s.beams()) {
+    const auto m = beam_matrices(s, b);  // cannot fail: assembly already succeeded
+    Vec12 ue;
+    ue << u.segment<6>(6 * b.node1), u.segment<6>(6 * b.node2);
+    r.beam_end_forces.push_back(m->local * (m->transform * ue));
+  }
+  for (size_t j = 0; j < s.joints().size(); ++j) {
+    const Joint& jt = s.joints()[j];
+    const Mat6 R6 = rotation6(jt.frame);
+    const Vec6 rel = R6.transpose() * (u.segment<6>(6 * jt.node2) - u.segment<6>(6 * jt.node1));
+    Vec6 force;  // k (u2 - u1) in the joint frame: positive in tension
+    for (int i = 0; i < 6; ++i) force(i) = std::isinf(jt.stiffness(i)) ? 0.0 : jt.stiffness(i) * rel(i);
+    // Rigid components carry a constraint force: read it off the tied node's equilibrium.
+    for (const auto& tie : sys.map.ties) {
+      if (tie.joint != static_cast<int>(j)) continue;
+      const Vec6 on_slave = R6.transpose() * residual.segment<6>(6 * tie.slave);
+      const double sign = tie.slave == jt.node2 ? -1.0 : 1.0;
+      for (int i = 0; i < 6; ++i)
+        if (tie.mask[i]) force(i) = sign * on_slave(i);
+    }
+    r.joint_forces.push_back(force);
+  }
+  return r;
+}
+
+StatusOr<CartesianStiffness> node_stiffness(const Structure& s, const System& sys, const solver::SparseCholesky& chol,
+                                            int node) {
+  MatX E = MatX::Zero(s.num_dofs(), 6);
+  for (int i = 0; i < 6; ++i) E(6 * node + i, i) = 1.0;
+  MatX Q;
+  if (Status st = chol.Solve(sys.map.C.transpose() * E, &Q); !st.ok()) return st;
+  CartesianStiffness c;
+  c.node = node;
+  c.compliance = (sys.map.C * Q).middleRows<6>(6 * node);
+  c.compliance = 0.5 * (c.compliance + c.compliance.transpose());  // exact up to round-off (K_r symmetric)
+  Eigen::SelfAdjointEigenSolver<Mat6> eig(c.compliance);
+  const double cmax = eig.eigenvalues().cwiseAbs().maxCoeff();
+  if (!(cmax > 0)) {
+    c.note = "the node is fully supported: its stiffness is infinite";
+  } else if (eig.eigenvalues().minCoeff() <= 1e-13 * cmax) {
+    c.note = "the compliance is singular (a supported or rigidly tied dof at this node): the 6x6 stiffness "
+             "is infinite in some direction; see the compliance";
+  } else {
+    c.stiffness = eig.eigenvectors() * eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
+    c.stiffness_defined = true;
+    c.indices = stiffness_indices(c.stiffness);
+  }
+  return c;
+}
+
+}  // namespace
+
+Workspace::Workspace(const solver::SparseCholeskyOptions& options)
+    : cholesky_(solver::SparseCholesky::Create(options)) {}
+
+Solution solve(const Structure& s, const SolveOptions& options) {
+  Workspace ws(options.cholesky);
+  return solve(s, ws, options);
+}
+
+Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
+  Solution sol;
+  sol.backend = ws.cholesky().backend_description();
+  sol.num_dofs = s.num_dofs();
+  const auto t0 = Clock::now();
+  auto sys = build_system(s);
+  sol.assembly_seconds = seconds_since(t0);
+  if (!sys.ok()) {
+    sol.status = sys.status();
+    return sol;
+  }
+  sol.num_free_dofs = sys->map.num_free();
+  if (sol.num_free_dofs == 0) {
+    sol.status = Status::Invalid("every dof of the structure is supported or tied: nothing to solve");
+    return sol;
+  }
+  if (sol.num_free_dofs <= opt.max_dofs_for_global_indices) sol.global_indices = stiffness_indices(MatX(sys->Kr));
+
+  const auto t1 = Clock::now();
+  std::unique_ptr<solver::SparseCholesky> regularized;
+  sol.status = factorize(s, *sys, ws, opt, sol, regularized);
+  if (!sol.status.ok()) return sol;
+  const solver::SparseCholesky& chol = regularized ? *regularized : ws.cholesky();
+
+  const int nc = static_cast<int>(s.load_cases().size());
+  MatX F(s.num_dofs(), nc), U0(s.num_dofs(), nc);
+  for (int c = 0; c < nc; ++c) {
+    F.col(c) = nodal_loads(s, s.load_cases()[c]);
+    U0.col(c) = prescribed_displacements(s, s.load_cases()[c]);
+  }
+  MatX Q;
+  if (nc > 0) {
+    if (Status st = chol.Solve(sys->map.C.transpose() * (F - sys->K * U0), &Q); !st.ok()) {
+      sol.status = st;
+      return sol;
+    }
+    const MatX U = sys->map.C * Q + U0;
+    for (int c = 0; c < nc; ++c) sol.cases.push_back(post_process(s, *sys, s.load_cases()[c], U.col(c), F.col(c), U0.col(c)));
+  }
+  if (s.report_node()) {
+    auto c = node_stiffness(s, *sys, chol, *s.report_node());
+    if (!c.ok()) {
+      sol.status = c.status();
+      return sol;
+    }
+    sol.cartesian = std::move(*c);
+  }
+  sol.solve_seconds = seconds_since(t1);
+  if (sol.regularized)
+    sol.status = Status::Singular("REGULARIZED answer of a singular structure (K + eps D): the numbers along the "
+                                  "free motions are arbitrary. " + sol.singularity.message);
+  return sol;
+}
+
+StatusOr<CartesianStiffness> cartesian_stiffness(const Structure& s, Workspace& ws, int node,
+                                                 const SolveOptions& options) {
+  if (node < 0 || node >= static_cast<int>(s.nodes().size())) return Status::Invalid("no such node");
+  auto sys = build_system(s);
+  if (!sys.ok()) return sys.status();
+  Solution tmp;
+  std::unique_ptr<solver::SparseCholesky> regularized;
+  if (Status st = factorize(s, *sys, ws, options, tmp, regularized); !st.ok()) return st;
+  return node_stiffness(s, *sys, regularized ? *regularized : ws.cholesky(), node);
+}
+
+}  // namespace kinestat::msa

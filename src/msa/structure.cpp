@@ -1,0 +1,172 @@
+#include "msa/structure.hpp"
+
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "core/frame.hpp"
+
+namespace kinestat::msa {
+namespace {
+
+template <class T>
+std::optional<int> find_by_id(const std::vector<T>& items, const std::string& id) {
+  for (size_t i = 0; i < items.size(); ++i)
+    if (items[i].id == id) return static_cast<int>(i);
+  return std::nullopt;
+}
+
+bool is_rotation(const Mat3& R) {
+  return (R.transpose() * R - Mat3::Identity()).norm() < 1e-9 && R.determinant() > 0;
+}
+
+}  // namespace
+
+int Structure::add_node(std::string id, const Vec3& position) {
+  nodes_.push_back({std::move(id), position});
+  return static_cast<int>(nodes_.size()) - 1;
+}
+int Structure::add_material(Material m) {
+  materials_.push_back(std::move(m));
+  return static_cast<int>(materials_.size()) - 1;
+}
+int Structure::add_section(Section s) {
+  sections_.push_back(std::move(s));
+  return static_cast<int>(sections_.size()) - 1;
+}
+int Structure::add_beam(Beam b) {
+  beams_.push_back(std::move(b));
+  return static_cast<int>(beams_.size()) - 1;
+}
+int Structure::add_joint(Joint j) {
+  joints_.push_back(std::move(j));
+  return static_cast<int>(joints_.size()) - 1;
+}
+int Structure::add_rigid_link(RigidLink r) {
+  rigid_links_.push_back(std::move(r));
+  return static_cast<int>(rigid_links_.size()) - 1;
+}
+void Structure::add_support(Support s) { supports_.push_back(s); }
+int Structure::add_load_case(LoadCase lc) {
+  load_cases_.push_back(std::move(lc));
+  return static_cast<int>(load_cases_.size()) - 1;
+}
+
+std::optional<int> Structure::find_node(const std::string& id) const { return find_by_id(nodes_, id); }
+std::optional<int> Structure::find_material(const std::string& id) const { return find_by_id(materials_, id); }
+std::optional<int> Structure::find_section(const std::string& id) const { return find_by_id(sections_, id); }
+
+double Structure::length_scale() const {
+  if (nodes_.size() < 2) return 1.0;
+  Eigen::AlignedBox3d box;
+  for (const auto& n : nodes_) box.extend(n.position);
+  const double d = box.diagonal().norm();
+  return d > 0 ? d : 1.0;
+}
+
+Mat3 Structure::beam_axes(const Beam& b) const {
+  const Vec3& p1 = nodes_[b.node1].position;
+  const Vec3& p2 = nodes_[b.node2].position;
+  const Vec3 o = b.orientation.squaredNorm() > 0 ? b.orientation : default_orientation(p2 - p1);
+  Mat3 axes = Mat3::Identity();
+  element_axes(p1, p2, o, axes);
+  return axes;
+}
+
+Status Structure::validate() const {
+  const int nn = static_cast<int>(nodes_.size());
+  auto node_ok = [nn](int i) { return i >= 0 && i < nn; };
+  auto dup = [](const auto& items, const char* kind) -> Status {
+    std::set<std::string> seen;
+    for (const auto& it : items)
+      if (!seen.insert(it.id).second)
+        return Status::Invalid(fmt::format("{} '{}' is defined twice; give each {} a unique id", kind, it.id, kind));
+    return Status::Ok();
+  };
+  if (nn == 0) return Status::Invalid("the structure has no nodes");
+  for (const auto& s : {dup(nodes_, "node"), dup(materials_, "material"), dup(sections_, "section"),
+                        dup(beams_, "beam"), dup(joints_, "joint"), dup(rigid_links_, "rigid link")})
+    if (!s.ok()) return s;
+  for (const auto& n : nodes_)
+    if (!n.position.allFinite()) return Status::Invalid(fmt::format("node '{}' has a non-finite coordinate", n.id));
+  const double tol = 1e-9 * length_scale();
+
+  for (const auto& m : materials_)
+    if (!(m.E > 0) || !(m.G > 0) || !std::isfinite(m.E) || !std::isfinite(m.G))
+      return Status::Invalid(fmt::format("material '{}': E and G must be positive (E = {:g}, G = {:g})", m.id, m.E, m.G));
+  for (const auto& s : sections_)
+    if (!(s.A > 0) || !(s.Iy > 0) || !(s.Iz > 0) || !(s.J > 0) || s.Asy < 0 || s.Asz < 0)
+      return Status::Invalid(fmt::format(
+          "section '{}': A, Iy, Iz and J must be positive and shear areas non-negative (A = {:g}, Iy = {:g}, "
+          "Iz = {:g}, J = {:g})", s.id, s.A, s.Iy, s.Iz, s.J));
+
+  for (const auto& b : beams_) {
+    if (!node_ok(b.node1) || !node_ok(b.node2))
+      return Status::Invalid(fmt::format("beam '{}' refers to a node that does not exist", b.id));
+    if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
+      return Status::Invalid(fmt::format("beam '{}' has no valid material", b.id));
+    if (b.section < 0 || b.section >= static_cast<int>(sections_.size()))
+      return Status::Invalid(fmt::format("beam '{}' has no valid section", b.id));
+    const Vec3 d = nodes_[b.node2].position - nodes_[b.node1].position;
+    if (d.norm() <= tol)
+      return Status::Invalid(fmt::format("beam '{}' has zero length (nodes '{}' and '{}' coincide); use a joint or "
+                                         "rigid link between coincident nodes", b.id, nodes_[b.node1].id, nodes_[b.node2].id));
+    Mat3 axes;
+    if (b.orientation.squaredNorm() > 0 &&
+        !element_axes(nodes_[b.node1].position, nodes_[b.node2].position, b.orientation, axes))
+      return Status::Invalid(fmt::format("beam '{}': its orientation vector is parallel to the beam; give a vector "
+                                         "in the beam's local x-y plane that is not along the beam", b.id));
+  }
+  for (const auto& j : joints_) {
+    if (!node_ok(j.node1) || !node_ok(j.node2) || j.node1 == j.node2)
+      return Status::Invalid(fmt::format("joint '{}' must connect two different existing nodes", j.id));
+    const double gap = (nodes_[j.node2].position - nodes_[j.node1].position).norm();
+    if (gap > tol)
+      return Status::Invalid(fmt::format("joint '{}' connects nodes '{}' and '{}' that are {:g} m apart: a joint's "
+                                         "nodes must coincide (model the offset with a beam or a rigid link)",
+                                         j.id, nodes_[j.node1].id, nodes_[j.node2].id, gap));
+    if (!is_rotation(j.frame)) return Status::Invalid(fmt::format("joint '{}': its frame is not a rotation", j.id));
+    for (int k = 0; k < 6; ++k)
+      if (!(j.stiffness(k) >= 0))
+        return Status::Invalid(fmt::format("joint '{}': stiffness {} must be >= 0 (0 = released, rigid = "
+                                           "constrained)", j.id, dof_name(k)));
+  }
+  std::set<int> constrained;  // nodes whose dofs depend on another node (slaves)
+  for (const auto& r : rigid_links_) {
+    if (!node_ok(r.master) || !node_ok(r.slave) || r.master == r.slave)
+      return Status::Invalid(fmt::format("rigid link '{}' must connect two different existing nodes", r.id));
+    if (!is_rotation(r.frame)) return Status::Invalid(fmt::format("rigid link '{}': its frame is not a rotation", r.id));
+    constrained.insert(r.slave);
+  }
+  for (const auto& s : supports_) {
+    if (!node_ok(s.node)) return Status::Invalid("a support refers to a node that does not exist");
+    if (!is_rotation(s.frame))
+      return Status::Invalid(fmt::format("support of node '{}': its frame is not a rotation", nodes_[s.node].id));
+    if (constrained.count(s.node))
+      return Status::Invalid(fmt::format("node '{}' is both supported and the slave of a rigid link: support its "
+                                         "master node instead", nodes_[s.node].id));
+  }
+  for (const auto& lc : load_cases_) {
+    for (const auto& l : lc.loads) {
+      if (!node_ok(l.node))
+        return Status::Invalid(fmt::format("load case '{}': a load is applied to a node that does not exist", lc.name));
+      if (!l.wrench.allFinite())
+        return Status::Invalid(fmt::format("load case '{}': a load on node '{}' is not finite", lc.name, nodes_[l.node].id));
+    }
+    for (const auto& p : lc.prescribed) {
+      if (!node_ok(p.node) || p.dof < 0 || p.dof >= 6)
+        return Status::Invalid(fmt::format("load case '{}': a prescribed displacement names a missing node or dof", lc.name));
+      bool supported = false;
+      for (const auto& s : supports_) supported |= (s.node == p.node && s.fixed[p.dof]);
+      if (!supported)
+        return Status::Invalid(fmt::format("load case '{}': node '{}' {} has a prescribed displacement but is not a "
+                                           "supported dof; add it to the node's support", lc.name, nodes_[p.node].id,
+                                           dof_name(p.dof)));
+    }
+  }
+  if (report_node_ && !node_ok(*report_node_)) return Status::Invalid("the report node does not exist");
+  return Status::Ok();
+}
+
+}  // namespace kinestat::msa

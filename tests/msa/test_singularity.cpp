@@ -1,0 +1,120 @@
+// Singular structures are diagnosed in words (which nodes and dofs move freely, and how), never solved
+// into garbage.
+#include <gtest/gtest.h>
+
+#include "msa/singularity.hpp"
+#include "msa/static_analysis.hpp"
+
+namespace kinestat::msa {
+namespace {
+
+const Material kSteel{"steel", 2.1e11, 0.81e11};
+
+Beam beam(const char* id, int a, int b, int m, int c) {
+  Beam x;
+  x.id = id;
+  x.node1 = a;
+  x.node2 = b;
+  x.material = m;
+  x.section = c;
+  return x;
+}
+
+TEST(Singularity, UnsupportedFrameHasSixRigidBodyMotions) {
+  Structure s;
+  const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
+  s.add_node("a", Vec3(0, 0, 0));
+  s.add_node("b", Vec3(1, 0, 0));
+  s.add_node("c", Vec3(1, 1, 0));
+  s.add_beam(beam("ab", 0, 1, m, c));
+  s.add_beam(beam("bc", 1, 2, m, c));
+  s.add_load_case({"F", {{2, Vec6::Unit(0)}}, {}});
+  const Solution sol = solve(s);
+  ASSERT_EQ(sol.status.code(), StatusCode::kSingular);
+  EXPECT_TRUE(sol.cases.empty());  // no numbers from a singular matrix
+  EXPECT_EQ(sol.singularity.modes.size(), 6u);
+  for (const auto& fm : sol.singularity.modes) EXPECT_LT(fm.rayleigh_ratio, 1e-12);
+}
+
+TEST(Singularity, ReleasedChainSwingsAboutItsHinge) {
+  // Cantilever O-A, then a spherical joint at A (all rotations released) and a beam A'-B hanging
+  // free: A'-B can rotate about A in all three directions, including about its own axis.
+  Structure s;
+  const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
+  s.add_node("O", Vec3(0, 0, 0));
+  s.add_node("A", Vec3(0.5, 0, 0));
+  s.add_node("A'", Vec3(0.5, 0, 0));
+  s.add_node("B", Vec3(0.5, 0.4, 0));
+  s.add_beam(beam("OA", 0, 1, m, c));
+  s.add_beam(beam("AB", 2, 3, m, c));
+  s.add_joint({"ball", 1, 2, Mat3::Identity(), (Vec6() << 1e10, 1e10, 1e10, 0, 0, 0).finished()});
+  s.add_support({0, kAllDofs, Mat3::Identity()});
+  s.add_load_case({"F", {{3, Vec6::Unit(2)}}, {}});
+  const Solution sol = solve(s);
+  ASSERT_EQ(sol.status.code(), StatusCode::kSingular);
+  ASSERT_EQ(sol.singularity.modes.size(), 3u);
+  for (const auto& fm : sol.singularity.modes) {
+    // Nodes O and A do not take part in any free motion.
+    EXPECT_LT(fm.node_motion[0].norm(), 1e-6);
+    EXPECT_LT(fm.node_motion[1].head<3>().norm(), 1e-6);
+    // A' rotates without translating: the hinge holds it.
+    EXPECT_LT(fm.node_motion[2].head<3>().norm(), 1e-6);
+  }
+  EXPECT_NE(sol.status.message().find("node 'B'"), std::string::npos) << sol.status.message();
+  // Holding B along z stops the rotation about x; the spin about A'B's own axis (y) and the swing
+  // about z (B moving along x) stay free.
+  Structure s2 = s;
+  s2.add_support({3, {false, false, true, false, false, false}, Mat3::Identity()});
+  const Solution sol2 = solve(s2);
+  ASSERT_EQ(sol2.status.code(), StatusCode::kSingular);
+  ASSERT_EQ(sol2.singularity.modes.size(), 2u);
+  for (const auto& fm : sol2.singularity.modes) {
+    EXPECT_LT(std::abs(fm.node_motion[3](2)), 1e-9);   // B no longer moves along z
+    EXPECT_LT(std::abs(fm.node_motion[2](3)), 1e-9);   // nor does A'B rotate about x
+  }
+}
+
+TEST(Singularity, RegularizedAnswerIsMarked) {
+  Structure s;
+  const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
+  s.add_node("O", Vec3(0, 0, 0));
+  s.add_node("A", Vec3(0.5, 0, 0));
+  s.add_node("A'", Vec3(0.5, 0, 0));
+  s.add_node("B", Vec3(1.0, 0, 0));
+  s.add_beam(beam("OA", 0, 1, m, c));
+  s.add_beam(beam("AB", 2, 3, m, c));
+  // Hinge about z: B can swing in the x-y plane.
+  s.add_joint({"hinge", 1, 2, Mat3::Identity(), (Vec6() << 1e10, 1e10, 1e10, 1e10, 1e10, 0).finished()});
+  s.add_support({0, kAllDofs, Mat3::Identity()});
+  s.add_load_case({"Fz", {{3, Vec6::Unit(2)}}, {}});
+  SolveOptions opt;
+  opt.regularize = true;
+  const Solution sol = solve(s, opt);
+  EXPECT_EQ(sol.status.code(), StatusCode::kSingular);
+  EXPECT_TRUE(sol.regularized);
+  EXPECT_NE(sol.status.message().find("REGULARIZED"), std::string::npos);
+  ASSERT_EQ(sol.cases.size(), 1u);
+  // Along z nothing is free: two cantilevers in series (L = 0.5 each) joined by the hinge's springs
+  // (1e10 N/m along z, 1e10 N m/rad about y): uz(B) = F (2L)^3/3EI + F/kt + F L^2/kr.
+  // The regularization (1e-10 x diag K) perturbs every dof by ~1e-10 x (stiffest/softest term), here
+  // a few 1e-4: the answer is marked as regularized for that reason.
+  const double EI = kSteel.E * circle_section(0.02).Iy;
+  const double exact = 1.0 / (3 * EI) + 1.0 / 1e10 + 0.25 / 1e10;
+  EXPECT_NEAR(sol.cases[0].displacement[3](2), exact, 1e-3 * exact);
+  ASSERT_EQ(sol.singularity.modes.size(), 1u);
+  const Vec6 mb = sol.singularity.modes[0].node_motion[3];
+  EXPECT_NEAR(std::abs(mb(1)), mb.head<3>().norm(), 1e-9);  // B moves along y only
+  EXPECT_NE(sol.singularity.modes[0].description.find("node 'B' translates along +y"), std::string::npos)
+      << sol.singularity.modes[0].description;
+}
+
+TEST(Singularity, DescribesMotionInWords) {
+  Vec6 m;
+  m << 0, 1, 0, 0, 0, 0;
+  EXPECT_EQ(describe_node_motion(m, 1.0), "translates along +y (1)");
+  m << 0, 0, 0, 0, 0, -2;
+  EXPECT_EQ(describe_node_motion(m, 1.0), "rotates about -z (2 rad per unit)");
+}
+
+}  // namespace
+}  // namespace kinestat::msa
