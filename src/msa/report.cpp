@@ -57,7 +57,8 @@ std::string full_report(const Structure& s, const Solution& sol) {
                        f.supernodal ? "supernodal" : "simplicial", f.ordering, f.nnz_matrix, f.nnz_factor, f.flops / 1e6,
                        f.reused_symbolic ? "reused" : "new", f.analyze_seconds, f.factor_seconds);
     if (f.min_pivot_column >= 0)
-      out += fmt::format("  smallest pivot ratio d_j/K_jj = {:.2e} (singular below {:.0e})\n", f.min_pivot_ratio, 1e-12);
+      out += fmt::format("  conditioning: smallest pivot ratio d_j/K_jj = {:.2e}, softest mode u'Ku/u'Du = {:.2e} "
+                         "(a free motion below 1e-13)\n", f.min_pivot_ratio, sol.softest_mode_ratio);
   }
   if (!sol.status.ok()) {
     out += fmt::format("\nSTATUS: {}\n", sol.status.code() == StatusCode::kSingular ? "SINGULAR" : "FAILED");

@@ -10,6 +10,7 @@
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
 #include "msa/singularity.hpp"
+#include "solver/null_space.hpp"
 
 namespace kinestat::msa {
 namespace {
@@ -41,8 +42,15 @@ StatusOr<System> build_system(const Structure& s) {
 Status factorize(const Structure& s, const System& sys, Workspace& ws, const SolveOptions& opt, Solution& sol,
                  std::unique_ptr<solver::SparseCholesky>& regularized) {
   Status st = ws.cholesky().Factorize(sys.Kr, &sol.factorization);
+  if (st.ok()) {
+    auto soft = solver::lowest_modes(sys.Kr, ws.cholesky(), std::min<int>(3, sys.Kr.rows()), 6);
+    if (!soft.ok()) return soft.status();
+    sol.softest_mode_ratio = soft->ratios(0);
+    if (sol.softest_mode_ratio >= opt.mechanism_ratio) return st;
+    st = Status::Singular("softest mode below the mechanism ratio");
+  }
   if (st.code() != StatusCode::kSingular) return st;
-  sol.singularity = diagnose_singularity(s, sys.map, sys.Kr, sol.factorization);
+  sol.singularity = diagnose_singularity(s, sys.map, sys.Kr, sol.factorization, opt.mechanism_ratio);
   if (!opt.regularize) return Status::Singular(sol.singularity.message);
   solver::SparseMatrix R = sys.Kr;
   const double dmax = R.diagonal().cwiseAbs().maxCoeff();

@@ -19,6 +19,11 @@ struct SolveOptions {
   // For a singular structure, solve K + eps D instead (D = diag K, eps = regularization) and mark
   // the result as regularized. Off by default: a singular structure gets a diagnosis, no numbers.
   bool regularize = false;
+  // A motion whose stiffness ratio u'Ku / u'Du (D = diag K) is below this is free. A mechanism gives
+  // ~1e-16 (round-off); the five-bar's softest real mode next to its 2e11 joint springs ~1e-11.
+  // After a factorization that passes the pivot check, the softest modes are found by inverse
+  // iteration with the same factor, because a null pivot spoiled by round-off can look regular.
+  double mechanism_ratio = 1e-13;
   double regularization = 1e-10;
   // Indices of the reduced global matrix need a dense eigen-decomposition: skipped above this size.
   int max_dofs_for_global_indices = 2000;
@@ -67,6 +72,7 @@ struct Solution {
   int num_dofs = 0;                // 6 per node
   int num_free_dofs = 0;           // after supports and constraints
   solver::FactorizationReport factorization;
+  double softest_mode_ratio = 0.0;  // lowest u'Ku/u'Du found by inverse iteration (0 if singular)
   std::string backend;
   SingularityDiagnosis singularity;
   std::vector<LoadCaseResult> cases;

@@ -113,7 +113,7 @@ TEST(Singularity, DescribesMotionInWords) {
   m << 0, 1, 0, 0, 0, 0;
   EXPECT_EQ(describe_node_motion(m, 1.0), "translates along +y (1)");
   m << 0, 0, 0, 0, 0, -2;
-  EXPECT_EQ(describe_node_motion(m, 1.0), "rotates about -z (2 rad per unit)");
+  EXPECT_EQ(describe_node_motion(m, 1.0), "rotates about -z (2 rad)");
 }
 
 }  // namespace
