@@ -14,6 +14,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   for (const CommandRegistrar& r : std::initializer_list<CommandRegistrar>{
            register_solve_command,
            register_fivebar_command,
+           register_design_command,
        })
     r(app, ctx);
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector

@@ -1,0 +1,128 @@
+// kinestat design orthoglide --cube C --mu MU [--strategy 1|2|3] [--vtk DIR]
+// Geometric synthesis of the Orthoglide (Pashkevich, Wenger, Chablat 2005, Table 3): link length,
+// joint limits and cube location for a cube of edge C and transmission factors in [MU, 1/MU].
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli/app.hpp"
+#include "io/workspace_vtk.hpp"
+#include "mechanisms/orthoglide_design.hpp"
+
+namespace kinestat::cli {
+namespace {
+
+constexpr double kMm = 1e-3;  // m per mm: lengths are printed in mm
+
+struct DesignArgs {
+  double cube_mm = 0.0;
+  double mu = 0.0;
+  std::optional<int> strategy;  // all three when absent
+  std::string vtk_dir;
+  int vtk_grid = 21;
+  int search_points = 41;
+};
+
+const char* strategy_summary(int s) {
+  switch (s) {
+    case 1: return "cube vertices at Q+ and Q-, upper joint limit raised to reach the cube";
+    case 2: return "joint limits at Q+ and Q-, the largest cube inside the joint-bounded workspace";
+    default: return "joint limits so that the whole joint-bounded workspace meets the bounds, cube inside it";
+  }
+}
+
+std::string range(const mechanisms::TransmissionRange& r) {
+  if (!(r.max < std::numeric_limits<double>::infinity())) return fmt::format("[{:.3f}, inf), singular", r.min);
+  return fmt::format("[{:.3f}, {:.3f}]", r.min, r.max);
+}
+
+void print_design(std::ostream& out, const mechanisms::OrthoglideDesign& d, int search_points) {
+  const double L = d.link_length;
+  out << fmt::format("strategy {}: {}\n", d.strategy, strategy_summary(d.strategy));
+  out << fmt::format("  link length L               {:.1f} mm\n", L / kMm);
+  out << fmt::format("  joint limits rho            [{:.1f}, {:.1f}] mm (stroke {:.1f} mm)\n", d.rho_min / kMm,
+                     d.rho_max / kMm, (d.rho_max - d.rho_min) / kMm);
+  out << fmt::format("  cube p_x, p_y, p_z          [{:.1f}, {:.1f}] mm (isotropic point at p = 0, rho = L)\n",
+                     d.p_min / kMm, d.p_max / kMm);
+  if (std::isfinite(d.joint_sum_limit))
+    out << fmt::format("  software joint limit        rho_x + rho_y + rho_z <= {:.1f} mm (= 3 rho(Q+); the joint box "
+                       "reaches the parallel singularity)\n",
+                       d.joint_sum_limit / kMm);
+  out << fmt::format("  unit manipulator (L = 1)    rho in [{:.4f}, {:.4f}], p in [{:.4f}, {:.4f}]\n", d.rho_min / L,
+                     d.rho_max / L, d.p_min / L, d.p_max / L);
+  const mechanisms::OrthoglideDesignCheck check = mechanisms::check_design(d, search_points);
+  out << "  velocity transmission factors (dimensionless):\n";
+  out << fmt::format("    cube                      {} (Proposition 1); numerical search {}\n", range(d.cube),
+                     range(check.cube.range));
+  out << fmt::format("    joint-bounded workspace   {} (critical points Q, R, S); numerical search {}{}\n",
+                     range(d.joint_space), range(check.joint_space.range),
+                     std::isfinite(d.joint_sum_limit) ? " with the software limit" : "");
+}
+
+}  // namespace
+
+void register_design_command(CLI::App& app, Context& ctx) {
+  CLI::App* design = app.add_subcommand("design", "geometric synthesis of a mechanism");
+  design->require_subcommand(1);
+  auto args = std::make_shared<DesignArgs>();
+  CLI::App* cmd = design->add_subcommand(
+      "orthoglide", "Orthoglide design strategies of Pashkevich, Wenger, Chablat 2005 (Table 3): link length, joint "
+                    "limits and cube location for a cubic workspace and transmission factors in [mu, 1/mu]");
+  cmd->add_option("--cube", args->cube_mm, "edge of the cubic workspace, in mm (or with a unit: 0.2m, 20cm)")
+      ->required()
+      ->transform(CLI::AsNumberWithUnit(std::map<std::string, double>{{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}}));
+  cmd->add_option("--mu", args->mu, "lower bound mu of the velocity transmission factors, 0 < mu < 1 (upper: 1/mu)")
+      ->required();
+  cmd->add_option("--strategy", args->strategy, "design strategy 1, 2 or 3 (default: all three)");
+  cmd->add_option("--vtk", args->vtk_dir, "write the joint-bounded workspace and the cube as .vtu files to DIR");
+  cmd->add_option("--vtk-grid", args->vtk_grid, "joint grid points per axis in the VTK workspace (default 21)");
+  cmd->add_option("--search-points", args->search_points,
+                  "points per face edge of the numerical check of the transmission factors (default 41)");
+  cmd->callback([args, &ctx] {
+    auto fail = [&ctx](const std::string& message) {
+      ctx.err << "kinestat design orthoglide: " << message << "\n";
+      ctx.exit_code = kExitBadInput;
+    };
+    // Checked here too, to name the option and its unit in the message.
+    if (!(std::isfinite(args->cube_mm) && args->cube_mm > 0.0))
+      return fail(fmt::format("--cube {} mm: the cube edge must be positive", args->cube_mm));
+    if (!(args->mu > 0.0 && args->mu < 1.0))
+      return fail(fmt::format("--mu {}: must lie strictly between 0 and 1 (the factors are bounded to [mu, 1/mu])",
+                              args->mu));
+    if (args->strategy && (*args->strategy < 1 || *args->strategy > 3))
+      return fail(fmt::format("--strategy {}: must be 1, 2 or 3", *args->strategy));
+    if (args->vtk_grid < 2 || args->search_points < 2) return fail("--vtk-grid and --search-points must be at least 2");
+    std::vector<int> strategies = args->strategy ? std::vector<int>{*args->strategy} : std::vector<int>{1, 2, 3};
+    std::vector<mechanisms::OrthoglideDesign> designs;
+    for (int s : strategies) {
+      auto d = mechanisms::design_orthoglide(s, args->mu, args->cube_mm * kMm);
+      if (!d.ok()) return fail(d.status().message());
+      designs.push_back(*d);
+    }
+    ctx.out << fmt::format(
+        "Orthoglide design (Pashkevich, Wenger, Chablat 2005): cube {:.1f} mm, velocity transmission factors in "
+        "[{:.3f}, {:.3f}]\n\n",
+        args->cube_mm, args->mu, 1.0 / args->mu);
+    for (const auto& d : designs) {
+      print_design(ctx.out, d, args->search_points);
+      if (!args->vtk_dir.empty()) {
+        std::vector<std::string> written;
+        if (Status st = io::write_orthoglide_workspace_vtk(d, args->vtk_grid, args->vtk_dir, &written); !st.ok())
+          return fail(st.message());
+        for (const auto& path : written) ctx.out << "  wrote " << path << " (lengths in m)\n";
+      }
+      ctx.out << "\n";
+    }
+    ctx.exit_code = kExitOk;
+  });
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,39 @@
+// kinestat solve FILE [--vtk DIR] [--json FILE] [--regularize]
+#include <filesystem>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/msa_output.hpp"
+#include "io/structure_yaml.hpp"
+
+namespace kinestat::cli {
+
+void register_solve_command(CLI::App& app, Context& ctx) {
+  struct Args {
+    std::string file;
+    bool regularize = false;
+    MsaOutputOptions out;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("solve", "solve a YAML structure file (format: docs/structure-format.md)");
+  cmd->add_option("file", args->file, "structure file (.yaml)")->required();
+  cmd->add_flag("--regularize", args->regularize,
+                "for a singular structure, also print a REGULARIZED answer (K + 1e-10 diag K), clearly marked");
+  add_msa_output_options(*cmd, args->out);
+  cmd->callback([args, &ctx] {
+    auto s = io::read_structure_yaml(args->file);
+    if (!s.ok()) {
+      ctx.err << "kinestat: " << s.status().message() << "\n";
+      ctx.exit_code = kExitBadInput;
+      return;
+    }
+    msa::SolveOptions opt;
+    opt.regularize = args->regularize;
+    const msa::Solution sol = msa::solve(*s, opt);
+    args->out.basename = std::filesystem::path(args->file).stem().string();
+    ctx.exit_code = finish_msa_run(*s, sol, args->out, ctx);
+  });
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,93 @@
+// The command line as a library: exit codes, printed numbers and written files.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/app.hpp"
+
+namespace kinestat::cli {
+namespace {
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun run_cli(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = run(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+const std::string kModels = std::string(KINESTAT_SOURCE_DIR) + "/models/";
+
+TEST(Cli, FiveBarRow14MatchesThePaper) {
+  const CliRun r = run_cli({"fivebar", "--theta1", "64", "--theta2", "75"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  // Table 1 row 14 (Gonçalves et al. 2010): node 5 under Fx: 2.3946e-5, -2.5246e-5 m.
+  EXPECT_NE(r.out.find("ux=2.3946e-05 m uy=-2.5246e-05 m"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("uy=1.0635e-04 m"), std::string::npos);
+}
+
+TEST(Cli, FiveBarSingularPostureIsDiagnosedWithExitStatus3) {
+  const CliRun r = run_cli({"fivebar", "--theta1", "30", "--theta2", "30"});
+  EXPECT_EQ(r.code, kExitSingular);
+  EXPECT_NE(r.out.find("PARALLEL SINGULAR"), std::string::npos);
+  EXPECT_NE(r.out.find("node '5' translates along +y"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("load case 'Fy'"), std::string::npos);  // no garbage displacements
+}
+
+TEST(Cli, FiveBarFromPointAndWorkingMode) {
+  // P of row 14 with the working mode the angles give back ("+-").
+  const CliRun r = run_cli({"fivebar", "--point", "0.033338451196,0.134483336761", "--mode", "+-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("theta1 = 64.0000 deg, theta2 = 75.0000 deg"), std::string::npos) << r.out;
+}
+
+TEST(Cli, ImpossiblePosturesAndBadOptionsExitWith2) {
+  CliRun r = run_cli({"fivebar", "--theta1", "-90", "--theta2", "90"});  // |B1B2| > 2 r2: cannot close
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_FALSE(r.err.empty());
+  r = run_cli({"fivebar", "--point", "1,1"});  // out of reach
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("reach"), std::string::npos) << r.err;
+  r = run_cli({"fivebar", "--theta1", "10", "--theta2", "20", "--assembly", "sideways"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--assembly"), std::string::npos);
+  r = run_cli({"solve"});  // missing file argument
+  EXPECT_EQ(r.code, kExitBadInput);
+  r = run_cli({"solve", kModels + "does_not_exist.yaml"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("does_not_exist.yaml"), std::string::npos);
+  EXPECT_EQ(run_cli({"--help"}).code, kExitOk);
+}
+
+TEST(Cli, SolveWritesJsonAndVtk) {
+  const auto dir = std::filesystem::path(KINESTAT_BINARY_DIR) / "test_cli_out";
+  std::filesystem::remove_all(dir);
+  const std::string json = (dir / "five_bar.json").string();
+  const CliRun r = run_cli({"solve", kModels + "five_bar.yaml", "--json", json, "--vtk", dir.string(), "--quiet"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_TRUE(std::filesystem::exists(dir / "five_bar.pvd"));
+  std::ifstream in(json);
+  const auto j = nlohmann::json::parse(in);
+  // The JSON carries the same node-5 displacement under Fx as the paper's Table 1 row 14.
+  bool found = false;
+  for (const auto& c : j.at("load_cases")) {
+    if (c.at("name") != "Fx") continue;
+    for (const auto& n : c.at("displacements"))
+      if (n.at("node") == "5") {
+        EXPECT_NEAR(n.at("translation")[0].get<double>(), 2.3946e-5, 1e-4 * 2.3946e-5);
+        found = true;
+      }
+  }
+  EXPECT_TRUE(found) << j.dump(1).substr(0, 2000);
+}
+
+}  // namespace
+}  // namespace kinestat::cli
