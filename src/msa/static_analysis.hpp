@@ -31,7 +31,7 @@ struct SolveOptions {
 
 // One free motion (null-space mode) of a singular structure.
 struct FreeMotion {
-  std::vector<Vec6> node_motion;  // per node (ux uy uz rx ry rz), scaled so the largest |component| is 1
+  std::vector<Vec6> node_motion;  // per node (ux uy uz rx ry rz); the largest translation is 1 (or the largest rotation if none)
   double rayleigh_ratio = 0.0;    // u'Ku / u'Du: ~1e-16 for a true mechanism
   std::string description;        // in words: which nodes move and how
 };

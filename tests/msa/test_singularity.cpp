@@ -20,6 +20,23 @@ Beam beam(const char* id, int a, int b, int m, int c) {
   return x;
 }
 
+// Cantilever O-A (0.5 m along x, clamped at O), a joint A-A' with `joint` stiffness (global frame),
+// and a beam A'-B hanging from it; a unit load along z at B.
+Structure hinged_chain(const Vec3& b, const Vec6& joint) {
+  Structure s;
+  const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
+  s.add_node("O", Vec3(0, 0, 0));
+  s.add_node("A", Vec3(0.5, 0, 0));
+  s.add_node("A'", Vec3(0.5, 0, 0));
+  s.add_node("B", b);
+  s.add_beam(beam("OA", 0, 1, m, c));
+  s.add_beam(beam("AB", 2, 3, m, c));
+  s.add_joint({"joint", 1, 2, Mat3::Identity(), joint});
+  s.add_support({0, kAllDofs, Mat3::Identity()});
+  s.add_load_case({"Fz", {{3, Vec6::Unit(2)}}, {}});
+  return s;
+}
+
 TEST(Singularity, UnsupportedFrameHasSixRigidBodyMotions) {
   Structure s;
   const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
@@ -39,17 +56,7 @@ TEST(Singularity, UnsupportedFrameHasSixRigidBodyMotions) {
 TEST(Singularity, ReleasedChainSwingsAboutItsHinge) {
   // Cantilever O-A, then a spherical joint at A (all rotations released) and a beam A'-B hanging
   // free: A'-B can rotate about A in all three directions, including about its own axis.
-  Structure s;
-  const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
-  s.add_node("O", Vec3(0, 0, 0));
-  s.add_node("A", Vec3(0.5, 0, 0));
-  s.add_node("A'", Vec3(0.5, 0, 0));
-  s.add_node("B", Vec3(0.5, 0.4, 0));
-  s.add_beam(beam("OA", 0, 1, m, c));
-  s.add_beam(beam("AB", 2, 3, m, c));
-  s.add_joint({"ball", 1, 2, Mat3::Identity(), (Vec6() << 1e10, 1e10, 1e10, 0, 0, 0).finished()});
-  s.add_support({0, kAllDofs, Mat3::Identity()});
-  s.add_load_case({"F", {{3, Vec6::Unit(2)}}, {}});
+  const Structure s = hinged_chain(Vec3(0.5, 0.4, 0), (Vec6() << 1e10, 1e10, 1e10, 0, 0, 0).finished());
   const Solution sol = solve(s);
   ASSERT_EQ(sol.status.code(), StatusCode::kSingular);
   ASSERT_EQ(sol.singularity.modes.size(), 3u);
@@ -75,18 +82,8 @@ TEST(Singularity, ReleasedChainSwingsAboutItsHinge) {
 }
 
 TEST(Singularity, RegularizedAnswerIsMarked) {
-  Structure s;
-  const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
-  s.add_node("O", Vec3(0, 0, 0));
-  s.add_node("A", Vec3(0.5, 0, 0));
-  s.add_node("A'", Vec3(0.5, 0, 0));
-  s.add_node("B", Vec3(1.0, 0, 0));
-  s.add_beam(beam("OA", 0, 1, m, c));
-  s.add_beam(beam("AB", 2, 3, m, c));
   // Hinge about z: B can swing in the x-y plane.
-  s.add_joint({"hinge", 1, 2, Mat3::Identity(), (Vec6() << 1e10, 1e10, 1e10, 1e10, 1e10, 0).finished()});
-  s.add_support({0, kAllDofs, Mat3::Identity()});
-  s.add_load_case({"Fz", {{3, Vec6::Unit(2)}}, {}});
+  const Structure s = hinged_chain(Vec3(1.0, 0, 0), (Vec6() << 1e10, 1e10, 1e10, 1e10, 1e10, 0).finished());
   SolveOptions opt;
   opt.regularize = true;
   const Solution sol = solve(s, opt);

@@ -1,0 +1,256 @@
+#include "io/results_json.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace kinestat::io {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kEndForceNames[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+
+template <class Derived>
+json to_array(const Eigen::DenseBase<Derived>& v) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
+  return a;
+}
+
+template <class Derived>
+json to_rows(const Eigen::DenseBase<Derived>& m) {
+  json rows = json::array();
+  for (Eigen::Index r = 0; r < m.rows(); ++r) rows.push_back(to_array(m.row(r)));
+  return rows;
+}
+
+// Unit of entry (i, j) of the 6x6 compliance (motion per wrench) and stiffness (wrench per motion).
+json unit_matrix(bool compliance) {
+  const char* per_force[2] = {"m/N", "rad/N"};
+  const char* per_moment[2] = {"m/(N m)", "rad/(N m)"};
+  const char* per_translation[2] = {"N/m", "N m/m"};
+  const char* per_rotation[2] = {"N/rad", "N m/rad"};
+  json rows = json::array();
+  for (int i = 0; i < 6; ++i) {
+    json row = json::array();
+    for (int j = 0; j < 6; ++j) {
+      row.push_back(compliance ? (j < 3 ? per_force : per_moment)[i / 3]
+                               : (j < 3 ? per_translation : per_rotation)[i / 3]);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+const char* status_name(StatusCode c) {
+  switch (c) {
+    case StatusCode::kOk:
+      return "ok";
+    case StatusCode::kInvalidInput:
+      return "invalid_input";
+    case StatusCode::kSingular:
+      return "singular";
+    case StatusCode::kNotConverged:
+      return "not_converged";
+    case StatusCode::kInternal:
+      return "internal";
+  }
+  return "unknown";
+}
+
+// Id of item i of `items`, or "#i" when the solution refers past the structure (never expected).
+template <class T>
+std::string id_of(const std::vector<T>& items, std::size_t i) {
+  return i < items.size() ? items[i].id : fmt::format("#{}", i);
+}
+
+// Id of node n, or null for "no node" (-1).
+json node_id(const msa::Structure& s, int n) {
+  return n >= 0 ? json(id_of(s.nodes(), static_cast<std::size_t>(n))) : json();
+}
+
+json node_motion(const std::string& node, const Vec6& v) {
+  return {{"node", node}, {"translation", to_array(v.head<3>())}, {"rotation", to_array(v.tail<3>())}};
+}
+
+// {"<key>": id, "force": [3], "moment": [3]}.
+json wrench(const char* key, const std::string& id, const Vec6& w) {
+  return {{key, id}, {"force", to_array(w.head<3>())}, {"moment", to_array(w.tail<3>())}};
+}
+
+json load_case_json(const msa::Structure& s, const msa::LoadCaseResult& r) {
+  json c;
+  c["name"] = r.name;
+  c["max_translation"] = {{"node", node_id(s, r.max_translation_node)}, {"value", r.max_translation}};
+  c["equilibrium"] = {{"resultant_force", to_array(r.resultant.head<3>())},
+                      {"resultant_moment", to_array(r.resultant.tail<3>())},
+                      {"error", r.equilibrium_error},
+                      {"free_dof_residual", r.free_dof_residual}};
+  c["displacements"] = json::array();
+  for (std::size_t i = 0; i < r.displacement.size(); ++i)
+    c["displacements"].push_back(node_motion(id_of(s.nodes(), i), r.displacement[i]));
+
+  // Reactions exist at supported nodes only; each node once, in node order.
+  std::vector<bool> supported(s.nodes().size(), false);
+  for (const auto& sup : s.supports()) supported[static_cast<std::size_t>(sup.node)] = true;
+  c["reactions"] = json::array();
+  for (std::size_t i = 0; i < r.reaction.size() && i < supported.size(); ++i) {
+    if (supported[i]) c["reactions"].push_back(wrench("node", s.nodes()[i].id, r.reaction[i]));
+  }
+  c["beam_end_forces"] = json::array();
+  for (std::size_t i = 0; i < r.beam_end_forces.size(); ++i) {
+    json b = {{"beam", id_of(s.beams(), i)}};
+    for (int end = 0; end < 2; ++end) {
+      json e;
+      for (int k = 0; k < 6; ++k) e[kEndForceNames[k]] = r.beam_end_forces[i](6 * end + k);
+      b[end == 0 ? "end1" : "end2"] = e;
+    }
+    c["beam_end_forces"].push_back(b);
+  }
+  c["joint_forces"] = json::array();
+  for (std::size_t i = 0; i < r.joint_forces.size(); ++i) {
+    c["joint_forces"].push_back(wrench("joint", id_of(s.joints(), i), r.joint_forces[i]));
+  }
+  return c;
+}
+
+json cartesian_json(const msa::Structure& s, const msa::CartesianStiffness& cs) {
+  json c;
+  c["node"] = node_id(s, cs.node);
+  c["axes"] = "global";
+  c["order"] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+  c["compliance"] = to_rows(cs.compliance);
+  c["compliance_units"] = unit_matrix(true);
+  c["stiffness_defined"] = cs.stiffness_defined;
+  c["stiffness"] = cs.stiffness_defined ? to_rows(cs.stiffness) : json();
+  c["stiffness_units"] = unit_matrix(false);
+  c["note"] = cs.note;
+  c["indices"] = cs.stiffness_defined ? stiffness_indices_to_json(cs.indices) : json();
+  return c;
+}
+
+json singularity_json(const msa::Structure& s, const msa::SingularityDiagnosis& d) {
+  json j;
+  j["singular"] = d.singular;
+  j["message"] = d.message;
+  j["weak_dofs"] = json::array();
+  for (const auto& w : d.weak_dofs) {
+    j["weak_dofs"].push_back({{"node", node_id(s, w.node)}, {"dof", dof_name(w.dof)}});
+  }
+  j["free_motions"] = json::array();
+  for (const auto& m : d.modes) {
+    json nodes = json::array();
+    for (std::size_t i = 0; i < m.node_motion.size(); ++i)
+      nodes.push_back(node_motion(id_of(s.nodes(), i), m.node_motion[i]));
+    j["free_motions"].push_back(
+        {{"rayleigh_ratio", m.rayleigh_ratio}, {"description", m.description}, {"nodes", nodes}});
+  }
+  return j;
+}
+
+void collect_non_finite(json& j, const json::json_pointer& at, json& notes) {
+  if (j.is_number_float()) {
+    const double x = j.get<double>();
+    if (!std::isfinite(x)) {
+      notes.push_back({{"path", at.to_string()}, {"value", std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf")}});
+      j = nullptr;
+    }
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) collect_non_finite(j[i], at / i, notes);
+  } else if (j.is_object()) {
+    for (auto& [key, value] : j.items()) collect_non_finite(value, at / key, notes);
+  }
+}
+
+}  // namespace
+
+json stiffness_indices_to_json(const StiffnessIndices& ind) {
+  json eigenvectors = json::array();
+  for (Eigen::Index c = 0; c < ind.eigenvectors.cols(); ++c) eigenvectors.push_back(to_array(ind.eigenvectors.col(c)));
+  return {{"size", ind.size},
+          {"det_sign", ind.det_sign},
+          {"log10_abs_det", ind.log10_abs_det},
+          {"determinant", ind.determinant},
+          {"trace", ind.trace},
+          {"norm_1", ind.norm_1},
+          {"norm_2", ind.norm_2},
+          {"norm_frobenius", ind.norm_frobenius},
+          {"norm_inf", ind.norm_inf},
+          {"max_abs_entry", ind.max_abs_entry},
+          {"condition_number", ind.condition_number},
+          {"eigenvalues", to_array(ind.eigenvalues)},
+          {"eigenvectors", eigenvectors},
+          {"symmetry_error", ind.symmetry_error}};
+}
+
+void encode_non_finite(json& j) {
+  json notes = json::array();
+  collect_non_finite(j, json::json_pointer(), notes);
+  if (!j.is_object()) return;
+  json& all = j["non_finite_values"];
+  if (!all.is_array()) all = json::array();
+  for (auto& n : notes) all.push_back(std::move(n));
+}
+
+json solution_to_json(const msa::Structure& s, const msa::Solution& sol) {
+  json j;
+  j["schema"] = "kinestat-msa-results";
+  j["schema_version"] = kResultsSchemaVersion;
+  j["units"] = {{"length", "m"}, {"force", "N"}, {"moment", "N m"}, {"angle", "rad"}, {"time", "s"}};
+  j["model"] = {{"title", s.title()},
+                {"num_nodes", s.nodes().size()},
+                {"num_beams", s.beams().size()},
+                {"num_joints", s.joints().size()},
+                {"num_rigid_links", s.rigid_links().size()},
+                {"num_supports", s.supports().size()},
+                {"num_load_cases", s.load_cases().size()},
+                {"num_dofs", sol.num_dofs},
+                {"num_free_dofs", sol.num_free_dofs},
+                {"report_node", node_id(s, s.report_node().value_or(-1))}};
+  j["status"] = {{"code", status_name(sol.status.code())}, {"message", sol.status.message()}};
+  j["regularized"] = sol.regularized;
+
+  const auto& f = sol.factorization;
+  j["solver"] = {{"backend", sol.backend},
+                 {"assembly_seconds", sol.assembly_seconds},
+                 {"solve_seconds", sol.solve_seconds},
+                 {"softest_mode_ratio", sol.softest_mode_ratio},
+                 {"factorization",
+                  {{"n", f.n},
+                   {"nnz_matrix", f.nnz_matrix},
+                   {"nnz_factor", f.nnz_factor},
+                   {"flops", f.flops},
+                   {"reused_symbolic", f.reused_symbolic},
+                   {"supernodal", f.supernodal},
+                   {"ordering", f.ordering},
+                   {"analyze_seconds", f.analyze_seconds},
+                   {"factor_seconds", f.factor_seconds},
+                   {"failed_column", f.failed_column},
+                   {"weak_columns", f.weak_columns},
+                   {"min_pivot_ratio", f.min_pivot_ratio},
+                   {"min_pivot_column", f.min_pivot_column}}}};
+
+  j["load_cases"] = json::array();
+  for (const auto& r : sol.cases) j["load_cases"].push_back(load_case_json(s, r));
+  j["cartesian_stiffness"] = sol.cartesian ? cartesian_json(s, *sol.cartesian) : json();
+  j["global_indices"] = sol.global_indices ? stiffness_indices_to_json(*sol.global_indices) : json();
+  j["singularity"] = singularity_json(s, sol.singularity);
+  encode_non_finite(j);
+  return j;
+}
+
+Status write_json(const std::string& path, const json& j) {
+  std::ofstream out(path);
+  if (!out)
+    return Status::Invalid(
+        fmt::format("{}: cannot open for writing; check that the directory exists and is writable", path));
+  // `replace`: a title with invalid UTF-8 must not abort the whole report.
+  out << j.dump(2, ' ', false, json::error_handler_t::replace) << '\n';
+  out.close();
+  if (!out) return Status::Invalid(fmt::format("{}: writing failed (disk full?)", path));
+  return Status::Ok();
+}
+
+}  // namespace kinestat::io

@@ -1,0 +1,489 @@
+#include "io/structure_yaml.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <set>
+#include <sstream>
+#include <tuple>
+#include <unordered_map>
+
+#include "core/frame.hpp"
+#include "core/types.hpp"
+#include "elements/beam_element.hpp"
+#include "elements/section.hpp"
+
+namespace kinestat::io {
+namespace {
+
+// Thrown and caught inside this file only: the entry points turn it into a Status.
+struct InputError {
+  std::string message;
+};
+
+// Scale factors from the file's units to SI.
+struct Units {
+  double length = 1.0;  // file length unit in m
+  double force = 1.0;   // file force unit in N
+  double area() const { return length * length; }
+  double inertia() const { return area() * area(); }
+  double stress() const { return force / area(); }
+  double moment() const { return force * length; }
+  double translational_stiffness() const { return force / length; }
+  double rotational_stiffness() const { return force * length; }
+};
+
+std::string join(std::initializer_list<const char*> names) {
+  std::string out;
+  for (const char* n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+  return out;
+}
+
+// One parse of one file. Every check fails through fail(), which names the file, the line of the
+// offending YAML node, the item and the fix.
+class Parser {
+ public:
+  explicit Parser(std::string file) : file_(std::move(file)) {}
+
+  msa::Structure parse(const YAML::Node& root) {
+    if (!root.IsDefined() || root.IsNull())
+      fail(root, "file", "the file is empty; start with a 'nodes:' list (see docs/structure-format.md)");
+    if (!root.IsMap())
+      fail(root, "file", "the top level is not a map of keys; write 'nodes:', 'beams:', ... at the start of lines");
+    check_keys(root, "file",
+               {"units", "title", "nodes", "materials", "sections", "beams", "joints", "rigid_links", "supports",
+                "load_cases", "report"});
+    parse_units(root["units"]);
+    if (const YAML::Node t = root["title"]; t.IsDefined()) s_.set_title(text(t, "file", "title"));
+    for_each(root, "nodes", true, [&](const YAML::Node& n, int i) { parse_node(n, i); });
+    zero_length_ = 1e-9 * s_.length_scale();  // as Structure::validate() judges coincidence
+    for_each(root, "materials", false, [&](const YAML::Node& n, int i) { parse_material(n, i); });
+    for_each(root, "sections", false, [&](const YAML::Node& n, int i) { parse_section(n, i); });
+    for_each(root, "beams", false, [&](const YAML::Node& n, int i) { parse_beam(n, i); });
+    for_each(root, "joints", false, [&](const YAML::Node& n, int i) { parse_joint(n, i); });
+    for_each(root, "rigid_links", false, [&](const YAML::Node& n, int i) { parse_rigid_link(n, i); });
+    for_each(root, "supports", false, [&](const YAML::Node& n, int i) { parse_support(n, i); });
+    for_each(root, "load_cases", false, [&](const YAML::Node& n, int i) { parse_load_case(n, i); });
+    if (const YAML::Node r = root["report"]; r.IsDefined()) {
+      check_map(r, "report", {"node"});
+      s_.set_report_node(node_ref(require(r, "report", "node"), "report", "node"));
+    }
+    return std::move(s_);
+  }
+
+ private:
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& item, const std::string& what) const {
+    const int line = (at.IsDefined() && !at.Mark().is_null()) ? at.Mark().line + 1 : 0;
+    const std::string where = line > 0 ? fmt::format("{}:{}", file_, line) : file_;
+    throw InputError{fmt::format("{}: {}: {}", where, item, what)};
+  }
+
+  // --- generic checks --------------------------------------------------------------------------
+
+  // `node` must be a map whose keys are all in `allowed`, each once.
+  void check_map(const YAML::Node& node, const std::string& item, std::initializer_list<const char*> allowed) {
+    if (!node.IsMap())
+      fail(node, item,
+           fmt::format("expected a map of keys ({}); write it as 'key: value' lines or {{key: value, ...}}",
+                       join(allowed)));
+    check_keys(node, item, allowed);
+  }
+
+  void check_keys(const YAML::Node& map, const std::string& item, std::initializer_list<const char*> allowed) {
+    std::set<std::string> seen;
+    for (const auto& kv : map) {
+      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+      bool known = false;
+      for (const char* a : allowed) known = known || key == a;
+      if (!known) fail(kv.first, item, fmt::format("unknown key '{}'; allowed keys are: {}", key, join(allowed)));
+      if (!seen.insert(key).second) fail(kv.first, item, fmt::format("key '{}' is given twice; keep one", key));
+    }
+  }
+
+  YAML::Node require(const YAML::Node& map, const std::string& item, const char* key) {
+    const YAML::Node v = map[key];
+    if (!v.IsDefined() || v.IsNull())
+      fail(map, item, fmt::format("missing required key '{}'; add it (see docs/structure-format.md)", key));
+    return v;
+  }
+
+  // Runs `f` on each entry of the list root[key] (absent is allowed unless `required`).
+  template <class F>
+  void for_each(const YAML::Node& root, const char* key, bool required, F f) {
+    const YAML::Node list = root[key];
+    if (!list.IsDefined() || list.IsNull()) {
+      if (required) fail(root, "file", fmt::format("missing required key '{}'; add a list of {}", key, key));
+      return;
+    }
+    if (!list.IsSequence()) fail(list, key, "expected a list; write one '- ...' entry per item");
+    for (std::size_t i = 0; i < list.size(); ++i) f(list[i], static_cast<int>(i));
+  }
+
+  double number(const YAML::Node& v, const std::string& item, const std::string& key) {
+    double x = 0.0;
+    if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x)) {
+      fail(v, item,
+           fmt::format("'{}' must be a finite number, got '{}'; write e.g. 2.1e11", key,
+                       v.IsScalar() ? v.Scalar() : "a list or map"));
+    }
+    return x;
+  }
+
+  double positive(const YAML::Node& v, const std::string& item, const std::string& key) {
+    const double x = number(v, item, key);
+    if (!(x > 0.0))
+      fail(v, item, fmt::format("'{}' must be positive, got {}; give a value > 0 in the file's units", key, x));
+    return x;
+  }
+
+  std::string text(const YAML::Node& v, const std::string& item, const std::string& key) {
+    if (!v.IsScalar() || v.Scalar().empty())
+      fail(v, item, fmt::format("'{}' must be a single word or quoted text", key));
+    return v.Scalar();
+  }
+
+  Vec3 vec3(const YAML::Node& v, const std::string& item, const std::string& key) {
+    if (!v.IsSequence() || v.size() != 3)
+      fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
+    return {number(v[0], item, key), number(v[1], item, key), number(v[2], item, key)};
+  }
+
+  int dof(const YAML::Node& v, const std::string& item) {
+    if (v.IsScalar()) {
+      for (int d = 0; d < kDofsPerNode; ++d) {
+        if (v.Scalar() == dof_name(d)) return d;
+      }
+    }
+    fail(v, item, fmt::format("unknown dof '{}'; dofs are ux, uy, uz, rx, ry, rz", v.IsScalar() ? v.Scalar() : "?"));
+  }
+
+  // A list of dof names, or `all`.
+  msa::DofMask dof_mask(const YAML::Node& v, const std::string& item) {
+    if (v.IsScalar() && v.Scalar() == "all") return msa::kAllDofs;
+    if (!v.IsSequence() || v.size() == 0) fail(v, item, "expected a list of dofs such as [ux, uy, rz] or the word all");
+    msa::DofMask mask{};
+    for (const auto& d : v) mask[static_cast<std::size_t>(dof(d, item))] = true;
+    return mask;
+  }
+
+  // {x: [...], z: [...]}: the frame's x and z axes in global coordinates, perpendicular.
+  Mat3 frame(const YAML::Node& v, const std::string& item) {
+    check_map(v, item + " frame", {"x", "z"});
+    const Vec3 x = vec3(require(v, item + " frame", "x"), item, "frame x");
+    const Vec3 z = vec3(require(v, item + " frame", "z"), item, "frame z");
+    if (x.norm() == 0.0 || z.norm() == 0.0) fail(v, item, "frame axes x and z must be non-zero vectors");
+    if (std::abs(x.normalized().dot(z.normalized())) > 1e-6) {
+      fail(v, item, "frame axes x and z are not perpendicular; give two perpendicular directions");
+    }
+    Mat3 R;
+    R.col(0) = x.normalized();
+    R.col(2) = z.normalized();
+    R.col(1) = R.col(2).cross(R.col(0));
+    return R;
+  }
+
+  int node_ref(const YAML::Node& v, const std::string& item, const std::string& key) {
+    const std::string id = text(v, item, key);
+    const auto n = node_index_.find(id);
+    if (n == node_index_.end()) fail(v, item, fmt::format("unknown node '{}' in '{}'; define it under nodes", id, key));
+    return n->second;
+  }
+
+  // An entry's id, checked for uniqueness within its kind.
+  std::string entry_id(const YAML::Node& n, const char* kind, int index, std::set<std::string>& ids) {
+    const std::string fallback = fmt::format("{} #{}", kind, index + 1);
+    if (!n.IsMap()) fail(n, fallback, "expected a map such as {id: ..., ...}");
+    const std::string id = text(require(n, fallback, "id"), fallback, "id");
+    if (!ids.insert(id).second)
+      fail(n["id"], fmt::format("{} '{}'", kind, id), "this id is already used; give each a unique id");
+    return id;
+  }
+
+  // --- blocks ----------------------------------------------------------------------------------
+
+  void parse_units(const YAML::Node& v) {
+    if (!v.IsDefined()) return;
+    const std::string u = v.IsScalar() ? v.Scalar() : "";
+    if (u == "SI") {
+      units_ = {};
+    } else if (u == "mm-N-s") {
+      units_ = {1e-3, 1.0};
+    } else {
+      fail(v, "units", fmt::format("unknown units '{}'; write SI (m, N, Pa) or mm-N-s (mm, N, MPa)", u));
+    }
+  }
+
+  void parse_node(const YAML::Node& n, int i) {
+    const std::string id = entry_id(n, "node", i, node_ids_);
+    const std::string item = fmt::format("node '{}'", id);
+    check_keys(n, item, {"id", "xyz"});
+    node_index_[id] = s_.add_node(id, vec3(require(n, item, "xyz"), item, "xyz") * units_.length);
+  }
+
+  void parse_material(const YAML::Node& n, int i) {
+    const std::string id = entry_id(n, "material", i, material_ids_);
+    const std::string item = fmt::format("material '{}'", id);
+    check_keys(n, item, {"id", "E", "G", "nu"});
+    const double E = positive(require(n, item, "E"), item, "E") * units_.stress();
+    const YAML::Node G = n["G"], nu = n["nu"];
+    if (G.IsDefined() == nu.IsDefined())
+      fail(n, item, "give exactly one of G (shear modulus) and nu (Poisson's ratio)");
+    if (G.IsDefined()) {
+      s_.add_material(Material{id, E, positive(G, item, "G") * units_.stress()});
+    } else {
+      const double v = number(nu, item, "nu");
+      if (!(v > -1.0 && v <= 0.5)) fail(nu, item, fmt::format("nu = {} is outside (-1, 0.5]; steel is 0.3", v));
+      s_.add_material(Material::from_E_nu(id, E, v));
+    }
+  }
+
+  void parse_section(const YAML::Node& n, int i) {
+    const std::string id = entry_id(n, "section", i, section_ids_);
+    const std::string item = fmt::format("section '{}'", id);
+    // A required positive value in file units, converted by `scale`.
+    auto value = [&](const char* key, double scale) { return positive(require(n, item, key), item, key) * scale; };
+    auto dim = [&](const char* key) { return value(key, units_.length); };
+    auto shear_area = [&](const char* key) {
+      const YAML::Node a = n[key];
+      if (!a.IsDefined()) return 0.0;
+      const double x = number(a, item, key);
+      if (x < 0.0) fail(a, item, fmt::format("'{}' must not be negative (0 = no shear deformation)", key));
+      return x * units_.area();
+    };
+    Section s;
+    const YAML::Node type = n["type"];
+    const std::string t = type.IsDefined() ? text(type, item, "type") : "";
+    if (!type.IsDefined()) {
+      check_keys(n, item, {"id", "A", "Iy", "Iz", "J", "Asy", "Asz"});
+      s.A = value("A", units_.area());
+      s.Iy = value("Iy", units_.inertia());
+      s.Iz = value("Iz", units_.inertia());
+      s.J = value("J", units_.inertia());
+      s.Asy = shear_area("Asy");
+      s.Asz = shear_area("Asz");
+    } else if (t == "circle") {
+      check_keys(n, item, {"id", "type", "d"});
+      s = circle_section(dim("d"));
+    } else if (t == "tube") {
+      check_keys(n, item, {"id", "type", "d", "t"});
+      const double d = dim("d"), wall = dim("t");
+      if (!(2.0 * wall < d)) fail(n["t"], item, "wall thickness t must be less than half the outer diameter d");
+      s = tube_section(d, wall);
+    } else if (t == "rectangle") {
+      check_keys(n, item, {"id", "type", "b", "h"});
+      s = rectangle_section(dim("b"), dim("h"));
+    } else if (t == "hollow_rectangle") {
+      check_keys(n, item, {"id", "type", "b", "h", "t"});
+      const double b = dim("b"), h = dim("h"), wall = dim("t");
+      if (!(2.0 * wall < std::min(b, h))) fail(n["t"], item, "wall thickness t must be less than half of b and of h");
+      s = hollow_rectangle_section(b, h, wall);
+    } else {
+      fail(type, item,
+           fmt::format("unknown section type '{}'; use circle, tube, rectangle, hollow_rectangle, or omit type and "
+                       "give A, Iy, Iz, J",
+                       t));
+    }
+    s.id = id;
+    s_.add_section(s);
+  }
+
+  void parse_beam(const YAML::Node& n, int i) {
+    const std::string id = entry_id(n, "beam", i, beam_ids_);
+    const std::string item = fmt::format("beam '{}'", id);
+    check_keys(n, item, {"id", "nodes", "material", "section", "orientation", "theory", "releases"});
+    msa::Beam b;
+    b.id = id;
+    std::tie(b.node1, b.node2) = node_pair(require(n, item, "nodes"), item);
+    const YAML::Node m = require(n, item, "material"), sec = require(n, item, "section");
+    const auto mat = s_.find_material(text(m, item, "material"));
+    if (!mat) fail(m, item, fmt::format("unknown material '{}'; define it under materials", m.Scalar()));
+    const auto sid = s_.find_section(text(sec, item, "section"));
+    if (!sid) fail(sec, item, fmt::format("unknown section '{}'; define it under sections", sec.Scalar()));
+    b.material = *mat;
+    b.section = *sid;
+
+    const Vec3 p1 = s_.nodes()[b.node1].position, p2 = s_.nodes()[b.node2].position;
+    const double length = (p2 - p1).norm();
+    if (!(length > zero_length_)) {
+      fail(n["nodes"], item,
+           "the beam has zero length (its nodes are at the same place); connect two distinct points or use a joint");
+    }
+    if (const YAML::Node o = n["orientation"]; o.IsDefined()) {
+      b.orientation = vec3(o, item, "orientation");
+      Mat3 axes;
+      if (!element_axes(p1, p2, b.orientation, axes)) {
+        fail(o, item,
+             "the orientation vector is zero or along the beam; give a vector in the beam's local x-y plane, not "
+             "parallel to it");
+      }
+    }
+    if (const YAML::Node t = n["theory"]; t.IsDefined()) {
+      const std::string th = text(t, item, "theory");
+      if (th == "euler-bernoulli") {
+        b.theory = BeamTheory::kEulerBernoulli;
+      } else if (th == "timoshenko") {
+        b.theory = BeamTheory::kTimoshenko;
+      } else {
+        fail(t, item, fmt::format("unknown theory '{}'; use euler-bernoulli or timoshenko", th));
+      }
+    }
+    if (const YAML::Node r = n["releases"]; r.IsDefined()) {
+      check_map(r, item + " releases", {"end1", "end2"});
+      for (int end = 0; end < 2; ++end) {
+        const YAML::Node list = r[end == 0 ? "end1" : "end2"];
+        if (!list.IsDefined()) continue;
+        const msa::DofMask mask = dof_mask(list, item + " releases");
+        for (int d = 0; d < kDofsPerNode; ++d)
+          b.releases[static_cast<std::size_t>(6 * end + d)] = mask[static_cast<std::size_t>(d)];
+      }
+      // Released dofs that leave the element itself free (torsion at both ends, ...) cannot be
+      // condensed out: report it here, where the line is known.
+      const Mat12 k = beam_local_stiffness(s_.materials()[b.material], s_.sections()[b.section], length, b.theory);
+      if (const auto c = condense_releases(k, b.releases); !c.ok()) {
+        fail(r, item, fmt::format("{}; keep each dof fixed at one end at least", c.status().message()));
+      }
+    }
+    s_.add_beam(b);
+  }
+
+  std::pair<int, int> node_pair(const YAML::Node& v, const std::string& item) {
+    if (!v.IsSequence() || v.size() != 2) fail(v, item, "'nodes' must be a list of two node ids [a, b]");
+    return {node_ref(v[0], item, "nodes"), node_ref(v[1], item, "nodes")};
+  }
+
+  void parse_joint(const YAML::Node& n, int i) {
+    const std::string id = entry_id(n, "joint", i, joint_ids_);
+    const std::string item = fmt::format("joint '{}'", id);
+    check_keys(n, item, {"id", "nodes", "stiffness", "frame"});
+    msa::Joint j;
+    j.id = id;
+    std::tie(j.node1, j.node2) = node_pair(require(n, item, "nodes"), item);
+    const YAML::Node k = require(n, item, "stiffness");
+    // Six values in the joint frame: N/m along x, y, z, then N m/rad about them (file units).
+    auto component = [&](const YAML::Node& v, int d) {
+      if (v.IsScalar() && v.Scalar() == "rigid") return msa::kRigid;
+      const double x = number(v, item, fmt::format("stiffness {}", dof_name(d)));
+      if (x < 0.0)
+        fail(v, item, fmt::format("stiffness {} = {} is negative; use 0 for a free dof or rigid", dof_name(d), x));
+      return x * (d < 3 ? units_.translational_stiffness() : units_.rotational_stiffness());
+    };
+    if (k.IsSequence() && k.size() == 6) {
+      for (int d = 0; d < kDofsPerNode; ++d) j.stiffness[d] = component(k[d], d);
+    } else if (k.IsMap()) {
+      check_keys(k, item + " stiffness", {"ux", "uy", "uz", "rx", "ry", "rz"});
+      for (int d = 0; d < kDofsPerNode; ++d)
+        j.stiffness[d] = component(require(k, item + " stiffness", dof_name(d)), d);
+    } else {
+      fail(k, item,
+           "'stiffness' must be a list of six values [ux, uy, uz, rx, ry, rz] or a map with all six; a value is a "
+           "number, 0 or rigid");
+    }
+    if (const YAML::Node f = n["frame"]; f.IsDefined()) j.frame = frame(f, item);
+    s_.add_joint(j);
+  }
+
+  void parse_rigid_link(const YAML::Node& n, int i) {
+    const std::string id = entry_id(n, "rigid link", i, link_ids_);
+    const std::string item = fmt::format("rigid link '{}'", id);
+    check_keys(n, item, {"id", "master", "slave", "dofs", "frame"});
+    msa::RigidLink r;
+    r.id = id;
+    r.master = node_ref(require(n, item, "master"), item, "master");
+    r.slave = node_ref(require(n, item, "slave"), item, "slave");
+    if (r.master == r.slave) fail(n["slave"], item, "master and slave are the same node; link two different nodes");
+    if (const YAML::Node d = n["dofs"]; d.IsDefined()) r.mask = dof_mask(d, item);
+    if (const YAML::Node f = n["frame"]; f.IsDefined()) r.frame = frame(f, item);
+    s_.add_rigid_link(r);
+  }
+
+  void parse_support(const YAML::Node& n, int i) {
+    const std::string fallback = fmt::format("support #{}", i + 1);
+    check_map(n, fallback, {"node", "fixed", "frame"});
+    msa::Support sup;
+    sup.node = node_ref(require(n, fallback, "node"), fallback, "node");
+    const std::string item = fmt::format("support at node '{}'", s_.nodes()[sup.node].id);
+    sup.fixed = dof_mask(require(n, item, "fixed"), item);
+    if (const YAML::Node f = n["frame"]; f.IsDefined()) sup.frame = frame(f, item);
+    s_.add_support(sup);
+  }
+
+  void parse_load_case(const YAML::Node& n, int i) {
+    const std::string fallback = fmt::format("load case #{}", i + 1);
+    check_map(n, fallback, {"name", "loads", "prescribed"});
+    msa::LoadCase lc;
+    lc.name = text(require(n, fallback, "name"), fallback, "name");
+    const std::string item = fmt::format("load case '{}'", lc.name);
+    if (!case_names_.insert(lc.name).second)
+      fail(n["name"], item, "this name is already used; give each load case a unique name");
+    for_each(n, "loads", false, [&](const YAML::Node& l, int) {
+      check_map(l, item + " load", {"node", "force", "moment"});
+      msa::NodalLoad load;
+      load.node = node_ref(require(l, item, "node"), item, "node");
+      const YAML::Node f = l["force"], m = l["moment"];
+      if (!f.IsDefined() && !m.IsDefined())
+        fail(l, item, "a load needs 'force: [Fx, Fy, Fz]' and/or 'moment: [Mx, My, Mz]'");
+      if (f.IsDefined()) load.wrench.head<3>() = vec3(f, item, "force") * units_.force;
+      if (m.IsDefined()) load.wrench.tail<3>() = vec3(m, item, "moment") * units_.moment();
+      lc.loads.push_back(load);
+    });
+    for_each(n, "prescribed", false, [&](const YAML::Node& p, int) {
+      check_map(p, item + " prescribed", {"node", "dof", "value"});
+      msa::PrescribedDisplacement pd;
+      pd.node = node_ref(require(p, item, "node"), item, "node");
+      pd.dof = dof(require(p, item, "dof"), item);
+      pd.value = number(require(p, item, "value"), item, "value") * (pd.dof < 3 ? units_.length : 1.0);
+      bool supported = false;
+      for (const auto& sup : s_.supports())
+        supported = supported || (sup.node == pd.node && sup.fixed[static_cast<std::size_t>(pd.dof)]);
+      if (!supported) {
+        fail(p, item,
+             fmt::format("dof {} of node '{}' is not fixed by a support; a prescribed displacement needs a support "
+                         "that fixes it",
+                         dof_name(pd.dof), s_.nodes()[pd.node].id));
+      }
+      lc.prescribed.push_back(pd);
+    });
+    s_.add_load_case(lc);
+  }
+
+  std::string file_;
+  Units units_;
+  double zero_length_ = 0.0;
+  msa::Structure s_;
+  std::unordered_map<std::string, int> node_index_;  // a hash map: large frames reference nodes often
+  std::set<std::string> node_ids_, material_ids_, section_ids_, beam_ids_, joint_ids_, link_ids_, case_names_;
+};
+
+}  // namespace
+
+StatusOr<msa::Structure> read_structure_yaml_string(const std::string& text, const std::string& display_name) {
+  Parser parser(display_name);
+  try {
+    msa::Structure s = parser.parse(YAML::Load(text));
+    if (const Status st = s.validate(); !st.ok()) return Status(st.code(), display_name + ": " + st.message());
+    return s;
+  } catch (const InputError& e) {
+    return Status::Invalid(e.message);
+  } catch (const YAML::ParserException& e) {
+    return Status::Invalid(fmt::format("{}:{}: malformed YAML: {}; check indentation, colons and brackets",
+                                       display_name, e.mark.line + 1, e.msg));
+  } catch (const YAML::Exception& e) {
+    const std::string where = e.mark.is_null() ? display_name : fmt::format("{}:{}", display_name, e.mark.line + 1);
+    return Status::Invalid(fmt::format("{}: {}; check the file against docs/structure-format.md", where, e.msg));
+  }
+}
+
+StatusOr<msa::Structure> read_structure_yaml(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    return Status::Invalid(fmt::format("{}: cannot open the structure file; check the path and permissions", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return read_structure_yaml_string(text.str(), path);
+}
+
+}  // namespace kinestat::io

@@ -1,0 +1,213 @@
+#include "io/vtk_output.hpp"
+
+#include <fmt/format.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace kinestat::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+vtkSmartPointer<vtkDoubleArray> double_array(const char* name, int components, vtkIdType tuples) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  a->Fill(0.0);
+  return a;
+}
+
+vtkSmartPointer<vtkIntArray> int_array(const char* name, vtkIdType tuples) {
+  auto a = vtkSmartPointer<vtkIntArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(tuples);
+  return a;
+}
+
+// Point array from the first or last three components of per-node 6-vectors.
+vtkSmartPointer<vtkDoubleArray> node_array(const char* name, const std::vector<Vec6>& v, bool rotation) {
+  auto a = double_array(name, 3, static_cast<vtkIdType>(v.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Vec3 x = rotation ? Vec3(v[i].tail<3>()) : Vec3(v[i].head<3>());
+    a->SetTuple(static_cast<vtkIdType>(i), x.data());
+  }
+  return a;
+}
+
+// The undeformed model: points = nodes; cells = beams, then joints, then rigid links. A two-node
+// element whose nodes coincide (every joint, a zero-offset link) is a 2-point VTK_POLY_VERTEX, which
+// ParaView draws as points; a zero-length VTK_LINE would be invisible.
+vtkSmartPointer<vtkUnstructuredGrid> geometry(const msa::Structure& s) {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  for (const auto& n : s.nodes()) points->InsertNextPoint(n.position.data());
+  grid->SetPoints(points);
+
+  const vtkIdType cells = static_cast<vtkIdType>(s.beams().size() + s.joints().size() + s.rigid_links().size());
+  grid->Allocate(cells);
+  auto type = int_array("element_type", cells);
+  auto id = int_array("element_id", cells);
+  const double tol = 1e-9 * s.length_scale();
+  auto add = [&](int n1, int n2, int element_type, std::size_t index) {
+    const vtkIdType ids[2] = {n1, n2};
+    const bool coincident = (s.nodes()[n1].position - s.nodes()[n2].position).norm() <= tol;
+    const vtkIdType c = grid->InsertNextCell(coincident ? VTK_POLY_VERTEX : VTK_LINE, 2, ids);
+    type->SetValue(c, element_type);
+    id->SetValue(c, static_cast<int>(index));
+  };
+  for (std::size_t i = 0; i < s.beams().size(); ++i) add(s.beams()[i].node1, s.beams()[i].node2, kVtkBeam, i);
+  for (std::size_t i = 0; i < s.joints().size(); ++i) add(s.joints()[i].node1, s.joints()[i].node2, kVtkJoint, i);
+  for (std::size_t i = 0; i < s.rigid_links().size(); ++i) {
+    add(s.rigid_links()[i].master, s.rigid_links()[i].slave, kVtkRigidLink, i);
+  }
+  grid->GetCellData()->AddArray(type);
+  grid->GetCellData()->AddArray(id);
+  return grid;
+}
+
+// Load-case results as point and cell arrays. Cell order matches geometry().
+void add_load_case(const msa::Structure& s, const msa::LoadCaseResult& r, vtkUnstructuredGrid* grid) {
+  vtkPointData* pd = grid->GetPointData();
+  pd->AddArray(node_array("displacement", r.displacement, false));
+  pd->AddArray(node_array("rotation", r.displacement, true));
+  pd->AddArray(node_array("reaction_force", r.reaction, false));
+  pd->AddArray(node_array("reaction_moment", r.reaction, true));
+  pd->SetActiveVectors("displacement");  // Warp By Vector picks it up directly
+
+  const vtkIdType cells = grid->GetNumberOfCells();
+  auto end_forces = double_array("end_forces", 12, cells);
+  auto axial = double_array("axial_force", 1, cells);
+  auto torsion = double_array("torsion", 1, cells);
+  auto my = double_array("bending_moment_y", 1, cells);
+  auto mz = double_array("bending_moment_z", 1, cells);
+  auto joint = double_array("joint_force", 6, cells);
+  for (std::size_t i = 0; i < r.beam_end_forces.size(); ++i) {
+    const Vec12& f = r.beam_end_forces[i];
+    const auto c = static_cast<vtkIdType>(i);
+    end_forces->SetTuple(c, f.data());
+    // End forces act on the beam: the force at end 2 along local x is the tension.
+    axial->SetValue(c, f(6));
+    torsion->SetValue(c, f(9));
+    my->SetValue(c, std::max(std::abs(f(4)), std::abs(f(10))));
+    mz->SetValue(c, std::max(std::abs(f(5)), std::abs(f(11))));
+  }
+  for (std::size_t i = 0; i < r.joint_forces.size(); ++i) {
+    joint->SetTuple(static_cast<vtkIdType>(s.beams().size() + i), r.joint_forces[i].data());
+  }
+  for (const auto& a : {end_forces, axial, torsion, my, mz, joint}) grid->GetCellData()->AddArray(a);
+}
+
+void add_free_motions(const msa::SingularityDiagnosis& d, vtkUnstructuredGrid* grid) {
+  for (std::size_t k = 0; k < d.modes.size(); ++k) {
+    const std::string name = fmt::format("free_motion_{}", k + 1);
+    grid->GetPointData()->AddArray(node_array(name.c_str(), d.modes[k].node_motion, false));
+    grid->GetPointData()->AddArray(node_array((name + "_rotation").c_str(), d.modes[k].node_motion, true));
+  }
+  if (!d.modes.empty() && !grid->GetPointData()->GetVectors()) grid->GetPointData()->SetActiveVectors("free_motion_1");
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+Status write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
+  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(grid);
+  if (writer->Write() != 1)
+    return Status::Invalid(fmt::format("{}: VTK could not write the file; check the directory is writable", path));
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::string& dir, const std::string& basename,
+                 std::vector<std::string>* written) {
+  for (const auto& r : sol.cases) {
+    if (r.displacement.size() != s.nodes().size() || r.reaction.size() != s.nodes().size() ||
+        r.beam_end_forces.size() != s.beams().size() || r.joint_forces.size() != s.joints().size()) {
+      return Status::Internal(fmt::format("load case '{}': result sizes do not match the structure", r.name));
+    }
+  }
+  for (const auto& m : sol.singularity.modes) {
+    if (m.node_motion.size() != s.nodes().size())
+      return Status::Internal("free motion: size does not match the structure");
+  }
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    return Status::Invalid(fmt::format("{}: cannot create the output directory ({})", dir, ec.message()));
+
+  struct Entry {
+    std::string file, name;
+  };
+  std::vector<Entry> entries;
+  auto emit = [&](vtkUnstructuredGrid* grid, std::string file, std::string name) -> Status {
+    const std::string path = (fs::path(dir) / file).string();
+    if (Status st = write_grid(grid, path); !st.ok()) return st;
+    if (written) written->push_back(path);
+    entries.push_back({std::move(file), std::move(name)});
+    return Status::Ok();
+  };
+  for (std::size_t i = 0; i < sol.cases.size(); ++i) {
+    auto grid = geometry(s);
+    add_load_case(s, sol.cases[i], grid);
+    add_free_motions(sol.singularity, grid);
+    if (Status st = emit(grid, fmt::format("{}_case{}.vtu", basename, i + 1), sol.cases[i].name); !st.ok()) return st;
+  }
+  if (sol.cases.empty()) {
+    auto grid = geometry(s);
+    add_free_motions(sol.singularity, grid);
+    if (Status st = emit(grid, basename + "_undeformed.vtu", "undeformed"); !st.ok()) return st;
+  }
+
+  // ParaView's collection format: one DataSet per load case; the timestep slider steps through them.
+  const std::string pvd = (fs::path(dir) / (basename + ".pvd")).string();
+  std::ofstream out(pvd);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    out << fmt::format("    <DataSet timestep=\"{}\" part=\"0\" name=\"{}\" file=\"{}\"/>\n", i,
+                       xml_escape(entries[i].name), xml_escape(entries[i].file));
+  }
+  out << "  </Collection>\n</VTKFile>\n";
+  out.close();
+  if (!out)
+    return Status::Invalid(fmt::format("{}: cannot write the collection file; check the directory is writable", pvd));
+  if (written) written->push_back(pvd);
+  return Status::Ok();
+}
+
+}  // namespace kinestat::io
