@@ -1,0 +1,141 @@
+#include "mechanisms/orthoglide_stiffness.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "mechanisms/orthoglide_kinematics.hpp"
+#include "vjm/link_spring.hpp"
+
+namespace kinestat::mechanisms {
+
+using vjm::Chain;
+using vjm::JointType;
+
+Vec3 paper_table_point(double coordinate_mm) { return Vec3::Constant(-coordinate_mm / 1000.0); }
+
+namespace {
+
+Section doubled(Section s) {
+  s.A *= 2;
+  s.Iy *= 2;
+  s.Iz *= 2;
+  s.J *= 2;
+  s.Asy *= 2;
+  s.Asz *= 2;
+  return s;
+}
+
+Status validate(const OrthoglideStiffnessModel& m) {
+  auto positive = [](double v) { return std::isfinite(v) && v > 0; };
+  if (!positive(m.link_length) || !positive(m.parallelogram_width) || !positive(m.actuator_stiffness) ||
+      !positive(m.foot_length))
+    return Status::Invalid(
+        "Orthoglide stiffness model: link length, parallelogram width, foot length (m) and "
+        "actuator stiffness (N/m) must be positive and finite");
+  for (const Section* s : {&m.bar_section, &m.foot_section})
+    if (!positive(s->A) || !positive(s->Iy) || !positive(s->Iz) || !positive(s->J))
+      return Status::Invalid("Orthoglide stiffness model: a bar or foot section has a non-positive A, Iy, Iz or J");
+  if (!positive(m.bar_material.E) || !positive(m.bar_material.G) || !positive(m.foot_material.E) ||
+      !positive(m.foot_material.G))
+    return Status::Invalid("Orthoglide stiffness model: E and G (Pa) must be positive");
+  return Status::Ok();
+}
+
+}  // namespace
+
+StatusOr<Mat6> parallelogram_spring(const OrthoglideStiffnessModel& m, double q) {
+  if (Status s = validate(m); !s.ok()) return s;
+  const double L = m.link_length, w = m.parallelogram_width;
+  const Mat6 bar = vjm::cantilever_spring(m.bar_material, m.bar_section, L, BeamTheory::kEulerBernoulli);
+  // The two bars, pinned about y at both plates, from the proximal plate to the distal plate centre.
+  std::vector<Chain> bars;
+  for (double side : {0.5, -0.5}) {
+    Chain c(side > 0 ? "upper bar" : "lower bar");
+    c.add_translation(side * w * Vec3::UnitZ(), "proximal plate");
+    c.add_passive(JointType::kRevolute, Vec3::UnitY(), q, "proximal pin");
+    c.add_translation(L * Vec3::UnitX(), "bar");
+    c.add_spring(bar, "bar");
+    c.add_passive(JointType::kRevolute, Vec3::UnitY(), -q, "distal pin");
+    c.add_translation(-side * w * Vec3::UnitZ(), "distal plate");
+    bars.push_back(std::move(c));
+  }
+  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(bars);
+  if (!K.ok()) return K.status();
+  // Exactly one free motion: the plate's translation along the arc, u = R_y(q) e_z (pure translation).
+  if (K->free_directions.size() != 1 || !K->rigid_directions.empty())
+    return Status::Singular(
+        fmt::format("parallelogram at q = {:.4f} rad: expected one free motion, found {} free and "
+                    "{} rigid directions",
+                    q, K->free_directions.size(), K->rigid_directions.size()));
+  const Vec6 u = K->free_directions[0];
+  // Add a force stiffness k0 u u^T along the free motion (k0 = the axial stiffness scale); the passive
+  // q2 of eq. (22) produces exactly that motion, so the chain's stiffness does not depend on k0.
+  const double k0 = K->stiffness.topLeftCorner<3, 3>().trace();
+  return Mat6(K->stiffness + k0 * u * u.transpose());
+}
+
+StatusOr<std::vector<Chain>> orthoglide_chains(const OrthoglideStiffnessModel& m, OrthoglideArchitecture a,
+                                               const Vec3& p) {
+  if (Status s = validate(m); !s.ok()) return s;
+  const double L = m.link_length;
+  StatusOr<Vec3> rho = inverse_kinematics(OrthoglideGeometry{L}, p);
+  if (!rho.ok()) return rho.status();
+  const Mat6 foot = vjm::cantilever_spring(m.foot_material, m.foot_section, m.foot_length, BeamTheory::kTimoshenko);
+  const Mat6 leg = vjm::cantilever_spring(m.bar_material, doubled(m.bar_section), L, BeamTheory::kEulerBernoulli);
+  std::vector<Chain> chains;
+  for (int i = 0; i < 3; ++i) {
+    const char* axis = i == 0 ? "x" : i == 1 ? "y" : "z";
+    Chain c(fmt::format("{} leg {}", a == OrthoglideArchitecture::kPUU ? "PUU" : "PRPaR", axis));
+    // Base frame: local x = -e_i (from the slider towards the workspace), y = -e_(i+1), z = e_(i+2).
+    Mat3 R;
+    R << -Vec3::Unit(i), -Vec3::Unit((i + 1) % 3), Vec3::Unit((i + 2) % 3);
+    vjm::Transform base = vjm::Transform::Identity();
+    base.linear() = R;
+    c.add_transform(base, "base");
+    c.add_actuator(JointType::kPrismatic, -Vec3::UnitX(), (*rho)[i], m.actuator_stiffness, "actuator");
+    c.add_spring(foot, "foot");
+    // Leg direction in the base frame from the inverse kinematics: R_z(q1) R_y(q2) e_x = v / L. Both
+    // U axes are normal to the leg at Q0 (an axis along the leg would make Q0 a U-joint singularity).
+    const Vec3 v = R.transpose() * (p - (*rho)[i] * Vec3::Unit(i)) / L;
+    const double q1 = std::atan2(v.y(), v.x()), q2 = std::atan2(-v.z(), std::hypot(v.x(), v.y()));
+    c.add_passive(JointType::kRevolute, Vec3::UnitZ(), q1, "U1 (1st axis)");
+    if (a == OrthoglideArchitecture::kPUU) {
+      c.add_passive(JointType::kRevolute, Vec3::UnitY(), q2, "U1 (2nd axis)");
+      c.add_translation(L * Vec3::UnitX(), "leg");
+      c.add_spring(leg, "leg (bar with doubled section)");
+      c.add_passive(JointType::kRevolute, Vec3::UnitY(), -q2, "U2 (1st axis)");
+    } else {
+      StatusOr<Mat6> plg = parallelogram_spring(m, q2);
+      if (!plg.ok()) return plg.status();
+      const int k = c.add_passive(JointType::kRevolute, Vec3::UnitY(), q2, "parallelogram");
+      c.add_translation(L * Vec3::UnitX(), "parallelogram");
+      c.add_coupled(JointType::kRevolute, Vec3::UnitY(), k, -1.0, "parallelogram (coupled -q2, eq. 22)");
+      c.add_spring(*plg, "parallelogram");
+    }
+    c.add_passive(JointType::kRevolute, Vec3::UnitZ(), -q1,
+                  a == OrthoglideArchitecture::kPUU ? "U2 (2nd axis)" : "platform R");
+    c.add_transform(base.inverse(), "tool (global axes)");
+    chains.push_back(std::move(c));
+  }
+  return chains;
+}
+
+StatusOr<OrthoglideStiffness> orthoglide_stiffness(const OrthoglideStiffnessModel& m, OrthoglideArchitecture a,
+                                                   const Vec3& p, const Vec6& displacement) {
+  StatusOr<std::vector<Chain>> chains = orthoglide_chains(m, a, p);
+  if (!chains.ok()) return chains.status();
+  OrthoglideStiffness out;
+  StatusOr<vjm::CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
+  if (!K0.ok()) return K0.status();
+  out.unloaded = std::move(*K0);
+  StatusOr<vjm::PlatformState> st = vjm::platform_equilibrium(*chains, displacement);
+  if (!st.ok()) return st.status();
+  out.loaded_state = std::move(*st);
+  StatusOr<vjm::CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, out.loaded_state);
+  if (!KF.ok()) return KF.status();
+  out.loaded = std::move(*KF);
+  return out;
+}
+
+}  // namespace kinestat::mechanisms

@@ -1,0 +1,269 @@
+#include "vjm/equilibrium.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "vjm/bordered_system.hpp"
+#include "vjm/stiffness.hpp"
+
+namespace kinestat::vjm {
+
+std::string ConvergenceReport::summary() const {
+  return fmt::format(
+      "{} after {} eq. (15) and {} Newton iterations via {}: kinematic residual {:.2e}, static "
+      "residual {:.2e}",
+      converged ? "converged" : "NOT converged", fixed_point_iterations, newton_iterations,
+      method.empty() ? "none" : method, kinematic_residual, static_residual);
+}
+
+namespace {
+
+// Everything one iteration needs at (q, theta, F).
+struct Linearization {
+  ChainJacobians J;
+  Vec6 r;        // t - f(q, theta) as a twist
+  VecX gq, gth;  // J_q^T F and J_theta^T F - K_theta theta (both zero at equilibrium)
+  double kin = 0.0, stat = 0.0;
+  double merit() const { return kin + stat; }
+};
+
+Linearization linearize(const Chain& chain, const MatX& Kth, const Transform& target, const Vec6& w, const VecX& q,
+                        const VecX& th, const Vec6& F) {
+  Linearization l;
+  l.J = jacobians(chain, q, th);
+  l.r = pose_difference(target, l.J.pose);
+  l.kin = l.r.cwiseProduct(w).norm();
+  const VecX JtF = l.J.Jtheta.transpose() * F, Kt = Kth * th;
+  l.gq = l.J.Jq.transpose() * F;
+  l.gth = JtF - Kt;
+  const double num = std::sqrt(l.gq.squaredNorm() + l.gth.squaredNorm());
+  const double den = l.gq.norm() + JtF.norm() + Kt.norm();
+  l.stat = num > 0 ? num / den : 0.0;
+  return l;
+}
+
+}  // namespace
+
+StatusOr<ChainState> chain_equilibrium(const Chain& chain, const Vec6& displacement, const EquilibriumOptions& opt,
+                                       const ChainState* start) {
+  if (Status s = chain.validate(); !s.ok()) return s;
+  if (!displacement.allFinite())
+    return Status::Invalid(fmt::format("chain '{}': the prescribed displacement is not finite", chain.name()));
+  const int n = chain.num_passive(), m = chain.num_virtual();
+  const double L = chain.length_scale();
+  const Vec6 w = twist_scale(L);
+  const MatX Kth = chain.spring_stiffness();
+  const Eigen::LLT<MatX> Kllt(Kth);
+  const Transform target = displace(chain.nominal_pose(), displacement);
+
+  ChainState s;
+  s.q = start ? start->q : chain.nominal_passive();
+  s.theta = start ? start->theta : VecX::Zero(m);
+  s.wrench = start ? start->wrench : Vec6::Zero();
+  if (s.q.size() != n || s.theta.size() != m)
+    return Status::Invalid(
+        fmt::format("chain '{}': the start state has {} passive and {} virtual coordinates, the "
+                    "chain {} and {}",
+                    chain.name(), s.q.size(), s.theta.size(), n, m));
+  ConvergenceReport& rep = s.report;
+  Linearization lin = linearize(chain, Kth, target, w, s.q, s.theta, s.wrench);
+  auto done = [&](const Linearization& l) { return l.kin <= opt.tolerance && l.stat <= opt.tolerance; };
+
+  // Paper's iteration (eq. 15): linearize the geometry only, statics with the old Jacobians.
+  // From (12)-(13): S F + J_q dq = t - f + J_theta theta_i (the printed sign of the J terms is
+  // wrong, docs/vjm.md), then theta_{i+1} = K_theta^-1 J_theta^T F.
+  rep.method = "eq. (15) iteration";
+  double best = lin.merit();
+  VecX best_q = s.q, best_theta = s.theta;
+  Vec6 best_wrench = s.wrench;
+  int worse = 0;
+  while (!done(lin) && rep.fixed_point_iterations < opt.max_fixed_point_iterations) {
+    const BorderedSystem B =
+        factor_bordered_system(lin.J.Jq, spring_compliance(lin.J.Jtheta, Kth), L, opt.rank_tolerance);
+    VecX dq;
+    Vec6 F;
+    B.solve(lin.r + lin.J.Jtheta * s.theta, &F, &dq);
+    s.q += dq;
+    s.theta = m > 0 ? VecX(Kllt.solve(lin.J.Jtheta.transpose() * F)) : VecX(0);
+    s.wrench = F;
+    ++rep.fixed_point_iterations;
+    lin = linearize(chain, Kth, target, w, s.q, s.theta, s.wrench);
+    // Stalled or diverging (near buckling the fixed point is repelling): hand over to Newton.
+    if (lin.merit() < 0.5 * best) {
+      best = lin.merit();
+      best_q = s.q;
+      best_theta = s.theta;
+      best_wrench = s.wrench;
+      worse = 0;
+    } else if (++worse >= 3) {
+      break;
+    }
+  }
+  if (lin.merit() > best) {  // Newton starts from the best iterate, not from a diverged one
+    s.q = best_q;
+    s.theta = best_theta;
+    s.wrench = best_wrench;
+    lin = linearize(chain, Kth, target, w, s.q, s.theta, s.wrench);
+  }
+
+  // Full Newton-Raphson on (11): unknowns (dq, dtheta, dF), rows (kinematics, J_q^T F, J_theta^T F - K theta).
+  if (!done(lin) && opt.newton_fallback) {
+    rep.method = "Newton-Raphson (after eq. (15) stalled)";
+    while (!done(lin) && rep.newton_iterations < opt.max_newton_iterations) {
+      const ChainHessians H = hessians(chain, s.q, s.theta, s.wrench);
+      const int N = n + m + 6;
+      MatX A = MatX::Zero(N, N);
+      VecX b(N);
+      // Kinematic rows scaled by W and the force unknown as W^-1 F: every block is then O(1) in length.
+      A.block(0, 0, 6, n) = w.asDiagonal() * lin.J.Jq;
+      A.block(0, n, 6, m) = w.asDiagonal() * lin.J.Jtheta;
+      A.block(6, 0, n, n) = H.Hqq;
+      A.block(6, n, n, m) = H.Hqtheta;
+      A.block(6, n + m, n, 6) = lin.J.Jq.transpose() * w.asDiagonal();
+      A.block(6 + n, 0, m, n) = H.Hthetaq;
+      A.block(6 + n, n, m, m) = H.Hthetatheta - Kth;
+      A.block(6 + n, n + m, m, 6) = lin.J.Jtheta.transpose() * w.asDiagonal();
+      b << lin.r.cwiseProduct(w), -lin.gq, -lin.gth;
+      const VecX d = Eigen::CompleteOrthogonalDecomposition<MatX>(A).solve(b);
+      // Backtracking on the merit: a full step may overshoot far from the solution.
+      double step = 1.0;
+      for (int k = 0; k < 20; ++k, step *= 0.5) {
+        const VecX q = s.q + step * d.head(n), th = s.theta + step * d.segment(n, m);
+        const Vec6 F = s.wrench + step * d.tail<6>().cwiseProduct(w);
+        Linearization trial = linearize(chain, Kth, target, w, q, th, F);
+        if (trial.merit() < lin.merit() || k == 19) {
+          s.q = q;
+          s.theta = th;
+          s.wrench = F;
+          lin = std::move(trial);
+          break;
+        }
+      }
+      ++rep.newton_iterations;
+    }
+  }
+  rep.converged = done(lin);
+  rep.kinematic_residual = lin.kin;
+  rep.static_residual = lin.stat;
+  s.pose = lin.J.pose;
+  if (!rep.converged)
+    return Status(StatusCode::kNotConverged,
+                  fmt::format("chain '{}': the loaded equilibrium was not found ({}). The load may exceed the "
+                              "buckling load, or the displacement asks for motion along a direction the chain "
+                              "cannot move in",
+                              chain.name(), rep.summary()));
+  return s;
+}
+
+Status validate_platform(const std::vector<Chain>& chains) {
+  if (chains.empty()) return Status::Invalid("the platform has no chains; add at least one");
+  for (const Chain& c : chains)
+    if (Status s = c.validate(); !s.ok()) return s;
+  const Vec3 p0 = chains[0].nominal_pose().translation();
+  for (const Chain& c : chains) {
+    const double gap = (c.nominal_pose().translation() - p0).norm();
+    if (gap > 1e-9 * std::max(c.length_scale(), chains[0].length_scale()))
+      return Status::Invalid(
+          fmt::format("chain '{}': its nominal tool point is {:.6g} m from chain '{}''s; the "
+                      "platform is not assembled (check the nominal passive coordinates)",
+                      c.name(), gap, chains[0].name()));
+  }
+  return Status::Ok();
+}
+
+namespace {
+
+double platform_length_scale(const std::vector<Chain>& chains) {
+  double L = 0.0;
+  for (const Chain& c : chains) L = std::max(L, c.length_scale());
+  return L;
+}
+
+StatusOr<PlatformState> solve_chains(const std::vector<Chain>& chains, const Vec6& displacement,
+                                     const EquilibriumOptions& opt, const PlatformState* start) {
+  PlatformState P;
+  P.displacement = displacement;
+  P.report.converged = true;
+  for (size_t i = 0; i < chains.size(); ++i) {
+    StatusOr<ChainState> s = chain_equilibrium(chains[i], displacement, opt, start ? &start->chains[i] : nullptr);
+    if (!s.ok()) return s.status();
+    P.wrench += s->wrench;
+    const ConvergenceReport& r = s->report;
+    // The platform's report is the worst chain's.
+    if (r.fixed_point_iterations + r.newton_iterations >=
+        P.report.fixed_point_iterations + P.report.newton_iterations) {
+      P.report.method = r.method;
+      P.report.fixed_point_iterations = r.fixed_point_iterations;
+      P.report.newton_iterations = r.newton_iterations;
+    }
+    P.report.kinematic_residual = std::max(P.report.kinematic_residual, r.kinematic_residual);
+    P.report.static_residual = std::max(P.report.static_residual, r.static_residual);
+    P.chains.push_back(std::move(*s));
+  }
+  return P;
+}
+
+}  // namespace
+
+StatusOr<PlatformState> platform_equilibrium(const std::vector<Chain>& chains, const Vec6& displacement,
+                                             const EquilibriumOptions& opt) {
+  if (Status s = validate_platform(chains); !s.ok()) return s;
+  return solve_chains(chains, displacement, opt, nullptr);
+}
+
+StatusOr<PlatformState> platform_equilibrium_under_wrench(const std::vector<Chain>& chains, const Vec6& wrench,
+                                                          const EquilibriumOptions& opt) {
+  if (Status s = validate_platform(chains); !s.ok()) return s;
+  if (!wrench.allFinite()) return Status::Invalid("the prescribed wrench is not finite");
+  const double L = platform_length_scale(chains);
+  const Vec6 w = twist_scale(L);
+  const StiffnessOptions sopt{opt.rank_tolerance};
+  StatusOr<PlatformState> P = solve_chains(chains, Vec6::Zero(), opt, nullptr);
+  if (!P.ok()) return P;
+  const Transform nominal = chains[0].nominal_pose();
+  // Outer Newton on the platform pose: dF/dt is the loaded stiffness (eq. 21), so each step solves
+  // K^F dt = W - F(t) and re-solves every chain's equilibrium at the new pose.
+  const double ref = wrench.cwiseQuotient(w).norm();
+  int it = 0;
+  for (;; ++it) {
+    StatusOr<CartesianStiffness> K = platform_loaded_stiffness(chains, *P, sopt);
+    if (!K.ok()) return K.status();
+    // Wrench components along rigid directions are reactions: project them out (scaled space).
+    Vec6 R = (wrench - P->wrench).cwiseQuotient(w);
+    for (const Vec6& u : K->rigid_directions) {
+      const Vec6 us = u.cwiseProduct(w).normalized();
+      R -= us * us.dot(R);
+    }
+    const double res = ref > 0 ? R.norm() / ref : R.norm();
+    P->report.method = "Newton-Raphson on the platform pose (loaded stiffness, eq. 21)";
+    P->report.newton_iterations = it;
+    if (res <= 100 * opt.tolerance) break;
+    for (const Vec6& u : K->free_directions) {
+      const Vec6 us = u.cwiseProduct(w).normalized();  // u^T F = (W u)^T (W^-1 F)
+      if (std::abs(us.dot(R)) > 1e-6 * R.norm())
+        return Status::Singular(
+            fmt::format("the platform cannot resist the wrench: it moves freely along {}", describe_twist(u)));
+    }
+    if (it >= opt.max_newton_iterations) {
+      P->report.converged = false;
+      return Status(StatusCode::kNotConverged,
+                    fmt::format("the platform equilibrium under the wrench did not converge in {} iterations "
+                                "(relative wrench residual {:.2e}); the load may exceed the buckling load",
+                                it, res));
+    }
+    // Scaled system K~ dt~ = R~ with K~ = W^-1 K W^-1; minimum norm along lost directions.
+    const Mat6 Kt = w.cwiseInverse().asDiagonal() * K->stiffness * w.cwiseInverse().asDiagonal();
+    const Vec6 dt = Eigen::CompleteOrthogonalDecomposition<Mat6>(Kt).solve(R).cwiseQuotient(w);
+    const Vec6 d = pose_difference(displace(displace(nominal, P->displacement), dt), nominal);
+    StatusOr<PlatformState> next = solve_chains(chains, d, opt, &*P);
+    if (!next.ok()) return next;
+    P = std::move(next);
+  }
+  // Report the applied wrench, reactions included.
+  P->wrench = wrench;
+  return P;
+}
+
+}  // namespace kinestat::vjm

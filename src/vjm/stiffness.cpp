@@ -1,0 +1,205 @@
+#include "vjm/stiffness.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "vjm/bordered_system.hpp"
+
+namespace kinestat::vjm {
+
+std::string describe_twist(const Vec6& t) {
+  const Vec3 v = t.head<3>(), r = t.tail<3>();
+  const double scale = t.norm();
+  auto vec = [](const Vec3& a) {
+    const Vec3 u = a.normalized();
+    return fmt::format("({:.3f}, {:.3f}, {:.3f})", u.x() + 0.0, u.y() + 0.0, u.z() + 0.0);
+  };
+  if (r.norm() <= 1e-9 * scale) return "translation along " + vec(v);
+  if (v.norm() <= 1e-9 * scale) return "rotation about " + vec(r) + " through the tool point";
+  return fmt::format("screw motion: rotation about {} with tool-point translation {:.3g} m/rad along {}", vec(r),
+                     v.norm() / r.norm(), vec(v));
+}
+
+namespace {
+
+std::string list_twists(const std::vector<Vec6>& dirs) {
+  std::string s;
+  for (const Vec6& d : dirs) s += (s.empty() ? "" : "; ") + describe_twist(d);
+  return s;
+}
+
+// Orthonormal basis (scaled twist space) of the complement of the given rigid directions.
+MatX complement_of(const std::vector<Vec6>& rigid, const Vec6& w, double tol, std::vector<Vec6>* rigid_out, double L) {
+  if (rigid.empty()) return Mat6::Identity();
+  MatX R(6, rigid.size());
+  for (size_t k = 0; k < rigid.size(); ++k) R.col(k) = rigid[k].cwiseProduct(w).normalized();
+  Eigen::JacobiSVD<MatX> svd(R, Eigen::ComputeFullU);
+  int r = 0;
+  while (r < svd.singularValues().size() && svd.singularValues()[r] > tol * svd.singularValues()[0]) ++r;
+  rigid_out->clear();
+  for (int k = 0; k < r; ++k) rigid_out->push_back(unscaled_direction(svd.matrixU().col(k), L));
+  return svd.matrixU().rightCols(6 - r);
+}
+
+// Free directions, compliance and status of a (finite-part) stiffness K with the given rigid
+// directions. A chain's free directions are its mobility; a platform's are a singularity.
+void finish(CartesianStiffness& out, const std::vector<Vec6>& rigid, double L, double tol, bool platform,
+            const std::string& who) {
+  const Vec6 w = twist_scale(L);
+  const MatX Uc = complement_of(rigid, w, tol, &out.rigid_directions, L);
+  const Mat6 Kt = w.cwiseInverse().asDiagonal() * out.stiffness * w.cwiseInverse().asDiagonal();
+  const MatX Kc = Uc.transpose() * Kt * Uc;
+  out.free_directions.clear();
+  int rank = 0;
+  if (Kc.size() > 0) {
+    Eigen::JacobiSVD<MatX> svd(Kc, Eigen::ComputeFullV);
+    const VecX& sv = svd.singularValues();
+    while (rank < sv.size() && sv[rank] > tol * sv[0]) ++rank;
+    for (int k = rank; k < sv.size(); ++k)
+      out.free_directions.push_back(unscaled_direction(Uc * svd.matrixV().col(k), L));
+  }
+  out.compliance_defined = out.free_directions.empty();
+  out.compliance.setZero();
+  if (out.compliance_defined && Kc.size() > 0) {
+    // C = W^-1 Uc Kc^-1 Uc^T W^-1: zero along rigid directions.
+    const MatX Ct = Uc * Eigen::FullPivLU<MatX>(Kc).solve(Uc.transpose());
+    out.compliance = w.cwiseInverse().asDiagonal() * Ct * w.cwiseInverse().asDiagonal();
+  }
+  std::string msg;
+  if (!out.rigid_directions.empty())
+    msg += fmt::format("{} is rigid (infinite stiffness, left out of the matrix) along: {}. ", who,
+                       list_twists(out.rigid_directions));
+  if (platform && !out.free_directions.empty())
+    msg += fmt::format(
+        "{} has zero stiffness (a free motion: singular posture or missing constraint) along: {}; "
+        "the compliance is undefined. ",
+        who, list_twists(out.free_directions));
+  if (!msg.empty() && !out.self_motions.empty())
+    msg += fmt::format("The passive joints also have {} self-motion(s) that do not move the tool.",
+                       out.self_motions.size());
+  out.status = msg.empty() ? Status::Ok() : Status::Singular(msg);
+}
+
+std::string chain_label(const Chain& c) { return fmt::format("chain '{}'", c.name()); }
+
+}  // namespace
+
+StatusOr<CartesianStiffness> unloaded_stiffness(const Chain& chain, const StiffnessOptions& opt) {
+  if (Status s = chain.validate(); !s.ok()) return s;
+  const ChainJacobians J = jacobians(chain, chain.nominal_passive(), VecX::Zero(chain.num_virtual()));
+  const BorderedSystem B = factor_bordered_system(J.Jq, spring_compliance(J.Jtheta, chain.spring_stiffness()),
+                                                  chain.length_scale(), opt.rank_tolerance);
+  CartesianStiffness out;
+  out.stiffness = B.K;
+  out.self_motions = B.self_motions;
+  finish(out, B.rigid_directions, chain.length_scale(), opt.rank_tolerance, false, chain_label(chain));
+  return out;
+}
+
+StatusOr<CartesianStiffness> loaded_stiffness(const Chain& chain, const ChainState& state,
+                                              const StiffnessOptions& opt) {
+  if (Status s = chain.validate(); !s.ok()) return s;
+  const int n = chain.num_passive(), m = chain.num_virtual();
+  if (state.q.size() != n || state.theta.size() != m)
+    return Status::Invalid(fmt::format("{}: the state has {} passive and {} virtual coordinates, the chain {} and {}",
+                                       chain_label(chain), state.q.size(), state.theta.size(), n, m));
+  const double L = chain.length_scale();
+  const Vec6 w = twist_scale(L);
+  const ChainJacobians J = jacobians(chain, state.q, state.theta);
+  const ChainHessians H = hessians(chain, state.q, state.theta, state.wrench);
+
+  // k_theta^F = (K_theta - H_thetatheta)^-1 of eq. (21), applied by LU solves.
+  const MatX Ath = chain.spring_stiffness() - H.Hthetatheta;
+  const Eigen::FullPivLU<MatX> lu(Ath);
+  if (m > 0 && !lu.isInvertible())
+    return Status::Singular(
+        fmt::format("{}: K_theta - H_thetatheta is singular under this load: the springs are at "
+                    "their buckling load and the loaded stiffness does not exist",
+                    chain_label(chain)));
+  // Scaled Jacobians (W J) make the rank decisions unit-free; the unknown is then W^-1 dF.
+  const MatX Jq = w.asDiagonal() * J.Jq, Jth = w.asDiagonal() * J.Jtheta;
+  const MatX kJt = m > 0 ? MatX(lu.solve(Jth.transpose())) : MatX::Zero(0, 6);
+  const MatX kH = m > 0 ? MatX(lu.solve(H.Hthetaq)) : MatX::Zero(0, n);
+  const MatX S = Jth * kJt;                         // J_theta k J_theta^T
+  const MatX B = Jq + Jth * kH;                     // J_q + J_theta k K_thetaq
+  const MatX C = Jq.transpose() + H.Hqtheta * kJt;  // J_q^T + K_qtheta k J_theta^T
+  const MatX D = H.Hqq + H.Hqtheta * kH;            // K_qq + K_qtheta k K_thetaq
+
+  // Rigid directions: left null space of [J_q J_theta] (columns normalized). The force along them is
+  // a reaction, so (21) is solved on the complement Uc: dF~ = Uc f, rows projected by Uc^T.
+  MatX Jall(6, n + m);
+  Jall << Jq, Jth;
+  for (int j = 0; j < Jall.cols(); ++j)
+    if (Jall.col(j).norm() > 0) Jall.col(j).normalize();
+  std::vector<Vec6> rigid;
+  int c = 6;
+  Mat6 U = Mat6::Identity();
+  if (Jall.cols() > 0) {
+    Eigen::JacobiSVD<MatX> svd(Jall, Eigen::ComputeFullU);
+    const VecX& sv = svd.singularValues();
+    c = 0;
+    while (c < sv.size() && sv[c] > opt.rank_tolerance * std::max(1.0, sv[0])) ++c;
+    U = svd.matrixU();
+  } else {
+    c = 0;
+  }
+  for (int k = c; k < 6; ++k) rigid.push_back(unscaled_direction(U.col(k), L));
+  const MatX Uc = U.leftCols(c);
+  MatX A(c + n, c + n);
+  A << Uc.transpose() * S * Uc, Uc.transpose() * B, C * Uc, D;
+  MatX rhs = MatX::Zero(c + n, c);
+  rhs.topRows(c).setIdentity();
+  // Minimum-norm solution: a passive self-motion (a null vector with dF = 0) does not change K.
+  const MatX X = Eigen::CompleteOrthogonalDecomposition<MatX>(A).solve(rhs);
+  CartesianStiffness out;
+  out.stiffness = w.asDiagonal() * (Uc * X.topRows(c) * Uc.transpose()) * w.asDiagonal();
+  finish(out, rigid, L, opt.rank_tolerance, false, chain_label(chain));
+  return out;
+}
+
+CartesianStiffness aggregate(const std::vector<CartesianStiffness>& chains, double L, const StiffnessOptions& opt) {
+  CartesianStiffness out;
+  std::vector<Vec6> rigid;
+  for (const CartesianStiffness& c : chains) {
+    out.stiffness += c.stiffness;
+    rigid.insert(rigid.end(), c.rigid_directions.begin(), c.rigid_directions.end());
+  }
+  finish(out, rigid, L, opt.rank_tolerance, true, "the platform");
+  return out;
+}
+
+namespace {
+
+template <class PerChain>
+StatusOr<CartesianStiffness> platform_stiffness(const std::vector<Chain>& chains, const StiffnessOptions& opt,
+                                                PerChain per_chain) {
+  if (Status s = validate_platform(chains); !s.ok()) return s;
+  std::vector<CartesianStiffness> parts;
+  double L = 0.0;
+  for (size_t i = 0; i < chains.size(); ++i) {
+    StatusOr<CartesianStiffness> k = per_chain(i);
+    if (!k.ok()) return k.status();
+    parts.push_back(std::move(*k));
+    L = std::max(L, chains[i].length_scale());
+  }
+  return aggregate(parts, L, opt);
+}
+
+}  // namespace
+
+StatusOr<CartesianStiffness> platform_unloaded_stiffness(const std::vector<Chain>& chains,
+                                                         const StiffnessOptions& opt) {
+  return platform_stiffness(chains, opt, [&](size_t i) { return unloaded_stiffness(chains[i], opt); });
+}
+
+StatusOr<CartesianStiffness> platform_loaded_stiffness(const std::vector<Chain>& chains, const PlatformState& state,
+                                                       const StiffnessOptions& opt) {
+  if (state.chains.size() != chains.size())
+    return Status::Invalid(
+        fmt::format("the platform state has {} chains, the platform {}", state.chains.size(), chains.size()));
+  return platform_stiffness(chains, opt, [&](size_t i) { return loaded_stiffness(chains[i], state.chains[i], opt); });
+}
+
+}  // namespace kinestat::vjm
