@@ -15,6 +15,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
            register_solve_command,
            register_fivebar_command,
            register_design_command,
+           register_link_stiffness_command,
        })
     r(app, ctx);
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector

@@ -33,6 +33,7 @@ using CommandRegistrar = std::function<void(CLI::App& app, Context& ctx)>;
 void register_solve_command(CLI::App& app, Context& ctx);
 void register_fivebar_command(CLI::App& app, Context& ctx);
 void register_design_command(CLI::App& app, Context& ctx);
+void register_link_stiffness_command(CLI::App& app, Context& ctx);
 
 // Runs `kinestat ARGS...` (args excludes the program name).
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

@@ -15,7 +15,8 @@ TEST(BundledFiveBar, FileEqualsBuilderAndTable1Row14) {
   auto file = io::read_structure_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/five_bar.yaml");
   ASSERT_TRUE(file.ok()) << file.status().message();
   constexpr double deg = std::numbers::pi / 180.0;
-  auto built = mechanisms::make_five_bar_structure({}, 64 * deg, 75 * deg, mechanisms::Assembly::kUp);
+  const mechanisms::FiveBarParams paper;  // the paper's section-5 values
+  auto built = mechanisms::make_five_bar_structure(paper, 64 * deg, 75 * deg, mechanisms::Assembly::kUp);
   ASSERT_TRUE(built.ok());
   const msa::Solution a = msa::solve(*file), b = msa::solve(*built);
   ASSERT_TRUE(a.status.ok() && b.status.ok());

@@ -1,0 +1,220 @@
+// kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE]
+// The 6x6 stiffness of one link by FEA (fea/link_stiffness.hpp; docs/fea.md).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/app.hpp"
+#include "fea/link_stiffness.hpp"
+#include "fea/result_cache.hpp"
+#include "fea/surface_mesher.hpp"
+#include "io/fea_vtk.hpp"
+
+namespace kinestat::cli {
+
+namespace {
+
+// Meshes with more nodes than this print their progress (assembly and factorization take seconds).
+constexpr int kProgressNodes = 20000;
+
+StatusOr<std::vector<double>> parse_numbers(const std::string& text, size_t count, const std::string& what) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    try {
+      size_t used = 0;
+      v.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      return Status::Invalid(fmt::format("{}: '{}' is not a number", what, item));
+    }
+  }
+  if (v.size() != count) return Status::Invalid(fmt::format("{}: expected {} comma-separated numbers", what, count));
+  return v;
+}
+
+// "x=V" (plane normal to x at V; likewise y, z), "plane:PX,PY,PZ,NX,NY,NZ", "box:X0,Y0,Z0,X1,Y1,Z1";
+// lengths in the mesh file's unit, converted to m with `scale`.
+StatusOr<fea::Region> parse_region(const std::string& text, double scale, const std::string& option) {
+  const std::string what = "--" + option + " " + text;
+  if (text.size() > 2 && text[1] == '=' && (text[0] == 'x' || text[0] == 'y' || text[0] == 'z')) {
+    auto v = parse_numbers(text.substr(2), 1, what);
+    if (!v.ok()) return v.status();
+    const int axis = text[0] - 'x';
+    Vec3 p = Vec3::Zero();
+    p(axis) = (*v)[0] * scale;
+    return fea::Region::plane(p, Vec3::Unit(axis));
+  }
+  const auto colon = text.find(':');
+  const std::string kind = text.substr(0, colon);
+  if (colon == std::string::npos || (kind != "plane" && kind != "box"))
+    return Status::Invalid(what + ": give x=V, y=V, z=V, plane:PX,PY,PZ,NX,NY,NZ or box:X0,Y0,Z0,X1,Y1,Z1 (mesh units)");
+  auto v = parse_numbers(text.substr(colon + 1), 6, what);
+  if (!v.ok()) return v.status();
+  const Vec3 a = Vec3((*v)[0], (*v)[1], (*v)[2]), b = Vec3((*v)[3], (*v)[4], (*v)[5]);
+  if (kind == "plane") {
+    if (b.norm() == 0.0) return Status::Invalid(what + ": the plane's normal is zero");
+    return fea::Region::plane(a * scale, b);
+  }
+  if ((b.array() < a.array()).any()) return Status::Invalid(what + ": the box's first corner must be its minimum");
+  return fea::Region::box(a * scale, b * scale);
+}
+
+// "steel" (E 210 GPa, nu 0.3), "aluminium" (70 GPa, 0.33) or "E=PA,nu=V".
+StatusOr<Material> parse_material(const std::string& text) {
+  if (text == "steel") return Material::from_E_nu("steel", 210e9, 0.3);
+  if (text == "aluminium" || text == "aluminum") return Material::from_E_nu("aluminium", 70e9, 0.33);
+  double E = 0.0, nu = -2.0;
+  if (std::sscanf(text.c_str(), "E=%lf,nu=%lf", &E, &nu) == 2 && E > 0.0 && nu > -1.0 && nu < 0.5)
+    return Material::from_E_nu(text, E, nu);
+  return Status::Invalid("--material " + text + ": give steel, aluminium or E=PA,nu=V (E > 0 in Pa, -1 < nu < 0.5)");
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+nlohmann::json matrix_json(const Mat6& A) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < 6; ++i) rows.push_back({A(i, 0), A(i, 1), A(i, 2), A(i, 3), A(i, 4), A(i, 5)});
+  return rows;
+}
+
+nlohmann::json result_json(const std::string& mesh_file, const fea::LinkStiffness& r, bool from_cache) {
+  auto vec = [](const auto& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
+  return {{"schema", "kinestat-link-stiffness"},
+          {"version", 1},
+          {"mesh", {{"file", mesh_file}, {"nodes", r.num_nodes}, {"elements", r.num_elements},
+                    {"nodes_per_element", r.nodes_per_element}, {"dofs", r.num_dofs}}},
+          {"from_cache", from_cache},
+          {"reference_model", fea::reference_model_name(r.reference_model)},
+          {"reference_point_m", vec(r.reference_point)},
+          {"units", {{"dofs", "ux uy uz rx ry rz in the mesh (link) frame"},
+                     {"stiffness", "N/m | N/rad (rows ux uy uz), N | N m/rad (rows rx ry rz)"},
+                     {"compliance", "m/N | m/(N m) (rows ux uy uz), rad/N | rad/(N m) (rows rx ry rz)"}}},
+          {"stiffness", matrix_json(r.stiffness)},
+          {"compliance", matrix_json(r.compliance)},
+          {"symmetry_error", {{"compliance", r.compliance_symmetry_error}, {"stiffness", r.stiffness_symmetry_error}}},
+          {"eigenvalues_SI_mixed_units", {{"stiffness", vec(r.stiffness_eigenvalues)},
+                                          {"compliance", vec(r.compliance_eigenvalues)}}}};
+}
+
+int exit_code_of(const Status& s) {
+  if (s.code() == StatusCode::kInvalidInput) return kExitBadInput;
+  if (s.code() == StatusCode::kSingular) return kExitSingular;
+  return kExitInternal;
+}
+
+}  // namespace
+
+void register_link_stiffness_command(CLI::App& app, Context& ctx) {
+  struct Args {
+    std::string mesh, material = "steel", clamp, reference, unit = "mm", model = "rigid", vtk_dir, json_file, cache_dir;
+    std::string reference_point;
+    double size = 0.0, stiff_ratio = 1e4;
+    bool linear = false;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "link-stiffness", "6x6 stiffness of one link by FEA: clamped at --clamp, loaded through a reference body at "
+                        "--reference (docs/fea.md)");
+  cmd->add_option("mesh", args->mesh, "closed triangle surface of the link (STL, OFF, OBJ, PLY)")->required();
+  cmd->add_option("--material", args->material, "steel, aluminium, or E=PA,nu=V")->capture_default_str();
+  cmd->add_option("--clamp", args->clamp, "fixed region: x=V | plane:PX,PY,PZ,NX,NY,NZ | box:X0,Y0,Z0,X1,Y1,Z1 (mesh units)")
+      ->required();
+  cmd->add_option("--reference", args->reference, "reference-end region, same syntax as --clamp")->required();
+  cmd->add_option("--unit", args->unit, "length unit of the mesh file and the regions: mm or m")
+      ->check(CLI::IsMember({"mm", "m"}))
+      ->capture_default_str();
+  cmd->add_option("--size", args->size, "tetrahedron size in mesh units (default: 1/20 of the part's largest extent)");
+  cmd->add_flag("--linear", args->linear, "4-node tetrahedra (default 10-node; linear ones lock in bending)");
+  cmd->add_option("--model", args->model, "reference body: rigid (exact coupling) or stiff-body (the paper's)")
+      ->check(CLI::IsMember({"rigid", "stiff-body"}))
+      ->capture_default_str();
+  cmd->add_option("--stiff-ratio", args->stiff_ratio, "E of the stiff body / E of the link")->capture_default_str();
+  cmd->add_option("--reference-point", args->reference_point,
+                  "X,Y,Z (mesh units): the point whose motion is reported (default: centre of the reference nodes' box)");
+  cmd->add_option("--vtk", args->vtk_dir, "write the six deformed-link .vtu files (ParaView) to this directory");
+  cmd->add_option("--json", args->json_file, "write the matrices (SI units) as JSON to this file");
+  cmd->add_option("--cache", args->cache_dir, "reuse / store results in this directory (keyed by mesh, material, options)");
+  cmd->callback([args, &ctx] {
+    auto fail = [&ctx](const Status& s) {
+      ctx.err << "kinestat link-stiffness: " << s.message() << "\n";
+      ctx.exit_code = exit_code_of(s);
+    };
+    auto write_json = [&](const fea::LinkStiffness& r, bool from_cache) {
+      if (args->json_file.empty()) return;
+      std::ofstream out(args->json_file);
+      out << result_json(args->mesh, r, from_cache).dump(2) << "\n";
+      if (!out) fail(Status::Invalid(args->json_file + ": cannot write the JSON file"));
+    };
+    const double scale = args->unit == "mm" ? 1e-3 : 1.0;
+    auto material = parse_material(args->material);
+    if (!material.ok()) return fail(material.status());
+    fea::LinkStiffnessOptions options;
+    auto clamp = parse_region(args->clamp, scale, "clamp");
+    if (!clamp.ok()) return fail(clamp.status());
+    auto reference = parse_region(args->reference, scale, "reference");
+    if (!reference.ok()) return fail(reference.status());
+    options.clamp = *clamp;
+    options.reference = *reference;
+    options.reference_model = args->model == "rigid" ? fea::ReferenceModel::kRigidCoupling : fea::ReferenceModel::kStiffBody;
+    options.stiff_body_ratio = args->stiff_ratio;
+    if (!args->reference_point.empty()) {
+      auto p = parse_numbers(args->reference_point, 3, "--reference-point");
+      if (!p.ok()) return fail(p.status());
+      options.reference_point = Vec3((*p)[0], (*p)[1], (*p)[2]) * scale;
+    }
+    options.keep_fields = !args->vtk_dir.empty();
+
+    auto surface = fea::check_surface_file(args->mesh);
+    if (!surface.ok()) return fail(surface.status());
+    fea::MeshingOptions meshing;
+    meshing.unit_scale = scale;
+    meshing.quadratic = !args->linear;
+    meshing.size = args->size * scale;
+    if (!(meshing.size > 0.0)) meshing.size = (surface->hi - surface->lo).maxCoeff() * scale / 20.0;
+    std::string cache_key;
+    if (!args->cache_dir.empty()) {
+      const std::string identity = read_bytes(args->mesh) + fmt::format("|size {:.17g} unit {:.17g} quadratic {}",
+                                                                        meshing.size, scale, meshing.quadratic);
+      cache_key = fea::link_stiffness_cache_key(identity, *material, options);
+      if (args->vtk_dir.empty()) {
+        if (auto cached = fea::load_cached_link_stiffness(args->cache_dir, cache_key)) {
+          ctx.out << "(from cache " << args->cache_dir << "/" << cache_key << ".txt)\n"
+                  << fea::link_stiffness_report(*cached);
+          return write_json(*cached, true);
+        }
+      }
+    }
+    auto mesh = fea::mesh_surface_file(args->mesh, meshing);
+    if (!mesh.ok()) return fail(mesh.status());
+    if (mesh->num_nodes() > kProgressNodes)
+      options.progress = [&ctx](const std::string& stage) { ctx.err << "link-stiffness: " << stage << " ...\n"; };
+    auto result = fea::link_stiffness(*mesh, *material, options);
+    if (!result.ok()) return fail(result.status());
+    ctx.out << fmt::format("{}: {} triangles, meshed with size {:g} m; material {} (E = {:g} Pa, nu = {:g})\n",
+                           args->mesh, surface->triangles, meshing.size, material->id, material->E, material->nu())
+            << fea::link_stiffness_report(*result);
+    if (!cache_key.empty())
+      if (Status s = fea::store_cached_link_stiffness(args->cache_dir, cache_key, *result); !s.ok()) return fail(s);
+    if (!args->vtk_dir.empty()) {
+      std::vector<std::string> written;
+      const std::string stem = std::filesystem::path(args->mesh).stem().string();
+      if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *mesh, *result, &written); !s.ok()) return fail(s);
+      for (const auto& w : written) ctx.out << "wrote " << w << "\n";
+    }
+    write_json(*result, false);
+  });
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,47 @@
+// Sparse assembly of the linear-elastic stiffness of a tetrahedral mesh, in parallel (TBB), with
+// clamped nodes removed and an exact rigid coupling (multipoint constraint) eliminated on the fly.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/status.hpp"
+#include "core/types.hpp"
+#include "fea/tet_mesh.hpp"
+#include "solver/sparse_cholesky.hpp"
+
+namespace kinestat::fea {
+
+// How each mesh dof (3 per node: ux, uy, uz) is expressed in the solved (reduced) dofs:
+// u = sum_k coef[k] * reduced[index[k]]. A free dof has one term, a clamped dof none, and a dof of a
+// node rigidly coupled to the 6-dof reference node (u, theta) has up to three: u_node = u + theta x r
+// with r = node - reference point, which eliminates the constraint instead of adding multipliers.
+struct DofMap {
+  struct Terms {
+    int count = 0;
+    std::array<int, 3> index{};
+    std::array<double, 3> coef{};
+  };
+  std::vector<Terms> terms;      // 3 per mesh node
+  int num_dofs = 0;              // reduced dofs
+  int reference_dof = -1;        // first of the 6 reference-node dofs (ux uy uz rx ry rz), -1 if none
+};
+
+// Clamped nodes lose their dofs; `coupled` nodes follow a reference node at `reference_point`
+// whose 6 dofs are numbered last. The two sets must be disjoint (checked by the caller).
+DofMap make_dof_map(const TetMesh& mesh, const std::vector<int>& clamped, const std::vector<int>& coupled,
+                    const Vec3& reference_point);
+
+// All 3 dofs of every node free, in node order (the unconstrained stiffness).
+DofMap free_dof_map(const TetMesh& mesh);
+
+// Mesh displacements (per node, m) from the reduced solution.
+std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduced);
+
+// Lower triangle of the reduced stiffness (N/m, and N or N m for the reference node's dofs).
+// Element e uses the elasticity matrix D[material[e]] (material empty: D[0] for all). Elements are
+// integrated in parallel; fails (kInvalidInput) on an element with a non-positive Jacobian.
+StatusOr<solver::SparseMatrix> assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D,
+                                                  const std::vector<int>& material, const DofMap& map);
+
+}  // namespace kinestat::fea

@@ -1,0 +1,229 @@
+#include "fea/link_stiffness.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include "core/frame.hpp"
+#include "fea/elasticity_assembly.hpp"
+#include "fea/tet_element.hpp"
+
+namespace kinestat::fea {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Vec6 symmetric_eigenvalues(const Mat6& A) {
+  return Eigen::SelfAdjointEigenSolver<Mat6>(0.5 * (A + A.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
+}
+
+// Von Mises stress at each element's centroid for the displacement field u.
+std::vector<double> centroid_von_mises(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
+                                       const std::vector<Vec3>& u) {
+  std::vector<double> vm(mesh.num_elements());
+  const int npe = mesh.nodes_per_element;
+  tbb::parallel_for(0, mesh.num_elements(), [&](int e) {
+    std::array<Vec3, 10> x;
+    VecX ue(3 * npe);
+    const int* v = mesh.element(e);
+    for (int a = 0; a < npe; ++a) {
+      x[a] = mesh.nodes[v[a]];
+      ue.segment<3>(3 * a) = u[v[a]];
+    }
+    double det = 0.0;
+    const MatX B = tet_strain_matrix(x.data(), npe, Vec3::Constant(0.25), &det);
+    vm[e] = von_mises(D[material.empty() ? 0 : material[e]] * (B * ue));
+  });
+  return vm;
+}
+
+}  // namespace
+
+const char* reference_model_name(ReferenceModel m) {
+  return m == ReferenceModel::kRigidCoupling ? "rigid coupling (exact multipoint constraint)"
+                                             : "pseudo-rigid stiff body";
+}
+
+double scaled_symmetry_error(const Mat6& A) {
+  const Vec6 s = A.diagonal().cwiseAbs().cwiseSqrt().cwiseInverse();
+  const Mat6 B = s.asDiagonal() * A * s.asDiagonal();
+  return (B - B.transpose()).norm() / B.norm();
+}
+
+void set_compliance(LinkStiffness& r, const Mat6& compliance) {
+  r.compliance = compliance;
+  r.stiffness = compliance.inverse();
+  r.compliance_symmetry_error = scaled_symmetry_error(r.compliance);
+  r.stiffness_symmetry_error = scaled_symmetry_error(r.stiffness);
+  r.compliance_eigenvalues = symmetric_eigenvalues(r.compliance);
+  r.stiffness_eigenvalues = symmetric_eigenvalues(r.stiffness);
+}
+
+StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& material,
+                                       const LinkStiffnessOptions& options) {
+  if (Status s = validate(mesh); !s.ok()) return s;
+  if (!(material.E > 0.0) || !(material.nu() > -1.0 && material.nu() < 0.5))
+    return Status::Invalid(fmt::format("material '{}': E = {:g} Pa, nu = {:g}; need E > 0 and -1 < nu < 0.5",
+                                       material.id, material.E, material.nu()));
+  auto progress = [&](const std::string& stage) {
+    if (options.progress) options.progress(stage);
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  LinkStiffness r;
+  r.reference_model = options.reference_model;
+  r.num_nodes = mesh.num_nodes();
+  r.num_elements = mesh.num_elements();
+  r.nodes_per_element = mesh.nodes_per_element;
+
+  const std::vector<int> clamped = select_nodes(mesh, options.clamp);
+  if (clamped.empty())
+    return Status::Invalid("link stiffness: the clamp region (" + options.clamp.describe() +
+                           ") contains no mesh node; give a region on the link's origin face");
+
+  std::vector<Mat6> D = {elasticity_matrix(material)};
+  std::vector<int> element_material;
+  std::vector<int> reference_nodes;
+  const bool stiff_body = options.reference_model == ReferenceModel::kStiffBody;
+  if (stiff_body) {
+    if (!(options.stiff_body_ratio > 1.0))
+      return Status::Invalid(fmt::format("link stiffness: stiff-body ratio {:g} must exceed 1", options.stiff_body_ratio));
+    Material body = Material::from_E_nu("pseudo-rigid body", options.stiff_body_ratio * material.E, material.nu());
+    D.push_back(elasticity_matrix(body));
+    element_material.assign(mesh.num_elements(), 0);
+    const double tol = region_tolerance(mesh, options.reference);
+    std::vector<char> in_body(mesh.num_nodes(), 0);
+    for (int e = 0; e < mesh.num_elements(); ++e) {
+      const int* v = mesh.element(e);
+      if (std::all_of(v, v + 4, [&](int n) { return options.reference.contains(mesh.nodes[n], tol); })) {
+        element_material[e] = 1;
+        ++r.num_stiff_elements;
+        for (int a = 0; a < mesh.nodes_per_element; ++a) in_body[v[a]] = 1;
+      }
+    }
+    for (int n = 0; n < mesh.num_nodes(); ++n)
+      if (in_body[n]) reference_nodes.push_back(n);
+    if (reference_nodes.empty())
+      return Status::Invalid("link stiffness: no element lies entirely in the reference region (" +
+                             options.reference.describe() + "), so there is no pseudo-rigid body; give a box "
+                             "around the reference body");
+  } else {
+    reference_nodes = select_nodes(mesh, options.reference);
+    if (reference_nodes.empty())
+      return Status::Invalid("link stiffness: the reference region (" + options.reference.describe() +
+                             ") contains no mesh node; give a region on the link's reference end");
+  }
+  std::vector<int> overlap;
+  std::set_intersection(clamped.begin(), clamped.end(), reference_nodes.begin(), reference_nodes.end(),
+                        std::back_inserter(overlap));
+  if (!overlap.empty())
+    return Status::Invalid(fmt::format("link stiffness: {} nodes are both clamped and on the reference (first at "
+                                       "({:g}, {:g}, {:g}) m); the clamp and reference regions must not touch",
+                                       overlap.size(), mesh.nodes[overlap[0]].x(), mesh.nodes[overlap[0]].y(),
+                                       mesh.nodes[overlap[0]].z()));
+  r.num_clamped_nodes = static_cast<int>(clamped.size());
+  r.num_reference_nodes = static_cast<int>(reference_nodes.size());
+  if (options.reference_point) {
+    r.reference_point = *options.reference_point;
+  } else {
+    // The centre of the nodes' bounding box, not their average: it does not depend on how the
+    // mesher spread nodes over the face (the centre of a face, a bore's axis).
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (int n : reference_nodes) {
+      lo = lo.cwiseMin(mesh.nodes[n]);
+      hi = hi.cwiseMax(mesh.nodes[n]);
+    }
+    r.reference_point = 0.5 * (lo + hi);
+  }
+
+  progress(fmt::format("assembling {} elements", mesh.num_elements()));
+  const DofMap map = make_dof_map(mesh, clamped, stiff_body ? std::vector<int>{} : reference_nodes, r.reference_point);
+  r.num_dofs = map.num_dofs;
+  StatusOr<solver::SparseMatrix> K = assemble_stiffness(mesh, D, element_material, map);
+  if (!K.ok()) return K.status();
+  r.assembly_seconds = seconds_since(t0);
+
+  // Right-hand sides: unit wrenches on the reference node, or spread over the stiff body.
+  MatX F = MatX::Zero(map.num_dofs, 6);
+  if (stiff_body) {
+    Mat6 AtA = Mat6::Zero();
+    for (int n : reference_nodes) {
+      const Eigen::Matrix<double, 3, 6> A = rigid_transfer(mesh.nodes[n] - r.reference_point).topRows<3>();
+      AtA += A.transpose() * A;
+    }
+    const Mat6 AtA_inv = AtA.inverse();
+    for (int n : reference_nodes) {
+      const Eigen::Matrix<double, 3, 6> A = rigid_transfer(mesh.nodes[n] - r.reference_point).topRows<3>();
+      F.middleRows<3>(map.terms[3 * n].index[0]) = A * AtA_inv;  // body nodes are free: one term each
+    }
+  } else {
+    F.middleRows<6>(map.reference_dof).setIdentity();
+  }
+
+  const auto t1 = std::chrono::steady_clock::now();
+  progress(fmt::format("factorizing {} dofs", map.num_dofs));
+  auto cholesky = solver::SparseCholesky::Create(options.cholesky);
+  r.backend = cholesky->backend_description();
+  if (Status s = cholesky->Factorize(*K, &r.factorization); !s.ok()) {
+    if (s.code() == StatusCode::kSingular)
+      return Status::Singular("link stiffness: the clamped link still has a free motion (" + s.message() +
+                              "); the clamp region must hold at least three non-collinear nodes");
+    return s;
+  }
+  progress("solving the six unit load cases");
+  MatX X;
+  if (Status s = cholesky->Solve(F, &X); !s.ok()) return s;
+  set_compliance(r, stiff_body ? Mat6(F.transpose() * X) : Mat6(X.middleRows<6>(map.reference_dof)));
+  if (options.keep_fields) {
+    for (int k = 0; k < 6; ++k) {
+      r.displacement[k] = expand(map, X.col(k));
+      r.von_mises[k] = centroid_von_mises(mesh, D, element_material, r.displacement[k]);
+    }
+  }
+  r.solve_seconds = seconds_since(t1);
+  return r;
+}
+
+std::string link_stiffness_report(const LinkStiffness& r) {
+  std::ostringstream os;
+  os << fmt::format("Link stiffness by FEA ({}-node tetrahedra), reference body: {}\n", r.nodes_per_element,
+                    reference_model_name(r.reference_model));
+  os << fmt::format("  mesh: {} nodes, {} elements; {} clamped nodes, {} reference nodes", r.num_nodes, r.num_elements,
+                    r.num_clamped_nodes, r.num_reference_nodes);
+  if (r.reference_model == ReferenceModel::kStiffBody) os << fmt::format(", {} stiff-body elements", r.num_stiff_elements);
+  os << "\n";
+  if (!r.backend.empty())  // empty for a result read back from the cache
+    os << fmt::format("  solver: {} dofs, {}, ordering {}, nnz(L) = {}; assembly {:.3f} s, factor+solve {:.3f} s\n",
+                      r.num_dofs, r.backend, r.factorization.ordering, r.factorization.nnz_factor, r.assembly_seconds,
+                      r.solve_seconds);
+  os << fmt::format("  reference point ({:.6g}, {:.6g}, {:.6g}) m; axes of the link frame; dofs ux uy uz rx ry rz\n",
+                    r.reference_point.x(), r.reference_point.y(), r.reference_point.z());
+  auto matrix = [&os](const char* title, const Mat6& A) {
+    os << "  " << title << "\n";
+    for (int i = 0; i < 6; ++i) {
+      os << "   ";
+      for (int j = 0; j < 6; ++j) os << fmt::format(" {:13.5e}", A(i, j));
+      os << "\n";
+    }
+  };
+  matrix("stiffness K [N/m, N/rad; N, N m/rad]:", r.stiffness);
+  matrix("compliance C = K^-1 [m/N, m/(N m); rad/N, rad/(N m)]:", r.compliance);
+  os << fmt::format("  symmetry error (diagonally scaled, Frobenius): compliance {:.2e}, stiffness {:.2e}\n",
+                    r.compliance_symmetry_error, r.stiffness_symmetry_error);
+  auto eig = [&os](const char* title, const Vec6& v) {
+    os << "  " << title;
+    for (int i = 0; i < 6; ++i) os << fmt::format(" {:.5e}", v(i));
+    os << "\n";
+  };
+  eig("eigenvalues of K (SI, mixed units):", r.stiffness_eigenvalues);
+  eig("eigenvalues of C (SI, mixed units):", r.compliance_eigenvalues);
+  return os.str();
+}
+
+}  // namespace kinestat::fea

@@ -1,0 +1,89 @@
+#include "io/fea_vtk.hpp"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <vtkCellArray.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkCellData.h>
+#include <vtkPoints.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+namespace kinestat::io {
+
+const char* link_load_case_name(int k) {
+  static const char* kNames[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
+  return kNames[k];
+}
+
+Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const fea::LinkStiffness& result, int k) {
+  if (k < 0 || k > 5 || result.displacement[k].size() != static_cast<size_t>(mesh.num_nodes()) ||
+      result.von_mises[k].size() != static_cast<size_t>(mesh.num_elements()))
+    return Status::Invalid(fmt::format("{}: no displacement field of load case {} for this mesh (compute the link "
+                                       "stiffness with keep_fields on the same mesh)",
+                                       path, k));
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(mesh.num_nodes());
+  for (int i = 0; i < mesh.num_nodes(); ++i) points->SetPoint(i, mesh.nodes[i].data());
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->Allocate(mesh.num_elements());
+  // Our 10-node order is VTK_QUADRATIC_TETRA's (fea/tet_mesh.hpp).
+  const int type = mesh.quadratic() ? VTK_QUADRATIC_TETRA : VTK_TETRA;
+  std::vector<vtkIdType> ids(mesh.nodes_per_element);
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    const int* v = mesh.element(e);
+    for (int a = 0; a < mesh.nodes_per_element; ++a) ids[a] = v[a];
+    grid->InsertNextCell(type, mesh.nodes_per_element, ids.data());
+  }
+  const bool force = k < 3;
+  vtkNew<vtkDoubleArray> u;
+  u->SetName("displacement");
+  u->SetNumberOfComponents(3);
+  u->SetNumberOfTuples(mesh.num_nodes());
+  for (int i = 0; i < mesh.num_nodes(); ++i) u->SetTuple(i, result.displacement[k][i].data());
+  grid->GetPointData()->AddArray(u);
+  grid->GetPointData()->SetActiveVectors("displacement");
+  vtkNew<vtkDoubleArray> vm;
+  vm->SetName("von_mises");
+  vm->SetNumberOfTuples(mesh.num_elements());
+  for (int e = 0; e < mesh.num_elements(); ++e) vm->SetValue(e, result.von_mises[k][e]);
+  grid->GetCellData()->AddArray(vm);
+  // Units and load case travel with the file (ParaView shows field data in its information panel).
+  vtkNew<vtkStringArray> note;
+  note->SetName("load_case");
+  note->InsertNextValue(fmt::format("unit {} = 1 {} on the reference point ({:g}, {:g}, {:g}) m; coordinates m, "
+                                    "displacement m per {}, von_mises Pa per {}",
+                                    link_load_case_name(k), force ? "N" : "N m", result.reference_point.x(),
+                                    result.reference_point.y(), result.reference_point.z(), force ? "N" : "N m",
+                                    force ? "N" : "N m"));
+  grid->GetFieldData()->AddArray(note);
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(grid);
+  writer->SetDataModeToBinary();
+  if (writer->Write() != 1) return Status::Invalid(path + ": cannot write the VTK file (is the directory writable?)");
+  return Status::Ok();
+}
+
+Status write_link_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,
+                            const fea::LinkStiffness& result, std::vector<std::string>* written) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return Status::Invalid(dir + ": cannot create the output directory: " + ec.message());
+  for (int k = 0; k < 6; ++k) {
+    const std::string path = (std::filesystem::path(dir) / (prefix + "_" + link_load_case_name(k) + ".vtu")).string();
+    if (Status s = write_link_vtu(path, mesh, result, k); !s.ok()) return s;
+    if (written) written->push_back(path);
+  }
+  return Status::Ok();
+}
+
+}  // namespace kinestat::io

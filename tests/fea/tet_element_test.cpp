@@ -1,0 +1,113 @@
+// Element-level checks of the 4- and 10-node tetrahedra against elasticity theory.
+#include <gtest/gtest.h>
+
+#include "core/frame.hpp"
+#include "fea/elasticity_assembly.hpp"
+#include "fea/tet_element.hpp"
+#include "fea/tet_mesh.hpp"
+
+namespace kinestat::fea {
+namespace {
+
+const Material kSteel = Material::from_E_nu("steel", 210e9, 0.3);
+
+// A skewed reference tetrahedron (vertices) and its quadratic version.
+std::vector<Vec3> element_nodes(int n) {
+  std::vector<Vec3> x = {{0.01, 0.0, 0.0}, {0.05, 0.01, 0.0}, {0.02, 0.04, 0.005}, {0.015, 0.01, 0.03}};
+  if (n == 10)
+    for (const auto& e : kTet10Edges) x.push_back(0.5 * (x[e[0]] + x[e[1]]));
+  return x;
+}
+
+double tet_volume(const std::vector<Vec3>& x) { return (x[1] - x[0]).dot((x[2] - x[0]).cross(x[3] - x[0])) / 6.0; }
+
+class TetElement : public ::testing::TestWithParam<int> {};
+
+TEST_P(TetElement, SymmetricAndFreeOfForceUnderRigidMotion) {
+  const int n = GetParam();
+  const auto x = element_nodes(n);
+  const MatX K = tet_stiffness(x.data(), n, elasticity_matrix(kSteel));
+  ASSERT_EQ(K.rows(), 3 * n);
+  EXPECT_LT((K - K.transpose()).norm(), 1e-12 * K.norm());
+  // Six rigid modes (translations, small rotations about an arbitrary point): zero nodal forces.
+  for (int m = 0; m < 6; ++m) {
+    Vec6 q = Vec6::Zero();
+    q(m) = 1.0;
+    VecX u(3 * n);
+    for (int a = 0; a < n; ++a) u.segment<3>(3 * a) = rigid_transfer(x[a] - Vec3(0.3, -0.2, 0.1)).topRows<3>() * q;
+    EXPECT_LT((K * u).norm(), 1e-9 * K.norm() * u.norm()) << "mode " << m;
+  }
+  // Exactly six zero eigenvalues, the others positive.
+  Eigen::SelfAdjointEigenSolver<MatX> eig(K);
+  EXPECT_LT(std::abs(eig.eigenvalues()(5)), 1e-9 * eig.eigenvalues().maxCoeff());
+  EXPECT_GT(eig.eigenvalues()(6), 1e-6 * eig.eigenvalues().maxCoeff());
+}
+
+TEST_P(TetElement, StrainEnergyOfUniformStrainMatchesTheory) {
+  // u = E x (E symmetric) is a uniform strain: U = 1/2 u^T K u must equal 1/2 eps^T D eps V.
+  const int n = GetParam();
+  const auto x = element_nodes(n);
+  const Mat6 D = elasticity_matrix(kSteel);
+  const MatX K = tet_stiffness(x.data(), n, D);
+  Mat3 strain;
+  strain << 1e-3, 2e-4, -3e-4, 2e-4, -5e-4, 1e-4, -3e-4, 1e-4, 7e-4;
+  VecX u(3 * n);
+  for (int a = 0; a < n; ++a) u.segment<3>(3 * a) = strain * x[a];
+  Vec6 eps;
+  eps << strain(0, 0), strain(1, 1), strain(2, 2), 2 * strain(1, 2), 2 * strain(0, 2), 2 * strain(0, 1);
+  const double expected = 0.5 * eps.dot(D * eps) * tet_volume(x);
+  EXPECT_NEAR(0.5 * u.dot(K * u), expected, 1e-10 * expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(LinearAndQuadratic, TetElement, ::testing::Values(4, 10));
+
+TEST(ElasticityMatrix, UniaxialStressGivesYoungsModulusAndPoisson) {
+  // Under sigma_xx = 1 only, eps_xx = 1/E and eps_yy = -nu/E (inverse of D).
+  const Vec6 eps = elasticity_matrix(kSteel).inverse() * (Vec6() << 1, 0, 0, 0, 0, 0).finished();
+  EXPECT_NEAR(eps(0), 1.0 / 210e9, 1e-12 / 210e9);
+  EXPECT_NEAR(eps(1), -0.3 / 210e9, 1e-12 / 210e9);
+  EXPECT_NEAR(von_mises((Vec6() << 0, 0, 0, 0, 0, 2.0).finished()), 2.0 * std::sqrt(3.0), 1e-12);
+}
+
+TEST(Assembly, RigidMotionOfWholeLinkGivesZeroReaction) {
+  for (bool quadratic : {false, true}) {
+    TetMesh mesh = make_box_mesh(Vec3::Zero(), Vec3(0.2, 0.02, 0.03), 6, 2, 2);
+    if (quadratic) mesh = to_quadratic(mesh);
+    ASSERT_TRUE(validate(mesh).ok());
+    const DofMap map = free_dof_map(mesh);
+    auto K = assemble_stiffness(mesh, {elasticity_matrix(kSteel)}, {}, map);
+    ASSERT_TRUE(K.ok());
+    const solver::SparseMatrix full = solver::SparseMatrix(K->selfadjointView<Eigen::Lower>());
+    EXPECT_EQ(full.rows(), 3 * mesh.num_nodes());
+    for (int m = 0; m < 6; ++m) {
+      Vec6 q = Vec6::Zero();
+      q(m) = m < 3 ? 1e-3 : 1e-2;
+      VecX u(full.rows());
+      for (int a = 0; a < mesh.num_nodes(); ++a) u.segment<3>(3 * a) = rigid_transfer(mesh.nodes[a]).topRows<3>() * q;
+      // Reaction relative to a unit-strain-sized force scale ||K|| ||u||.
+      EXPECT_LT((full * u).norm(), 1e-10 * full.norm() * u.norm()) << "mode " << m << " quadratic " << quadratic;
+    }
+  }
+}
+
+TEST(Mesh, BoxMeshHasTheBoxVolumeAndQuadraticNodeCount) {
+  const TetMesh mesh = make_box_mesh(Vec3::Zero(), Vec3(0.2, 0.02, 0.03), 5, 2, 3);
+  EXPECT_EQ(mesh.num_elements(), 6 * 5 * 2 * 3);
+  double volume = 0.0;
+  for (int e = 0; e < mesh.num_elements(); ++e) volume += element_volume(mesh, e);
+  EXPECT_NEAR(volume, 0.2 * 0.02 * 0.03, 1e-15);
+  // A structured grid's quadratic version is the grid of half the spacing plus the cell-diagonal
+  // midpoints: (2nx+1)(2ny+1)(2nz+1) nodes (every midpoint of the Kuhn split lies on that grid).
+  EXPECT_EQ(to_quadratic(mesh).num_nodes(), 11 * 5 * 7);
+}
+
+TEST(Mesh, InvertedElementIsReported) {
+  TetMesh mesh = make_box_mesh(Vec3::Zero(), Vec3::Ones(), 1, 1, 1);
+  std::swap(mesh.connectivity[2], mesh.connectivity[3]);
+  const Status s = validate(mesh);
+  EXPECT_EQ(s.code(), StatusCode::kInvalidInput);
+  EXPECT_NE(s.message().find("element 0"), std::string::npos) << s.message();
+}
+
+}  // namespace
+}  // namespace kinestat::fea
