@@ -6,6 +6,15 @@
 
 namespace kinestat::cli {
 
+int exit_code_for(const Status& status) {
+  switch (status.code()) {
+    case StatusCode::kOk: return kExitOk;
+    case StatusCode::kInvalidInput: return kExitBadInput;
+    case StatusCode::kSingular: return kExitSingular;
+    default: return kExitInternal;
+  }
+}
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). SI units unless a file says otherwise."};
   app.require_subcommand(1);
@@ -15,6 +24,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
            register_solve_command,
            register_fivebar_command,
            register_design_command,
+           register_vjm_command,
            register_link_stiffness_command,
        })
     r(app, ctx);

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/status.hpp"
+
 namespace CLI {
 class App;
 }
@@ -18,6 +20,9 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitInternal = 1;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitSingular = 3;
+
+// The exit status for a library status: kOk 0, kInvalidInput 2, kSingular 3, anything else 1.
+int exit_code_for(const Status& status);
 
 // What a subcommand writes to and returns through.
 struct Context {
@@ -33,6 +38,7 @@ using CommandRegistrar = std::function<void(CLI::App& app, Context& ctx)>;
 void register_solve_command(CLI::App& app, Context& ctx);
 void register_fivebar_command(CLI::App& app, Context& ctx);
 void register_design_command(CLI::App& app, Context& ctx);
+void register_vjm_command(CLI::App& app, Context& ctx);
 void register_link_stiffness_command(CLI::App& app, Context& ctx);
 
 // Runs `kinestat ARGS...` (args excludes the program name).

@@ -108,12 +108,6 @@ nlohmann::json result_json(const std::string& mesh_file, const fea::LinkStiffnes
                                           {"compliance", vec(r.compliance_eigenvalues)}}}};
 }
 
-int exit_code_of(const Status& s) {
-  if (s.code() == StatusCode::kInvalidInput) return kExitBadInput;
-  if (s.code() == StatusCode::kSingular) return kExitSingular;
-  return kExitInternal;
-}
-
 }  // namespace
 
 void register_link_stiffness_command(CLI::App& app, Context& ctx) {
@@ -149,7 +143,7 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   cmd->callback([args, &ctx] {
     auto fail = [&ctx](const Status& s) {
       ctx.err << "kinestat link-stiffness: " << s.message() << "\n";
-      ctx.exit_code = exit_code_of(s);
+      ctx.exit_code = exit_code_for(s);
     };
     auto write_json = [&](const fea::LinkStiffness& r, bool from_cache) {
       if (args->json_file.empty()) return;

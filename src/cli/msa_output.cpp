@@ -20,7 +20,7 @@ int finish_msa_run(const msa::Structure& s, const msa::Solution& sol, const MsaO
   const StatusCode code = sol.status.code();
   if (code == StatusCode::kInvalidInput || code == StatusCode::kInternal) {
     ctx.err << "kinestat: " << sol.status.message() << "\n";
-    return code == StatusCode::kInvalidInput ? kExitBadInput : kExitInternal;
+    return exit_code_for(sol.status);
   }
   if (!o.quiet) ctx.out << msa::full_report(s, sol);
   if (!o.json_path.empty()) {
@@ -42,7 +42,7 @@ int finish_msa_run(const msa::Structure& s, const msa::Solution& sol, const MsaO
     if (!o.quiet)
       for (const auto& f : written) ctx.out << "ParaView file: " << f << "\n";
   }
-  return code == StatusCode::kSingular ? kExitSingular : kExitOk;
+  return exit_code_for(sol.status);
 }
 
 }  // namespace kinestat::cli

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 namespace kinestat {
 
 Mat3 skew(const Vec3& v) {
@@ -46,6 +48,14 @@ Mat6 rigid_transfer(const Vec3& offset) {
   Mat6 A = Mat6::Identity();
   A.topRightCorner<3, 3>() = -skew(offset);
   return A;
+}
+
+std::string direction_words(const Vec3& v) {
+  const double n = v.norm();
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(v(i)) > 0.999 * n) return fmt::format("{}{}", v(i) > 0 ? '+' : '-', "xyz"[i]);
+  const Vec3 d = v / n;
+  return fmt::format("({:.3f}, {:.3f}, {:.3f})", d.x() + 0.0, d.y() + 0.0, d.z() + 0.0);  // + 0.0: no "-0.000"
 }
 
 Mat3 axis_angle(const Vec3& axis, double angle) {

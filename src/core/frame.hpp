@@ -1,6 +1,8 @@
 // Rotations and frames: local element axes, 6-dof transformation blocks, rigid-body transfer.
 #pragma once
 
+#include <string>
+
 #include "core/types.hpp"
 
 namespace kinestat {
@@ -24,6 +26,9 @@ Mat6 rotation6(const Mat3& R);
 // Rigid-body transfer: the motion (u, theta) of a point at `offset` from a reference point that
 // moves by (u_ref, theta_ref) is A * (u_ref, theta_ref), A = [I, -[offset]x; 0, I].
 Mat6 rigid_transfer(const Vec3& offset);
+
+// A direction in words for messages: "+y" when it is (within 0.1 %) an axis, else "(0.707, 0.707, 0.000)".
+std::string direction_words(const Vec3& v);
 
 // Rotation matrix about a unit axis by an angle (rad).
 Mat3 axis_angle(const Vec3& axis, double angle);

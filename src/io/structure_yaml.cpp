@@ -5,10 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <initializer_list>
 #include <set>
-#include <sstream>
 #include <tuple>
 #include <unordered_map>
 
@@ -16,38 +13,16 @@
 #include "core/types.hpp"
 #include "elements/beam_element.hpp"
 #include "elements/section.hpp"
+#include "io/yaml_fields.hpp"
 
 namespace kinestat::io {
 namespace {
 
-// Thrown and caught inside this file only: the entry points turn it into a Status.
-struct InputError {
-  std::string message;
-};
-
-// Scale factors from the file's units to SI.
-struct Units {
-  double length = 1.0;  // file length unit in m
-  double force = 1.0;   // file force unit in N
-  double area() const { return length * length; }
-  double inertia() const { return area() * area(); }
-  double stress() const { return force / area(); }
-  double moment() const { return force * length; }
-  double translational_stiffness() const { return force / length; }
-  double rotational_stiffness() const { return force * length; }
-};
-
-std::string join(std::initializer_list<const char*> names) {
-  std::string out;
-  for (const char* n : names) out += (out.empty() ? "" : ", ") + std::string(n);
-  return out;
-}
-
 // One parse of one file. Every check fails through fail(), which names the file, the line of the
 // offending YAML node, the item and the fix.
-class Parser {
+class Parser : public YamlFields {
  public:
-  explicit Parser(std::string file) : file_(std::move(file)) {}
+  explicit Parser(std::string file) : YamlFields(std::move(file), "docs/structure-format.md") {}
 
   msa::Structure parse(const YAML::Node& root) {
     if (!root.IsDefined() || root.IsNull())
@@ -57,7 +32,7 @@ class Parser {
     check_keys(root, "file",
                {"units", "title", "nodes", "materials", "sections", "beams", "joints", "rigid_links", "supports",
                 "load_cases", "report"});
-    parse_units(root["units"]);
+    units_ = units(root["units"]);
     if (const YAML::Node t = root["title"]; t.IsDefined()) s_.set_title(text(t, "file", "title"));
     for_each(root, "nodes", true, [&](const YAML::Node& n, int i) { parse_node(n, i); });
     zero_length_ = 1e-9 * s_.length_scale();  // as Structure::validate() judges coincidence
@@ -76,82 +51,6 @@ class Parser {
   }
 
  private:
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& item, const std::string& what) const {
-    const int line = (at.IsDefined() && !at.Mark().is_null()) ? at.Mark().line + 1 : 0;
-    const std::string where = line > 0 ? fmt::format("{}:{}", file_, line) : file_;
-    throw InputError{fmt::format("{}: {}: {}", where, item, what)};
-  }
-
-  // --- generic checks --------------------------------------------------------------------------
-
-  // `node` must be a map whose keys are all in `allowed`, each once.
-  void check_map(const YAML::Node& node, const std::string& item, std::initializer_list<const char*> allowed) {
-    if (!node.IsMap())
-      fail(node, item,
-           fmt::format("expected a map of keys ({}); write it as 'key: value' lines or {{key: value, ...}}",
-                       join(allowed)));
-    check_keys(node, item, allowed);
-  }
-
-  void check_keys(const YAML::Node& map, const std::string& item, std::initializer_list<const char*> allowed) {
-    std::set<std::string> seen;
-    for (const auto& kv : map) {
-      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-      bool known = false;
-      for (const char* a : allowed) known = known || key == a;
-      if (!known) fail(kv.first, item, fmt::format("unknown key '{}'; allowed keys are: {}", key, join(allowed)));
-      if (!seen.insert(key).second) fail(kv.first, item, fmt::format("key '{}' is given twice; keep one", key));
-    }
-  }
-
-  YAML::Node require(const YAML::Node& map, const std::string& item, const char* key) {
-    const YAML::Node v = map[key];
-    if (!v.IsDefined() || v.IsNull())
-      fail(map, item, fmt::format("missing required key '{}'; add it (see docs/structure-format.md)", key));
-    return v;
-  }
-
-  // Runs `f` on each entry of the list root[key] (absent is allowed unless `required`).
-  template <class F>
-  void for_each(const YAML::Node& root, const char* key, bool required, F f) {
-    const YAML::Node list = root[key];
-    if (!list.IsDefined() || list.IsNull()) {
-      if (required) fail(root, "file", fmt::format("missing required key '{}'; add a list of {}", key, key));
-      return;
-    }
-    if (!list.IsSequence()) fail(list, key, "expected a list; write one '- ...' entry per item");
-    for (std::size_t i = 0; i < list.size(); ++i) f(list[i], static_cast<int>(i));
-  }
-
-  double number(const YAML::Node& v, const std::string& item, const std::string& key) {
-    double x = 0.0;
-    if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x)) {
-      fail(v, item,
-           fmt::format("'{}' must be a finite number, got '{}'; write e.g. 2.1e11", key,
-                       v.IsScalar() ? v.Scalar() : "a list or map"));
-    }
-    return x;
-  }
-
-  double positive(const YAML::Node& v, const std::string& item, const std::string& key) {
-    const double x = number(v, item, key);
-    if (!(x > 0.0))
-      fail(v, item, fmt::format("'{}' must be positive, got {}; give a value > 0 in the file's units", key, x));
-    return x;
-  }
-
-  std::string text(const YAML::Node& v, const std::string& item, const std::string& key) {
-    if (!v.IsScalar() || v.Scalar().empty())
-      fail(v, item, fmt::format("'{}' must be a single word or quoted text", key));
-    return v.Scalar();
-  }
-
-  Vec3 vec3(const YAML::Node& v, const std::string& item, const std::string& key) {
-    if (!v.IsSequence() || v.size() != 3)
-      fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
-    return {number(v[0], item, key), number(v[1], item, key), number(v[2], item, key)};
-  }
-
   int dof(const YAML::Node& v, const std::string& item) {
     if (v.IsScalar()) {
       for (int d = 0; d < kDofsPerNode; ++d) {
@@ -204,18 +103,6 @@ class Parser {
   }
 
   // --- blocks ----------------------------------------------------------------------------------
-
-  void parse_units(const YAML::Node& v) {
-    if (!v.IsDefined()) return;
-    const std::string u = v.IsScalar() ? v.Scalar() : "";
-    if (u == "SI") {
-      units_ = {};
-    } else if (u == "mm-N-s") {
-      units_ = {1e-3, 1.0};
-    } else {
-      fail(v, "units", fmt::format("unknown units '{}'; write SI (m, N, Pa) or mm-N-s (mm, N, MPa)", u));
-    }
-  }
 
   void parse_node(const YAML::Node& n, int i) {
     const std::string id = entry_id(n, "node", i, node_ids_);
@@ -450,8 +337,7 @@ class Parser {
     s_.add_load_case(lc);
   }
 
-  std::string file_;
-  Units units_;
+  FileUnits units_;
   double zero_length_ = 0.0;
   msa::Structure s_;
   std::unordered_map<std::string, int> node_index_;  // a hash map: large frames reference nodes often
@@ -461,29 +347,17 @@ class Parser {
 }  // namespace
 
 StatusOr<msa::Structure> read_structure_yaml_string(const std::string& text, const std::string& display_name) {
-  Parser parser(display_name);
-  try {
-    msa::Structure s = parser.parse(YAML::Load(text));
-    if (const Status st = s.validate(); !st.ok()) return Status(st.code(), display_name + ": " + st.message());
-    return s;
-  } catch (const InputError& e) {
-    return Status::Invalid(e.message);
-  } catch (const YAML::ParserException& e) {
-    return Status::Invalid(fmt::format("{}:{}: malformed YAML: {}; check indentation, colons and brackets",
-                                       display_name, e.mark.line + 1, e.msg));
-  } catch (const YAML::Exception& e) {
-    const std::string where = e.mark.is_null() ? display_name : fmt::format("{}:{}", display_name, e.mark.line + 1);
-    return Status::Invalid(fmt::format("{}: {}; check the file against docs/structure-format.md", where, e.msg));
-  }
+  StatusOr<msa::Structure> s = parse_yaml_text<msa::Structure>(
+      text, display_name, "docs/structure-format.md", [&](const YAML::Node& root) { return Parser(display_name).parse(root); });
+  if (!s.ok()) return s;
+  if (const Status st = s->validate(); !st.ok()) return Status(st.code(), display_name + ": " + st.message());
+  return s;
 }
 
 StatusOr<msa::Structure> read_structure_yaml(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
-    return Status::Invalid(fmt::format("{}: cannot open the structure file; check the path and permissions", path));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return read_structure_yaml_string(text.str(), path);
+  StatusOr<std::string> text = read_text_file(path, "structure file");
+  if (!text.ok()) return text.status();
+  return read_structure_yaml_string(*text, path);
 }
 
 }  // namespace kinestat::io

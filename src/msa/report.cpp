@@ -10,7 +10,9 @@ namespace {
 
 const char* kDofUnits[6] = {"m", "m", "m", "rad", "rad", "rad"};
 
-std::string matrix6(const Mat6& M, const char* title, const char* units) {
+}  // namespace
+
+std::string matrix6_report(const Mat6& M, const std::string& title, const char* units) {
   std::string out = fmt::format("  {} [{}]\n", title, units);
   static const char* names[6] = {"x", "y", "z", "rx", "ry", "rz"};
   out += "          ";
@@ -23,8 +25,6 @@ std::string matrix6(const Mat6& M, const char* title, const char* units) {
   }
   return out;
 }
-
-}  // namespace
 
 std::string indices_report(const StiffnessIndices& ix) {
   std::string out;
@@ -87,7 +87,7 @@ std::string full_report(const Structure& s, const Solution& sol) {
     const auto& c = *sol.cartesian;
     out += fmt::format("\nCartesian stiffness of node '{}' (static condensation, global axes)\n", s.nodes()[c.node].id);
     if (c.stiffness_defined) {
-      out += matrix6(c.stiffness, "stiffness K", "N/m, N/rad; N m/m, N m/rad");
+      out += matrix6_report(c.stiffness, "stiffness K", "N/m, N/rad; N m/m, N m/rad");
       out += "  indices of K:\n" + indices_report(c.indices);
       out += "  eigenvalues of K: ";
       for (int i = 0; i < c.indices.eigenvalues.size(); ++i) out += fmt::format("{:.4e} ", c.indices.eigenvalues(i));
@@ -95,7 +95,7 @@ std::string full_report(const Structure& s, const Solution& sol) {
     } else {
       out += "  " + c.note + "\n";
     }
-    out += matrix6(c.compliance, "compliance C = K^-1", "m/N, m/(N m); rad/N, rad/(N m)");
+    out += matrix6_report(c.compliance, "compliance C = K^-1", "m/N, m/(N m); rad/N, rad/(N m)");
   }
   if (sol.global_indices) out += "\nindices of the reduced global stiffness matrix:\n" + indices_report(*sol.global_indices);
   return out;

@@ -11,14 +11,6 @@
 namespace kinestat::msa {
 namespace {
 
-std::string direction_words(const Vec3& v) {
-  const double n = v.norm();
-  for (int i = 0; i < 3; ++i)
-    if (std::abs(v(i)) > 0.999 * n) return fmt::format("{}{}", v(i) > 0 ? '+' : '-', "xyz"[i]);
-  const Vec3 d = v / n;
-  return fmt::format("({:.3f}, {:.3f}, {:.3f})", d.x(), d.y(), d.z());
-}
-
 std::string weak_dof_words(const Structure& s, const ReducedDof& rd) {
   const bool global = rd.frame.isApprox(Mat3::Identity());
   return fmt::format("node '{}' {}{}", s.nodes()[rd.node].id, dof_name(rd.component), global ? "" : " (local frame)");

@@ -111,4 +111,6 @@ std::string full_report(const Structure& s, const Solution& sol);
 namespace kinestat::msa {
 // The stiffness indices as printed lines (used in reports of every method).
 std::string indices_report(const StiffnessIndices& ix);
+// A 6x6 matrix (dofs x y z rx ry rz) under a title line "  TITLE [UNITS]", one labelled row per dof.
+std::string matrix6_report(const Mat6& M, const std::string& title, const char* units);
 }  // namespace kinestat::msa

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/frame.hpp"
 #include "vjm/bordered_system.hpp"
 
 namespace kinestat::vjm {
@@ -12,14 +13,10 @@ namespace kinestat::vjm {
 std::string describe_twist(const Vec6& t) {
   const Vec3 v = t.head<3>(), r = t.tail<3>();
   const double scale = t.norm();
-  auto vec = [](const Vec3& a) {
-    const Vec3 u = a.normalized();
-    return fmt::format("({:.3f}, {:.3f}, {:.3f})", u.x() + 0.0, u.y() + 0.0, u.z() + 0.0);
-  };
-  if (r.norm() <= 1e-9 * scale) return "translation along " + vec(v);
-  if (v.norm() <= 1e-9 * scale) return "rotation about " + vec(r) + " through the tool point";
-  return fmt::format("screw motion: rotation about {} with tool-point translation {:.3g} m/rad along {}", vec(r),
-                     v.norm() / r.norm(), vec(v));
+  if (r.norm() <= 1e-9 * scale) return "translation along " + direction_words(v);
+  if (v.norm() <= 1e-9 * scale) return "rotation about " + direction_words(r) + " through the tool point";
+  return fmt::format("screw motion: rotation about {} with tool-point translation {:.3g} m/rad along {}", direction_words(r),
+                     v.norm() / r.norm(), direction_words(v));
 }
 
 namespace {

@@ -8,22 +8,16 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/app.hpp"
+#include "cli_run.hpp"
 
 namespace kinestat::cli {
 namespace {
 
 const std::string kBar = std::string(KINESTAT_SOURCE_DIR) + "/meshes/bar.off";
 
-struct CommandRun {
-  int code;
-  std::string out, err;
-};
-
-CommandRun run_link_stiffness(std::vector<std::string> args) {
-  std::ostringstream out, err;
+CliRun run_link_stiffness(std::vector<std::string> args) {
   args.insert(args.begin(), "link-stiffness");
-  const int code = run(args, out, err);
-  return {code, out.str(), err.str()};
+  return run_cli(args);
 }
 
 TEST(LinkStiffnessCommand, BarJsonMatchesBeamTheoryAndCacheReproducesIt) {
@@ -33,7 +27,7 @@ TEST(LinkStiffnessCommand, BarJsonMatchesBeamTheoryAndCacheReproducesIt) {
   const std::string json = (tmp / "bar.json").string(), cache = (tmp / "cache").string();
   const std::vector<std::string> args = {kBar, "--material", "steel", "--clamp", "x=0", "--reference", "x=200",
                                          "--size", "7", "--json", json, "--cache", cache};
-  CommandRun r = run_link_stiffness(args);
+  CliRun r = run_link_stiffness(args);
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("[N/m"), std::string::npos) << r.out;  // units are printed
   nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
@@ -45,7 +39,7 @@ TEST(LinkStiffnessCommand, BarJsonMatchesBeamTheoryAndCacheReproducesIt) {
   EXPECT_LT(j["symmetry_error"]["stiffness"].get<double>(), 1e-6);
 
   // Second run: from the cache, same numbers.
-  CommandRun again = run_link_stiffness(args);
+  CliRun again = run_link_stiffness(args);
   ASSERT_EQ(again.code, kExitOk) << again.err;
   EXPECT_NE(again.out.find("from cache"), std::string::npos);
   nlohmann::json j2 = nlohmann::json::parse(std::ifstream(json));
@@ -55,7 +49,7 @@ TEST(LinkStiffnessCommand, BarJsonMatchesBeamTheoryAndCacheReproducesIt) {
 }
 
 TEST(LinkStiffnessCommand, BadInputExitsWith2AndSaysWhatToFix) {
-  CommandRun r = run_link_stiffness({kBar, "--clamp", "x=0", "--reference", "q=1"});
+  CliRun r = run_link_stiffness({kBar, "--clamp", "x=0", "--reference", "q=1"});
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("--reference q=1"), std::string::npos) << r.err;
   r = run_link_stiffness({kBar, "--clamp", "x=-50", "--reference", "x=200", "--size", "20"});

@@ -8,20 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/app.hpp"
+#include "cli_run.hpp"
 
 namespace kinestat::cli {
 namespace {
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
-
-CliRun run_cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run(args, out, err);
-  return {code, out.str(), err.str()};
-}
 
 const std::string kModels = std::string(KINESTAT_SOURCE_DIR) + "/models/";
 

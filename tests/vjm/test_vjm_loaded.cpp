@@ -165,7 +165,7 @@ TEST(VjmLoaded, WrenchOnAFreeDirectionIsRefused) {
   const std::vector<Chain> c = {pendulum(kK, kKa, kL)};
   const StatusOr<PlatformState> s = platform_equilibrium_under_wrench(c, (Vec6() << 0, 0, 0, 0, 0, 1.0).finished());
   EXPECT_EQ(s.status().code(), StatusCode::kSingular);
-  EXPECT_NE(s.status().message().find("rotation about (0.000, 0.000, 1.000)"), std::string::npos)
+  EXPECT_NE(s.status().message().find("rotation about +z"), std::string::npos)
       << s.status().message();
 }
 

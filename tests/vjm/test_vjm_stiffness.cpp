@@ -108,7 +108,7 @@ TEST(VjmStiffness, PendulumUnloadedHasClosedFormAndNamesRigidDirections) {
   EXPECT_EQ(K->status.code(), StatusCode::kSingular);
   EXPECT_EQ(K->rigid_directions.size(), 3u);
   EXPECT_NE(K->status.message().find("rigid"), std::string::npos);
-  EXPECT_NE(K->status.message().find("translation along (0.000, 0.000, 1.000)"), std::string::npos)
+  EXPECT_NE(K->status.message().find("translation along +z"), std::string::npos)
       << K->status.message();
   ASSERT_EQ(K->free_directions.size(), 1u);
   EXPECT_NEAR(std::abs(K->free_directions[0][5]), 1.0, 1e-12);  // rotation about z

@@ -1,0 +1,97 @@
+// Checked access to the fields of a YAML model file, shared by the file readers (structure_yaml,
+// vjm_yaml). Every check fails with one message "FILE:LINE: ITEM: what is wrong; what to do"
+// (yaml-cpp's 0-based Mark() line printed 1-based; omitted when the node has no position).
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+
+#include "core/status.hpp"
+#include "core/types.hpp"
+
+namespace kinestat::io {
+
+// Thrown by YamlFields::fail and caught by parse_yaml_text: never crosses the io layer.
+struct YamlInputError {
+  std::string message;
+};
+
+// "a, b, c"
+std::string join_keys(std::initializer_list<const char*> names);
+
+// Scale factors from a file's units to SI: `units: SI` (m, N, Pa) or `units: mm-N-s` (mm, N, MPa).
+struct FileUnits {
+  double length = 1.0;  // file length unit in m
+  double force = 1.0;   // file force unit in N
+  double area() const { return length * length; }
+  double inertia() const { return area() * area(); }
+  double stress() const { return force / area(); }
+  double moment() const { return force * length; }
+  double translational_stiffness() const { return force / length; }
+  double rotational_stiffness() const { return force * length; }
+};
+
+class YamlFields {
+ public:
+  // `file` names the file in messages; `format_doc` is the page that documents the format.
+  YamlFields(std::string file, std::string format_doc) : file_(std::move(file)), doc_(std::move(format_doc)) {}
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& item, const std::string& what) const;
+
+  // `node` must be a map whose keys are all in `allowed`, each once.
+  void check_map(const YAML::Node& node, const std::string& item, std::initializer_list<const char*> allowed) const;
+  void check_keys(const YAML::Node& map, const std::string& item, std::initializer_list<const char*> allowed) const;
+  YAML::Node require(const YAML::Node& map, const std::string& item, const char* key) const;
+
+  // Runs `f(entry, index)` on each entry of the list root[key] (absent is allowed unless `required`).
+  template <class F>
+  void for_each(const YAML::Node& root, const char* key, bool required, F f) const {
+    const YAML::Node list = root[key];
+    if (!list.IsDefined() || list.IsNull()) {
+      if (required) fail(root, "file", "missing required key '" + std::string(key) + "'; add a list of " + key);
+      return;
+    }
+    if (!list.IsSequence()) fail(list, key, "expected a list; write one '- ...' entry per item");
+    for (std::size_t i = 0; i < list.size(); ++i) f(list[i], static_cast<int>(i));
+  }
+
+  double number(const YAML::Node& v, const std::string& item, const std::string& key) const;
+  double positive(const YAML::Node& v, const std::string& item, const std::string& key) const;
+  std::string text(const YAML::Node& v, const std::string& item, const std::string& key) const;
+  Vec3 vec3(const YAML::Node& v, const std::string& item, const std::string& key) const;
+  // The `units:` value (absent: SI).
+  FileUnits units(const YAML::Node& v) const;
+
+  const std::string& file() const { return file_; }
+  const std::string& format_doc() const { return doc_; }
+
+ private:
+  std::string file_;
+  std::string doc_;
+};
+
+// Loads `text` and runs parse(root), turning YamlInputError and yaml-cpp's exceptions into
+// kInvalidInput messages that name `display_name` and the line.
+template <class T, class Parse>
+StatusOr<T> parse_yaml_text(const std::string& text, const std::string& display_name, const std::string& format_doc,
+                            Parse parse) {
+  try {
+    return parse(YAML::Load(text));
+  } catch (const YamlInputError& e) {
+    return Status::Invalid(e.message);
+  } catch (const YAML::ParserException& e) {
+    return Status::Invalid(display_name + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg +
+                           "; check indentation, colons and brackets");
+  } catch (const YAML::Exception& e) {
+    const std::string where = e.mark.is_null() ? display_name : display_name + ":" + std::to_string(e.mark.line + 1);
+    return Status::Invalid(where + ": " + e.msg + "; check the file against " + format_doc);
+  }
+}
+
+// The whole file as text; kInvalidInput naming the path and `what` ("structure file") if unreadable.
+StatusOr<std::string> read_text_file(const std::string& path, const std::string& what);
+
+}  // namespace kinestat::io

@@ -1,0 +1,114 @@
+// kinestat vjm: printed stiffness against closed forms at the Orthoglide's Q0, loaded mode, exit codes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "cli/app.hpp"
+#include "cli_run.hpp"
+#include "core/types.hpp"
+
+namespace kinestat::cli {
+namespace {
+
+const std::string kSource = KINESTAT_SOURCE_DIR;
+const std::string kPuu = kSource + "/models/orthoglide_puu.yaml";
+const std::string kPrpar = kSource + "/models/orthoglide_prpar.yaml";
+
+// The 6x6 printed after the line that contains `title`.
+Mat6 printed_matrix(const std::string& out, const std::string& title) {
+  Mat6 M = Mat6::Constant(std::nan(""));
+  const std::size_t at = out.find(title);
+  if (at == std::string::npos) return M;
+  std::istringstream s(out.substr(out.find('\n', at) + 1));
+  std::string line, label;
+  std::getline(s, line);  // the column names
+  for (int i = 0; i < 6; ++i) {
+    s >> label;  // the row's dof name
+    for (int j = 0; j < 6; ++j) s >> M(i, j);
+  }
+  return M;
+}
+
+// At Q0 a tool translation along x stretches only leg x (legs y and z turn in their U joints), in
+// series: actuator, foot (axial, L/EA) and leg (two tube bars, axial). Inputs of models/orthoglide_*.yaml.
+double q0_translational_compliance() {
+  const double k_actuator = 2e7;                                                   // N/m
+  const double foot = 0.1 / (210e9 * (0.06 * 0.06 - 0.05 * 0.05));                // m/N
+  const double leg = 0.3106 / (70e9 * 2 * std::numbers::pi / 4 * (0.02 * 0.02 - 0.016 * 0.016));
+  return 1 / k_actuator + foot + leg;
+}
+
+void expect_isotropic_translation(const Mat6& C, double c) {
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(C(i, i), c, 1e-4 * c) << i;  // printed with 5 significant digits
+    for (int j = 0; j < 3; ++j)
+      if (j != i) {
+        EXPECT_LT(std::abs(C(i, j)), 1e-6 * c) << i << "," << j;
+      }
+  }
+}
+
+TEST(VjmCommand, PuuAtQ0IsIsotropicWithTheSeriesCompliance) {
+  const CliRun r = run_cli({"vjm", kPuu});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const Mat6 C = printed_matrix(r.out, "compliance C = K^-1 (unloaded");
+  expect_isotropic_translation(C, q0_translational_compliance());
+  // Stiffness printed is the inverse of the compliance printed, and symmetric.
+  const Mat6 K = printed_matrix(r.out, "stiffness K (unloaded");
+  EXPECT_LT((K * C - Mat6::Identity()).cwiseAbs().maxCoeff(), 1e-3);
+  EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-4 * K.cwiseAbs().maxCoeff());
+  EXPECT_NE(r.out.find("condition number"), std::string::npos);
+  EXPECT_EQ(r.out.find("LOST"), std::string::npos);
+}
+
+TEST(VjmCommand, PrparAtQ0HasTheSameTranslationalCompliance) {
+  const CliRun r = run_cli({"vjm", kPrpar, "--point", "0,0,0"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  expect_isotropic_translation(printed_matrix(r.out, "compliance C = K^-1 (unloaded"), q0_translational_compliance());
+}
+
+TEST(VjmCommand, WrenchGivesTheComplianceTimesTheForce) {
+  // 100 N along x at Q0: dx = c F (the 7 um stretch changes the geometry by ~1e-5 relative).
+  const CliRun r = run_cli({"vjm", kPuu, "--wrench", "100,0,0,0,0,0"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("loaded equilibrium"), std::string::npos);
+  const std::size_t at = r.out.find("displacement (");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double dx_mm = std::stod(r.out.substr(at + 14));
+  EXPECT_NEAR(dx_mm, 100 * q0_translational_compliance() * 1e3, 1e-4 * dx_mm);
+  EXPECT_NE(printed_matrix(r.out, "stiffness K (loaded").maxCoeff(), 0.0);
+}
+
+TEST(VjmCommand, PrescribedDisplacementReportsTheWrench) {
+  // 0.007 mm along x at Q0 needs F = dx / c along x.
+  const CliRun r = run_cli({"vjm", kPuu, "--load", "0.007,0,0,0,0,0"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const std::size_t at = r.out.find("wrench F = (");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double Fx = std::stod(r.out.substr(at + 12));
+  EXPECT_NEAR(Fx, 7e-6 / q0_translational_compliance(), 1e-4 * Fx);
+}
+
+TEST(VjmCommand, BadInputExitsWith2) {
+  CliRun r = run_cli({"vjm", kPuu, "--point", "400,0,0"});  // beyond the leg length: unreachable
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_FALSE(r.err.empty());
+  r = run_cli({"vjm", kPuu, "--point", "1,2"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--point takes 3 numbers"), std::string::npos) << r.err;
+  r = run_cli({"vjm", kSource + "/tests/io/data/vjm_puu_q0.yaml", "--point", "0,0,0"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("mechanism: orthoglide"), std::string::npos) << r.err;
+  r = run_cli({"vjm", kPuu, "--load", "0,0,0,0,0,0", "--wrench", "1,0,0,0,0,0"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  r = run_cli({"vjm", kSource + "/models/five_bar.yaml"});  // an MSA structure file, not a VJM model
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("five_bar.yaml:"), std::string::npos) << r.err;
+  r = run_cli({"vjm", "/nonexistent.yaml"});
+  EXPECT_EQ(r.code, kExitBadInput);
+}
+
+}  // namespace
+}  // namespace kinestat::cli
