@@ -51,6 +51,7 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
   }
   if (st.code() != StatusCode::kSingular) return st;
   sol.singularity = diagnose_singularity(s, sys.map, sys.Kr, sol.factorization, opt.mechanism_ratio);
+  if (!sol.singularity.modes.empty()) sol.softest_mode_ratio = sol.singularity.modes.front().rayleigh_ratio;
   if (!opt.regularize) return Status::Singular(sol.singularity.message);
   solver::SparseMatrix R = sys.Kr;
   const double dmax = R.diagonal().cwiseAbs().maxCoeff();
