@@ -54,8 +54,8 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
   if (!sol.singularity.modes.empty()) sol.softest_mode_ratio = sol.singularity.modes.front().rayleigh_ratio;
   if (!opt.regularize) return Status::Singular(sol.singularity.message);
   solver::SparseMatrix R = sys.Kr;
-  const double dmax = R.diagonal().cwiseAbs().maxCoeff();
-  for (int i = 0; i < R.rows(); ++i) R.coeffRef(i, i) += opt.regularization * std::max(std::abs(R.coeff(i, i)), 1e-12 * dmax);
+  const VecX D = solver::stiffness_scaling(R);
+  for (int i = 0; i < R.rows(); ++i) R.coeffRef(i, i) += opt.regularization * D(i);
   regularized = solver::SparseCholesky::Create({.singular_pivot_ratio = 0.0});
   if (Status r = regularized->Factorize(R, nullptr); !r.ok()) return r;
   sol.regularized = true;
