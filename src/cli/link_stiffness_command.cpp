@@ -1,11 +1,9 @@
 // kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE]
 // The 6x6 stiffness of one link by FEA (fea/link_stiffness.hpp; docs/fea.md).
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <ostream>
-#include <sstream>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -13,6 +11,7 @@
 
 #include "cli/app.hpp"
 #include "fea/link_stiffness.hpp"
+#include "fea/link_stiffness_inputs.hpp"
 #include "fea/result_cache.hpp"
 #include "fea/surface_mesher.hpp"
 #include "io/fea_vtk.hpp"
@@ -23,65 +22,6 @@ namespace {
 
 // Meshes with more nodes than this print their progress (assembly and factorization take seconds).
 constexpr int kProgressNodes = 20000;
-
-StatusOr<std::vector<double>> parse_numbers(const std::string& text, size_t count, const std::string& what) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      size_t used = 0;
-      v.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      return Status::Invalid(fmt::format("{}: '{}' is not a number", what, item));
-    }
-  }
-  if (v.size() != count) return Status::Invalid(fmt::format("{}: expected {} comma-separated numbers", what, count));
-  return v;
-}
-
-// "x=V" (plane normal to x at V; likewise y, z), "plane:PX,PY,PZ,NX,NY,NZ", "box:X0,Y0,Z0,X1,Y1,Z1";
-// lengths in the mesh file's unit, converted to m with `scale`.
-StatusOr<fea::Region> parse_region(const std::string& text, double scale, const std::string& option) {
-  const std::string what = "--" + option + " " + text;
-  if (text.size() > 2 && text[1] == '=' && (text[0] == 'x' || text[0] == 'y' || text[0] == 'z')) {
-    auto v = parse_numbers(text.substr(2), 1, what);
-    if (!v.ok()) return v.status();
-    const int axis = text[0] - 'x';
-    Vec3 p = Vec3::Zero();
-    p(axis) = (*v)[0] * scale;
-    return fea::Region::plane(p, Vec3::Unit(axis));
-  }
-  const auto colon = text.find(':');
-  const std::string kind = text.substr(0, colon);
-  if (colon == std::string::npos || (kind != "plane" && kind != "box"))
-    return Status::Invalid(what + ": give x=V, y=V, z=V, plane:PX,PY,PZ,NX,NY,NZ or box:X0,Y0,Z0,X1,Y1,Z1 (mesh units)");
-  auto v = parse_numbers(text.substr(colon + 1), 6, what);
-  if (!v.ok()) return v.status();
-  const Vec3 a = Vec3((*v)[0], (*v)[1], (*v)[2]), b = Vec3((*v)[3], (*v)[4], (*v)[5]);
-  if (kind == "plane") {
-    if (b.norm() == 0.0) return Status::Invalid(what + ": the plane's normal is zero");
-    return fea::Region::plane(a * scale, b);
-  }
-  if ((b.array() < a.array()).any()) return Status::Invalid(what + ": the box's first corner must be its minimum");
-  return fea::Region::box(a * scale, b * scale);
-}
-
-// "steel" (E 210 GPa, nu 0.3), "aluminium" (70 GPa, 0.33) or "E=PA,nu=V".
-StatusOr<Material> parse_material(const std::string& text) {
-  if (text == "steel") return Material::from_E_nu("steel", 210e9, 0.3);
-  if (text == "aluminium" || text == "aluminum") return Material::from_E_nu("aluminium", 70e9, 0.33);
-  double E = 0.0, nu = -2.0;
-  if (std::sscanf(text.c_str(), "E=%lf,nu=%lf", &E, &nu) == 2 && E > 0.0 && nu > -1.0 && nu < 0.5)
-    return Material::from_E_nu(text, E, nu);
-  return Status::Invalid("--material " + text + ": give steel, aluminium or E=PA,nu=V (E > 0 in Pa, -1 < nu < 0.5)");
-}
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 nlohmann::json matrix_json(const Mat6& A) {
   nlohmann::json rows = nlohmann::json::array();
@@ -152,19 +92,19 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       if (!out) fail(Status::Invalid(args->json_file + ": cannot write the JSON file"));
     };
     const double scale = args->unit == "mm" ? 1e-3 : 1.0;
-    auto material = parse_material(args->material);
+    auto material = fea::parse_material(args->material, "--material " + args->material);
     if (!material.ok()) return fail(material.status());
     fea::LinkStiffnessOptions options;
-    auto clamp = parse_region(args->clamp, scale, "clamp");
+    auto clamp = fea::parse_region(args->clamp, scale, "--clamp " + args->clamp);
     if (!clamp.ok()) return fail(clamp.status());
-    auto reference = parse_region(args->reference, scale, "reference");
+    auto reference = fea::parse_region(args->reference, scale, "--reference " + args->reference);
     if (!reference.ok()) return fail(reference.status());
     options.clamp = *clamp;
     options.reference = *reference;
     options.reference_model = args->model == "rigid" ? fea::ReferenceModel::kRigidCoupling : fea::ReferenceModel::kStiffBody;
     options.stiff_body_ratio = args->stiff_ratio;
     if (!args->reference_point.empty()) {
-      auto p = parse_numbers(args->reference_point, 3, "--reference-point");
+      auto p = fea::parse_numbers(args->reference_point, 3, "--reference-point");
       if (!p.ok()) return fail(p.status());
       options.reference_point = Vec3((*p)[0], (*p)[1], (*p)[2]) * scale;
     }
@@ -176,12 +116,12 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     meshing.unit_scale = scale;
     meshing.quadratic = !args->linear;
     meshing.size = args->size * scale;
-    if (!(meshing.size > 0.0)) meshing.size = (surface->hi - surface->lo).maxCoeff() * scale / 20.0;
+    if (!(meshing.size > 0.0)) meshing.size = fea::default_mesh_size(*surface, scale);
     std::string cache_key;
     if (!args->cache_dir.empty()) {
-      const std::string identity = read_bytes(args->mesh) + fmt::format("|size {:.17g} unit {:.17g} quadratic {}",
-                                                                        meshing.size, scale, meshing.quadratic);
-      cache_key = fea::link_stiffness_cache_key(identity, *material, options);
+      auto identity = fea::surface_mesh_identity(args->mesh, meshing);
+      if (!identity.ok()) return fail(identity.status());
+      cache_key = fea::link_stiffness_cache_key(*identity, *material, options);
       if (args->vtk_dir.empty()) {
         if (auto cached = fea::load_cached_link_stiffness(args->cache_dir, cache_key)) {
           ctx.out << "(from cache " << args->cache_dir << "/" << cache_key << ".txt)\n"

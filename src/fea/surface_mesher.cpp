@@ -1,6 +1,8 @@
 // All of CGAL Mesh_3 lives in this one translation unit: it compiles slowly.
 #include "fea/surface_mesher.hpp"
 
+#include <filesystem>
+
 #include <limits>
 #include <map>
 #include <unordered_map>
@@ -61,6 +63,9 @@ Status check_edges(const std::string& path, const std::vector<Point>& points,
 }
 
 StatusOr<Surface> read_checked_surface(const std::string& path) {
+  // Checked here because CGAL's reader prints its own complaint about a missing file to stdout.
+  if (std::error_code ec; !std::filesystem::is_regular_file(path, ec))
+    return Status::Invalid(path + ": no such file; check the mesh path");
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
   if (!CGAL::IO::read_polygon_soup(path, points, polygons) || polygons.empty())

@@ -4,12 +4,17 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <numbers>
 
 #include "elements/beam_element.hpp"
 #include "elements/section.hpp"
+#include "fea/link_stiffness.hpp"
+#include "fea/link_stiffness_inputs.hpp"
+#include "fea/result_cache.hpp"
+#include "fea/surface_mesher.hpp"
 #include "io/yaml_fields.hpp"
 #include "vjm/equilibrium.hpp"
 #include "vjm/link_spring.hpp"
@@ -134,9 +139,79 @@ class VjmParser : public YamlFields {
     return number(v, item, key) * (t == vjm::JointType::kPrismatic ? u_.length : kDeg);
   }
 
+  // A path in the file, relative to the model file's folder.
+  std::string path_in_file(const YAML::Node& v, const std::string& item, const std::string& key) const {
+    return (std::filesystem::path(file()).parent_path() / text(v, item, key)).string();
+  }
+
+  // `fea:` the 6x6 of a link from the FEA of its mesh (fea/link_stiffness.hpp, rigid reference coupling),
+  // through the result cache when `cache` names a directory. Convention (docs/vjm.md): the mesh's axes
+  // are the current frame's axes and the reference point is the current frame's origin, i.e. the spring
+  // sits at the link's far end, after the `translate` along the link, exactly like `cantilever`.
+  Mat6 fea_spring(const YAML::Node& f, const std::string& it) const {
+    check_map(f, it, {"mesh", "material", "E", "nu", "clamp", "reference", "reference_point", "unit", "size", "cache"});
+    // The mesh file's length unit (also of the regions, reference point and size): the model's by default.
+    double scale = u_.length;
+    if (const YAML::Node u = f["unit"]; u.IsDefined()) {
+      const std::string s = text(u, it, "unit");
+      if (s != "mm" && s != "m") fail(u, it, fmt::format("unknown unit '{}'; write mm or m (the mesh file's unit)", s));
+      scale = s == "mm" ? 1e-3 : 1.0;
+    }
+    Material mat;
+    if (const YAML::Node m = f["material"]; m.IsDefined()) {
+      if (f["E"].IsDefined() || f["nu"].IsDefined()) fail(m, it, "give either 'material' or 'E' and 'nu', not both");
+      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'");
+      if (!parsed.ok()) fail(m, it, parsed.status().message());
+      mat = *parsed;
+    } else {
+      mat = material(f, it);
+    }
+    auto region = [&](const char* key) {
+      const YAML::Node r = require(f, it, key);
+      StatusOr<fea::Region> parsed = fea::parse_region(text(r, it, key), scale, fmt::format("'{}: {}'", key, r.Scalar()));
+      if (!parsed.ok()) fail(r, it, parsed.status().message());
+      return *parsed;
+    };
+    fea::LinkStiffnessOptions options;
+    options.clamp = region("clamp");
+    options.reference = region("reference");
+    options.keep_fields = false;
+    if (const YAML::Node p = f["reference_point"]; p.IsDefined())
+      options.reference_point = vec3(p, it, "reference_point") * scale;
+
+    const YAML::Node mesh_node = require(f, it, "mesh");
+    const std::string path = path_in_file(mesh_node, it, "mesh");
+    StatusOr<fea::SurfaceInfo> surface = fea::check_surface_file(path);
+    if (!surface.ok()) fail(mesh_node, it, surface.status().message());
+    fea::MeshingOptions meshing;
+    meshing.unit_scale = scale;
+    meshing.size =
+        f["size"].IsDefined() ? positive(f["size"], it, "size") * scale : fea::default_mesh_size(*surface, scale);
+    // Round-off asymmetry only (C = F^T K^-1 F is symmetric by construction); the VJM wants a symmetric spring.
+    auto spring_of = [](const fea::LinkStiffness& r) -> Mat6 { return 0.5 * (r.stiffness + r.stiffness.transpose()); };
+
+    std::string cache_dir, key;
+    if (const YAML::Node c = f["cache"]; c.IsDefined()) {
+      cache_dir = path_in_file(c, it, "cache");
+      StatusOr<std::string> identity = fea::surface_mesh_identity(path, meshing);
+      if (!identity.ok()) fail(mesh_node, it, identity.status().message());
+      key = fea::link_stiffness_cache_key(*identity, mat, options);
+      if (auto cached = fea::load_cached_link_stiffness(cache_dir, key)) return spring_of(*cached);
+    }
+    StatusOr<fea::TetMesh> mesh = fea::mesh_surface_file(path, meshing);
+    if (!mesh.ok()) fail(mesh_node, it, mesh.status().message());
+    StatusOr<fea::LinkStiffness> result = fea::link_stiffness(*mesh, mat, options);
+    if (!result.ok()) fail(f, it, path + ": " + result.status().message() + "; check 'clamp' and 'reference' (mesh units)");
+    if (!key.empty())
+      if (const Status s = fea::store_cached_link_stiffness(cache_dir, key, *result); !s.ok())
+        fail(f["cache"], it, s.message());
+    return spring_of(*result);
+  }
+
   Mat6 spring(const YAML::Node& n, const std::string& item) const {
-    check_map(n, item, {"matrix", "cantilever", "parallelogram"});
-    if (n.size() != 1) fail(n, item, "give exactly one of matrix, cantilever, parallelogram");
+    check_map(n, item, {"matrix", "cantilever", "parallelogram", "fea"});
+    if (n.size() != 1) fail(n, item, "give exactly one of matrix, cantilever, parallelogram, fea");
+    if (const YAML::Node f = n["fea"]; f.IsDefined()) return fea_spring(f, item + " fea");
     if (const YAML::Node k = n["matrix"]; k.IsDefined()) {
       if (!k.IsSequence() || k.size() != 6) fail(k, item, "'matrix' must be 6 rows of 6 numbers");
       // File units: N/mm, N/rad (= N mm/mm), N mm/rad for mm-N-s; K_SI = force D K D, D = diag(l^-1/2 I, l^1/2 I).

@@ -3,6 +3,8 @@
 // - `mechanism: orthoglide` with the Orthoglide's design inputs: the chains are built by
 //   mechanisms::orthoglide_chains at any Cartesian point (inverse kinematics);
 // - `chains:` written element by element at one posture (the file gives every joint value).
+// A spring may be `fea:` (a link mesh): reading the file then meshes the link and runs its FEA,
+// unless the result is in the spring's `cache` folder.
 #pragma once
 
 #include <optional>
