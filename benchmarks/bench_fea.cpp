@@ -1,8 +1,14 @@
 // FEA link stiffness: CGAL meshing, parallel assembly, CHOLMOD factorization and the six solves
 // at ~30k / 90k / 290k dofs (structured quadratic-tet bars, n = 4, 6, 9 cells across the 20 mm
-// side). The label shows the backend (with its BLAS) and the ordering CHOLMOD chose.
+// side). The label shows the backend (with its BLAS) and the ordering CHOLMOD chose. BM_DenseGemm
+// measures the dense dgemm rate of the same BLAS (the one CHOLMOD loaded), the ceiling of the
+// supernodal factorization's flop rate. peak_rss_MB is the process's peak so far (ru_maxrss): run one
+// size per process (--benchmark_filter='FactorizeAndSolve/9$') to get that size's peak.
 #include <benchmark/benchmark.h>
+#include <dlfcn.h>
+#include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -18,6 +24,39 @@ namespace {
 using namespace kinestat;
 
 const Material kSteel = Material::from_E_nu("steel", 210e9, 0.3);
+
+double peak_rss_megabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux: kilobytes
+}
+
+// Fortran BLAS dgemm, found at run time: the program links BLAS only through CHOLMOD.
+using Dgemm = void(const char* transa, const char* transb, const int* m, const int* n, const int* k,
+                   const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,
+                   const double* beta, double* c, const int* ldc, std::size_t transa_len, std::size_t transb_len);
+
+// C = A B with n x n matrices; GFlop_per_s from the best of the iterations (2 n^3 flops each, wall time:
+// the BLAS runs on all cores).
+void BM_DenseGemm(benchmark::State& state) {
+  auto* dgemm = reinterpret_cast<Dgemm*>(dlsym(RTLD_DEFAULT, "dgemm_"));
+  if (dgemm == nullptr) {
+    state.SkipWithError("dgemm_ is not loaded in this process");
+    return;
+  }
+  const int n = static_cast<int>(state.range(0));
+  const MatX A = MatX::Random(n, n), B = MatX::Random(n, n);
+  MatX C(n, n);
+  const double one = 1.0, zero = 0.0;
+  double best = 1e300;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    dgemm("N", "N", &n, &n, &n, &one, A.data(), &n, B.data(), &n, &zero, C.data(), &n, 1, 1);
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  state.counters["GFlop_per_s"] = 2.0 * n * n * static_cast<double>(n) / best * 1e-9;
+}
+BENCHMARK(BM_DenseGemm)->Arg(3000)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 fea::TetMesh bar(int n) {
   return fea::to_quadratic(fea::make_box_mesh(Vec3(0, -0.01, -0.015), Vec3(0.2, 0.01, 0.015), 10 * n, n, (3 * n + 1) / 2));
@@ -76,6 +115,8 @@ void BM_FactorizeAndSolve(benchmark::State& state) {
   state.counters["analyze_s"] = report.analyze_seconds;
   state.counters["factor_s"] = report.factor_seconds;
   state.counters["six_solves_s"] = solve_seconds;
+  state.counters["factor_GFlop_per_s"] = report.flops * 1e-9 / report.factor_seconds;
+  state.counters["peak_rss_MB"] = peak_rss_megabytes();
   state.SetLabel(fmt::format("{}; ordering {}", backend, report.ordering));
 }
 BENCHMARK(BM_FactorizeAndSolve)->Arg(4)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -26,7 +26,9 @@ Section doubled(Section s) {
   return s;
 }
 
-Status validate(const OrthoglideStiffnessModel& m) {
+}  // namespace
+
+Status validate_stiffness_model(const OrthoglideStiffnessModel& m) {
   auto positive = [](double v) { return std::isfinite(v) && v > 0; };
   if (!positive(m.link_length) || !positive(m.parallelogram_width) || !positive(m.actuator_stiffness) ||
       !positive(m.foot_length))
@@ -42,10 +44,8 @@ Status validate(const OrthoglideStiffnessModel& m) {
   return Status::Ok();
 }
 
-}  // namespace
-
 StatusOr<Mat6> parallelogram_spring(const OrthoglideStiffnessModel& m, double q) {
-  if (Status s = validate(m); !s.ok()) return s;
+  if (Status s = validate_stiffness_model(m); !s.ok()) return s;
   const double L = m.link_length, w = m.parallelogram_width;
   const Mat6 bar = vjm::cantilever_spring(m.bar_material, m.bar_section, L, BeamTheory::kEulerBernoulli);
   // The two bars, pinned about y at both plates, from the proximal plate to the distal plate centre.
@@ -77,7 +77,7 @@ StatusOr<Mat6> parallelogram_spring(const OrthoglideStiffnessModel& m, double q)
 
 StatusOr<std::vector<Chain>> orthoglide_chains(const OrthoglideStiffnessModel& m, OrthoglideArchitecture a,
                                                const Vec3& p) {
-  if (Status s = validate(m); !s.ok()) return s;
+  if (Status s = validate_stiffness_model(m); !s.ok()) return s;
   const double L = m.link_length;
   StatusOr<Vec3> rho = inverse_kinematics(OrthoglideGeometry{L}, p);
   if (!rho.ok()) return rho.status();

@@ -47,6 +47,9 @@ struct OrthoglideStiffnessModel {
 // Kinematics-frame point of the tables' "x, y, z = c" (mm): p = -c/1000 (1, 1, 1) m.
 Vec3 paper_table_point(double coordinate_mm);
 
+// Positive, finite lengths, actuator stiffness, section properties and moduli; kInvalidInput otherwise.
+Status validate_stiffness_model(const OrthoglideStiffnessModel& m);
+
 // 6x6 stiffness of the parallelogram's distal plate relative to its proximal plate, in the
 // proximal frame at the distal plate centre, at bar angle q (rad), from the VJM of its two pinned
 // bars. The closed loop leaves the parallelogram's own motion free; the spring of eq. (22) adds a
