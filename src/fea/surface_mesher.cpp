@@ -1,6 +1,7 @@
 // All of CGAL Mesh_3 lives in this one translation unit: it compiles slowly.
 #include "fea/surface_mesher.hpp"
 
+#include <cmath>
 #include <filesystem>
 
 #include <limits>
@@ -138,7 +139,15 @@ StatusOr<TetMesh> mesh_surface_file(const std::string& path, const MeshingOption
     }
     mesh.connectivity.insert(mesh.connectivity.end(), v, v + 4);
     const int e = mesh.num_elements() - 1;
-    if (element_volume(mesh, e) < 0.0) std::swap(mesh.connectivity[4 * e + 2], mesh.connectivity[4 * e + 3]);
+    const double volume = element_volume(mesh, e);
+    // Mesh_3 with inexact constructions can leave a flat sliver (four coplanar points in double
+    // precision) that exudation does not remove. It has no volume, hence no stiffness, and its
+    // nodes and edges belong to its neighbours too: drop it rather than refuse the mesh.
+    if (std::abs(volume) <= 1e-12 * o.size * o.size * o.size) {
+      mesh.connectivity.resize(mesh.connectivity.size() - 4);
+      continue;
+    }
+    if (volume < 0.0) std::swap(mesh.connectivity[4 * e + 2], mesh.connectivity[4 * e + 3]);
   }
   if (mesh.num_elements() == 0)
     return Status::Invalid(fmt::format("{}: meshing produced no tetrahedra; is the size {:g} m larger than the part?",
