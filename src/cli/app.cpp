@@ -16,7 +16,8 @@ int exit_code_for(const Status& status) {
 }
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). SI units unless a file says otherwise."};
+  CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). SI units unless a file says otherwise.",
+               "kinestat"};
   app.require_subcommand(1);
   Context ctx{out, err};
   // Every subcommand is listed here once.
