@@ -10,21 +10,28 @@
 // The beam chains are vjm::serial_link_spring chains of Timoshenko cantilevers; their sections are
 // read from the link dimensions in docs/fea.md (table "Geometry"), chosen as documented next to
 // each link below. Steel (E = 210 GPa, nu = 0.3) throughout: the ratios barely depend on it.
+// Then the Orthoglide's Cartesian 6x6 at Q0 (mechanisms::orthoglide_stiffness, both architectures)
+// with the FEA foot and bar springs (and, to separate geometry from modelling, the beam chains of the
+// same meshes) in place of the model's default beam springs: ratios of diagonal terms and eigenvalues.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
+#include "core/frame.hpp"
 #include "elements/section.hpp"
 #include "fea/link_stiffness.hpp"
 #include "fea/region.hpp"
 #include "fea/surface_mesher.hpp"
+#include "mechanisms/orthoglide_stiffness.hpp"
 #include "vjm/link_spring.hpp"
 
 namespace {
@@ -43,7 +50,8 @@ struct Segment {
 
 // The spring of the reference point relative to the clamp, link axes, about the reference point:
 // a serial chain (rigid offsets where the segments do not meet, e.g. inside a rigidly coupled region).
-StatusOr<Mat6> beam_link_spring(const std::vector<Segment>& segments, const Vec3& reference_point) {
+StatusOr<Mat6> beam_link_spring(const std::vector<Segment>& segments, const Vec3& reference_point,
+                                const Material& material = kSteel) {
   vjm::Chain chain("beam model");
   Vec3 at = segments.front().from;
   for (const Segment& s : segments) {
@@ -54,7 +62,7 @@ StatusOr<Mat6> beam_link_spring(const std::vector<Segment>& segments, const Vec3
     chain.add_transform(axes, "beam axes");
     const double length = (s.to - s.from).norm();
     chain.add_translation(length * Vec3::UnitX(), "beam");
-    chain.add_spring(vjm::cantilever_spring(kSteel, s.section, length, BeamTheory::kTimoshenko), "beam");
+    chain.add_spring(vjm::cantilever_spring(material, s.section, length, BeamTheory::kTimoshenko), "beam");
     chain.add_transform(axes.inverse(), "link axes");
     at = s.to;
   }
@@ -123,7 +131,7 @@ std::vector<LinkCase> link_cases() {
   return cases;
 }
 
-StatusOr<fea::LinkStiffness> fea_link(const LinkCase& c, double size) {
+StatusOr<fea::LinkStiffness> fea_link(const LinkCase& c, double size, const Material& material = kSteel) {
   fea::MeshingOptions mo;
   mo.size = size;
   StatusOr<fea::TetMesh> mesh = fea::mesh_surface_file(std::string(KINESTAT_SOURCE_DIR) + "/meshes/" + c.file, mo);
@@ -133,7 +141,7 @@ StatusOr<fea::LinkStiffness> fea_link(const LinkCase& c, double size) {
   o.reference = c.reference;
   o.reference_point = c.reference_point;
   o.keep_fields = false;
-  StatusOr<fea::LinkStiffness> r = fea::link_stiffness(*mesh, kSteel, o);
+  StatusOr<fea::LinkStiffness> r = fea::link_stiffness(*mesh, material, o);
   if (!r.ok()) return Status::Invalid(fmt::format("FEA at size {} mm: {}", size * 1e3, r.status().message()));
   return r;
 }
@@ -175,6 +183,100 @@ bool compare_link(const LinkCase& c) {
   return true;
 }
 
+// The Orthoglide's link springs from meshes/, rotated from the mesh axes into the frames
+// OrthoglideStiffnessModel documents for its overrides. Both 6x6 are about the distal bore axis,
+// the point where the chain's spring acts, so only the axes turn:
+// K_chain = T K_mesh T^T, T = rotation6(R), R's columns = the mesh axes in chain axes.
+//   foot: mesh x (clamp to bore) = chain x (along the slider axis, towards the workspace); the bore
+//     (mesh y) holds the first joint, whose axis is chain z: R = R_x(+90 deg) (mesh z = chain -y).
+//   bar: mesh x (bore to bore) = chain x; the pin axis (mesh z) = chain y: R = R_x(-90 deg).
+struct OrthoglideLinks {
+  Mat6 foot, bar;
+};
+
+Mat6 to_chain_axes(const Mat6& K_mesh, double angle_about_x) {
+  const Mat6 T = rotation6(Eigen::AngleAxisd(angle_about_x, Vec3::UnitX()).toRotationMatrix());
+  return T * K_mesh * T.transpose();
+}
+
+enum class LinkSource { kFea, kOneBeam, kFourBeams };
+
+// Foot and bar springs of the meshes' geometry with the model's materials: FEA at the fine size or
+// the beam chains of link_cases().
+StatusOr<OrthoglideLinks> mesh_links(const mechanisms::OrthoglideStiffnessModel& m, LinkSource source) {
+  const std::vector<LinkCase> cases = link_cases();
+  const LinkCase &foot = cases[2], &bar = cases[3];
+  StatusOr<Mat6> Kf = Status::Ok(), Kb = Status::Ok();
+  if (source == LinkSource::kFea) {
+    StatusOr<fea::LinkStiffness> f = fea_link(foot, foot.fine_size, m.foot_material);
+    StatusOr<fea::LinkStiffness> b = fea_link(bar, bar.fine_size, m.bar_material);
+    if (!f.ok()) return f.status();
+    if (!b.ok()) return b.status();
+    Kf = f->stiffness;
+    Kb = b->stiffness;
+  } else {
+    const bool one = source == LinkSource::kOneBeam;
+    Kf = beam_link_spring(one ? foot.one_beam : foot.four_beams, foot.reference_point, m.foot_material);
+    Kb = beam_link_spring(one ? bar.one_beam : bar.four_beams, bar.reference_point, m.bar_material);
+  }
+  if (!Kf.ok()) return Kf.status();
+  if (!Kb.ok()) return Kb.status();
+  return OrthoglideLinks{to_chain_axes(*Kf, EIGEN_PI / 2), to_chain_axes(*Kb, -EIGEN_PI / 2)};
+}
+
+// Prints K_variant / K_default - 1 of the Orthoglide's unloaded 6x6 at Q0; false when a model failed.
+bool compare_orthoglide() {
+  using mechanisms::OrthoglideArchitecture;
+  const mechanisms::OrthoglideStiffnessModel model;
+  const Section &fs = model.foot_section, &bs = model.bar_section;
+  std::printf("\n== Orthoglide, unloaded Cartesian stiffness at Q0 (p = 0), (K / K_default - 1): link springs from\n"
+              "   meshes/ with the model's materials (foot %s, bar %s) against the model's default beam springs\n"
+              "   (foot: A %.0f mm2, Iy = Iz %.3g mm4, %.1f mm along the slider axis;\n"
+              "   bar: A %.0f mm2, Iy = Iz %.3g mm4, L = %.1f mm; the 3-PUU leg = 2 bars)\n",
+              model.foot_material.id.c_str(), model.bar_material.id.c_str(), fs.A * 1e6, fs.Iy * 1e12,
+              model.foot_length * 1e3, bs.A * 1e6, bs.Iy * 1e12, model.link_length * 1e3);
+  std::printf("   GEOMETRY DIFFERS: foot.off is an L bracket (base 50 x 15 mm, bore 102.5 mm along and 22.5 mm\n"
+              "   off the clamped face's centre; the chain puts the joint on the slider axis, no offset),\n"
+              "   parallelogram_bar.off a 20 x 10 mm rectangle with bosses (same length). 'FEA' mixes geometry and\n"
+              "   modelling error; 'mesh n b.' (the meshes' n-beam chains) is the geometry change alone.\n");
+  std::vector<mechanisms::OrthoglideStiffnessModel> models(4, model);  // default, FEA, 1 beam, 4 beams
+  const std::array sources{LinkSource::kFea, LinkSource::kOneBeam, LinkSource::kFourBeams};
+  for (int v = 0; v < 3; ++v) {
+    StatusOr<OrthoglideLinks> links = mesh_links(model, sources[v]);
+    if (!links.ok()) {
+      std::printf("   %s\n", links.status().message().c_str());
+      return false;
+    }
+    models[v + 1].foot_spring = links->foot;
+    models[v + 1].bar_spring = links->bar;
+  }
+  for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR}) {
+    std::vector<Mat6> K;
+    for (const mechanisms::OrthoglideStiffnessModel& m : models) {
+      StatusOr<mechanisms::OrthoglideStiffness> s = mechanisms::orthoglide_stiffness(m, a, Vec3::Zero(), Vec6::Zero());
+      const Status& st = s.ok() ? s->unloaded.status : s.status();
+      if (!st.ok()) {
+        std::printf("   %s\n", st.message().c_str());
+        return false;
+      }
+      K.push_back(s->unloaded.stiffness);
+    }
+    std::printf("   %-8s %-8s %14s %10s %10s %10s\n", a == OrthoglideArchitecture::kPUU ? "3-PUU" : "3-PRPaR", "entry",
+                "K_default [SI]", "FEA", "mesh 1 b.", "mesh 4 b.");
+    const std::array e{eigenvalues(K[0]), eigenvalues(K[1]), eigenvalues(K[2]), eigenvalues(K[3])};
+    for (int i = 0; i < 12; ++i) {
+      // Rows 0-5: diagonal terms; 6-11: sorted eigenvalues.
+      auto value = [&](int v) { return i < 6 ? K[v](i, i) : e[v](i - 6); };
+      const std::string name =
+          i < 6 ? fmt::format("{}-{}", kDofNames[i], kDofNames[i]) : fmt::format("eig {}", i - 5);
+      std::printf("   %-8s %-8s %14.4e %10s %10s %10s\n", "", name.c_str(), value(0),
+                  percent(value(1), value(0)).c_str(), percent(value(2), value(0)).c_str(),
+                  percent(value(3), value(0)).c_str());
+    }
+  }
+  return true;
+}
+
 // Cost of the lumped model, for comparison with the FEA run (bench_fea).
 void BM_FourBeamLinkSpring(benchmark::State& state) {
   const LinkCase c = link_cases()[3];
@@ -202,6 +304,7 @@ int main(int argc, char** argv) {
               "(K_beam / K_FEA - 1) per entry, K in N/m, N/rad, N m/rad\n");
   bool ok = true;
   for (const LinkCase& c : link_cases()) ok &= compare_link(c);
+  ok &= compare_orthoglide();
   std::printf("\n");
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();

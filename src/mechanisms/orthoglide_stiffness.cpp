@@ -16,14 +16,11 @@ Vec3 paper_table_point(double coordinate_mm) { return Vec3::Constant(-coordinate
 
 namespace {
 
-Section doubled(Section s) {
-  s.A *= 2;
-  s.Iy *= 2;
-  s.Iz *= 2;
-  s.J *= 2;
-  s.Asy *= 2;
-  s.Asz *= 2;
-  return s;
+// One parallelogram bar: the override or an Euler-Bernoulli cantilever. The 3-PUU leg is twice it
+// (a cantilever's stiffness is linear in A, I, J and As: the same as doubling the section).
+Mat6 bar_spring(const OrthoglideStiffnessModel& m) {
+  if (m.bar_spring) return *m.bar_spring;
+  return vjm::cantilever_spring(m.bar_material, m.bar_section, m.link_length, BeamTheory::kEulerBernoulli);
 }
 
 }  // namespace
@@ -47,7 +44,7 @@ Status validate_stiffness_model(const OrthoglideStiffnessModel& m) {
 StatusOr<Mat6> parallelogram_spring(const OrthoglideStiffnessModel& m, double q) {
   if (Status s = validate_stiffness_model(m); !s.ok()) return s;
   const double L = m.link_length, w = m.parallelogram_width;
-  const Mat6 bar = vjm::cantilever_spring(m.bar_material, m.bar_section, L, BeamTheory::kEulerBernoulli);
+  const Mat6 bar = bar_spring(m);
   // The two bars, pinned about y at both plates, from the proximal plate to the distal plate centre.
   std::vector<Chain> bars;
   for (double side : {0.5, -0.5}) {
@@ -81,8 +78,10 @@ StatusOr<std::vector<Chain>> orthoglide_chains(const OrthoglideStiffnessModel& m
   const double L = m.link_length;
   StatusOr<Vec3> rho = inverse_kinematics(OrthoglideGeometry{L}, p);
   if (!rho.ok()) return rho.status();
-  const Mat6 foot = vjm::cantilever_spring(m.foot_material, m.foot_section, m.foot_length, BeamTheory::kTimoshenko);
-  const Mat6 leg = vjm::cantilever_spring(m.bar_material, doubled(m.bar_section), L, BeamTheory::kEulerBernoulli);
+  const Mat6 foot = m.foot_spring ? *m.foot_spring
+                                  : vjm::cantilever_spring(m.foot_material, m.foot_section, m.foot_length,
+                                                           BeamTheory::kTimoshenko);
+  const Mat6 leg = 2.0 * bar_spring(m);
   std::vector<Chain> chains;
   for (int i = 0; i < 3; ++i) {
     const char* axis = i == 0 ? "x" : i == 1 ? "y" : "z";

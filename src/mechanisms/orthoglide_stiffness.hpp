@@ -20,6 +20,8 @@
 // converts; the tables' loaded displacement (0.5, 0.5, 0.5) mm converts the same way.
 #pragma once
 
+#include <optional>
+
 #include "core/status.hpp"
 #include "core/types.hpp"
 #include "elements/material.hpp"
@@ -42,6 +44,16 @@ struct OrthoglideStiffnessModel {
   Material foot_material = Material::from_E_nu("steel", 210e9, 0.3);
   Section foot_section = hollow_rectangle_section(0.06, 0.06, 0.005);
   double foot_length = 0.1;  // m, foot modelled as a cantilever along the slider axis
+  // Optional 6x6 link springs (e.g. from FEA, fea::link_stiffness) replacing the beam-built ones;
+  // empty: built from the sections above. Frames are those of the chain where the spring enters:
+  //  foot_spring: the foot's end relative to the slider, axes x = -e_i (along the slider axis,
+  //    towards the workspace), y = -e_(i+1), z = e_(i+2) (the first U / R joint axis), about the
+  //    joint's centre, i.e. the frame of cantilever_spring(foot_section, foot_length);
+  //  bar_spring: the distal end of one parallelogram bar relative to its proximal end, axes x along
+  //    the bar (proximal to distal pin), y = the pin axis, about the distal pin, i.e. the frame of
+  //    cantilever_spring(bar_section, link_length). The 3-PUU leg spring is twice it.
+  // Checked like every chain spring (finite, symmetric, positive definite) when the chains are used.
+  std::optional<Mat6> foot_spring, bar_spring;
 };
 
 // Kinematics-frame point of the tables' "x, y, z = c" (mm): p = -c/1000 (1, 1, 1) m.

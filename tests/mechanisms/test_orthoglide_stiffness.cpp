@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <utility>
 
 #include "mechanisms/orthoglide_kinematics.hpp"
 #include "mechanisms/orthoglide_stiffness.hpp"
@@ -188,6 +189,33 @@ TEST(OrthoglideStiffness, ParallelogramSpringReproducesTheTwoBarLoop) {
   const double w = m.parallelogram_width;
   EXPECT_NEAR(two_bar_loop(m, 0.0)(4, 4), m.bar_material.E * m.bar_section.A / m.link_length * w * w / 2,
               1e-9 * two_bar_loop(m, 0.0)(4, 4));
+}
+
+TEST(OrthoglideStiffness, BeamBuiltSpringsAsOverridesReproduceTheDefault) {
+  // The overrides enter in the frame documented in the header: passing the beam-built springs of
+  // that frame explicitly must give the default result (unloaded and loaded), up to round-off.
+  OrthoglideStiffnessModel beams;
+  beams.foot_spring = vjm::cantilever_spring(beams.foot_material, beams.foot_section, beams.foot_length,
+                                             BeamTheory::kTimoshenko);
+  beams.bar_spring =
+      vjm::cantilever_spring(beams.bar_material, beams.bar_section, beams.link_length, BeamTheory::kEulerBernoulli);
+  for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR})
+    for (double c : {kQ0, kQ1}) {
+      const OrthoglideStiffness d = at(a, c);
+      StatusOr<OrthoglideStiffness> o = orthoglide_stiffness(beams, a, paper_table_point(c), kPaperLoad);
+      ASSERT_TRUE(o.ok()) << o.status().message();
+      for (auto [x, y] : {std::pair{&d.unloaded, &o->unloaded}, std::pair{&d.loaded, &o->loaded}})
+        EXPECT_LT((x->stiffness - y->stiffness).cwiseAbs().maxCoeff(), 1e-12 * x->stiffness.cwiseAbs().maxCoeff())
+            << c;
+    }
+  // And the override is what is used: a foot twice as stiff makes the platform stiffer along x (each
+  // foot is in series with its leg), so a silently ignored override fails here.
+  OrthoglideStiffnessModel stiff_foot = beams;
+  stiff_foot.foot_spring = 2.0 * *beams.foot_spring;
+  StatusOr<OrthoglideStiffness> s =
+      orthoglide_stiffness(stiff_foot, OrthoglideArchitecture::kPUU, Vec3::Zero(), Vec6::Zero());
+  ASSERT_TRUE(s.ok()) << s.status().message();
+  EXPECT_GT(s->unloaded.stiffness(0, 0), 1.001 * at(OrthoglideArchitecture::kPUU, kQ0).unloaded.stiffness(0, 0));
 }
 
 }  // namespace
