@@ -1,5 +1,6 @@
 // kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE]
 // The 6x6 stiffness of one link by FEA (fea/link_stiffness.hpp; docs/fea.md).
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "cli/app.hpp"
 #include "fea/link_stiffness.hpp"
 #include "fea/link_stiffness_inputs.hpp"
+#include "fea/mesh_convergence.hpp"
 #include "fea/result_cache.hpp"
 #include "fea/surface_mesher.hpp"
 #include "io/fea_vtk.hpp"
@@ -56,6 +58,7 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     std::string reference_point;
     double size = 0.0, stiff_ratio = 1e4;
     bool linear = false;
+    bool convergence = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
@@ -71,6 +74,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->capture_default_str();
   cmd->add_option("--size", args->size, "tetrahedron size in mesh units (default: 1/20 of the part's largest extent)");
   cmd->add_flag("--linear", args->linear, "4-node tetrahedra (default 10-node; linear ones lock in bending)");
+  cmd->add_flag("--convergence", args->convergence,
+                "also solve meshes of size 2h and 1.41h and print a Richardson estimate of each compliance term: "
+                "how many digits of the 6x6 to trust");
   cmd->add_option("--model", args->model, "reference body: rigid (exact coupling) or stiff-body (the paper's)")
       ->check(CLI::IsMember({"rigid", "stiff-body"}))
       ->capture_default_str();
@@ -146,6 +152,21 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       const std::string stem = std::filesystem::path(args->mesh).stem().string();
       if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *mesh, *result, &written); !s.ok()) return fail(s);
       for (const auto& w : written) ctx.out << "wrote " << w << "\n";
+    }
+    if (args->convergence) {
+      // The finest mesh is the one just solved; two coarser ones give the three points Richardson needs.
+      auto make = [&](double h) {
+        fea::MeshingOptions m = meshing;
+        m.size = h;
+        return fea::mesh_surface_file(args->mesh, m);
+      };
+      fea::LinkStiffnessOptions study_options = options;
+      study_options.keep_fields = false;
+      study_options.progress = nullptr;
+      const double h = meshing.size;
+      auto study = fea::mesh_convergence_study(make, {2.0 * h, std::sqrt(2.0) * h, h}, *material, study_options);
+      if (!study.ok()) return fail(study.status());
+      ctx.out << "\n" << fea::convergence_report(*study);
     }
     write_json(*result, false);
   });

@@ -78,6 +78,13 @@ std::string convergence_report(const ConvergenceStudy& s) {
       os << (s.diagonal[k].ok() ? fmt::format(" {:12.5g}", value(*s.diagonal[k])) : fmt::format(" {:>12}", "n/a"));
     os << "\n";
   };
+  // Always available, also where the meshes (CGAL's are not nested) are not yet in the asymptotic
+  // range and Richardson says n/a: the relative change between the two finest meshes.
+  const size_t n = s.sizes.size();
+  os << fmt::format("  {:>20}", "change, last 2 meshes");
+  for (int k = 0; k < 6; ++k)
+    os << fmt::format(" {:12.3e}", (s.compliance[n - 1](k, k) - s.compliance[n - 2](k, k)) / s.compliance[n - 1](k, k));
+  os << "\n";
   row("extrapolated", [](const RichardsonEstimate& r) { return r.extrapolated; });
   row("observed order", [](const RichardsonEstimate& r) { return r.order; });
   row("finest rel. error", [](const RichardsonEstimate& r) { return r.finest_error; });

@@ -65,5 +65,27 @@ TEST(LinkStiffnessCommand, BadInputExitsWith2AndSaysWhatToFix) {
   EXPECT_NE(r.err.find("not closed"), std::string::npos) << r.err;
 }
 
+TEST(LinkStiffnessCommand, ConvergenceStudyOfTheBar) {
+  const CliRun r = run_link_stiffness({kBar, "--material", "steel", "--clamp", "x=0", "--reference", "x=200", "--size",
+                                       "10", "--convergence"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const auto at = r.out.find("Mesh convergence of the compliance diagonal");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  // Three meshes (20, 14.1, 10 mm); the finest row's axial compliance is L/EA of the 20 x 30 mm
+  // steel bar within 2 % (the solid's clamped ends make it slightly stiffer).
+  std::istringstream rows(r.out.substr(at));
+  std::string line;
+  std::getline(rows, line);  // title
+  std::getline(rows, line);  // column names
+  double size = 0, dofs = 0, ux = 0;
+  for (int i = 0; i < 3; ++i) {
+    std::getline(rows, line);
+    std::istringstream(line) >> size >> dofs >> ux;
+  }
+  EXPECT_NEAR(size, 0.01, 1e-9);
+  EXPECT_NEAR(ux / (0.2 / (210e9 * 0.02 * 0.03)), 1.0, 0.02);
+  EXPECT_NE(r.out.find("change, last 2 meshes"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace kinestat::cli
