@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "bar_mesh.hpp"
 #include "fea/elasticity_assembly.hpp"
 #include "fea/region.hpp"
 #include "fea/surface_mesher.hpp"
@@ -58,15 +59,6 @@ void BM_DenseGemm(benchmark::State& state) {
 }
 BENCHMARK(BM_DenseGemm)->Arg(3000)->Unit(benchmark::kMillisecond)->Iterations(3);
 
-fea::TetMesh bar(int n) {
-  return fea::to_quadratic(fea::make_box_mesh(Vec3(0, -0.01, -0.015), Vec3(0.2, 0.01, 0.015), 10 * n, n, (3 * n + 1) / 2));
-}
-
-fea::DofMap clamped_bar_map(const fea::TetMesh& mesh) {
-  return fea::make_dof_map(mesh, fea::select_nodes(mesh, fea::Region::plane(Vec3::Zero(), Vec3::UnitX())),
-                           fea::select_nodes(mesh, fea::Region::plane(Vec3(0.2, 0, 0), Vec3::UnitX())), Vec3(0.2, 0, 0));
-}
-
 void BM_Meshing(benchmark::State& state) {
   fea::MeshingOptions o;
   o.size = state.range(0) * 1e-3;
@@ -82,8 +74,8 @@ void BM_Meshing(benchmark::State& state) {
 BENCHMARK(BM_Meshing)->Arg(6)->Arg(3)->Unit(benchmark::kMillisecond);
 
 void BM_Assembly(benchmark::State& state) {
-  const fea::TetMesh mesh = bar(static_cast<int>(state.range(0)));
-  const fea::DofMap map = clamped_bar_map(mesh);
+  const fea::TetMesh mesh = bench::bar(static_cast<int>(state.range(0)));
+  const fea::DofMap map = bench::clamped_bar_map(mesh);
   const std::vector<Mat6> D = {fea::elasticity_matrix(kSteel)};
   for (auto _ : state) benchmark::DoNotOptimize(fea::assemble_stiffness(mesh, D, {}, map));
   state.counters["dofs"] = map.num_dofs;
@@ -93,8 +85,8 @@ BENCHMARK(BM_Assembly)->Arg(4)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond);
 
 // Factorization (symbolic + numeric) and the six solves, separately timed.
 void BM_FactorizeAndSolve(benchmark::State& state) {
-  const fea::TetMesh mesh = bar(static_cast<int>(state.range(0)));
-  const fea::DofMap map = clamped_bar_map(mesh);
+  const fea::TetMesh mesh = bench::bar(static_cast<int>(state.range(0)));
+  const fea::DofMap map = bench::clamped_bar_map(mesh);
   auto K = fea::assemble_stiffness(mesh, {fea::elasticity_matrix(kSteel)}, {}, map);
   MatX F = MatX::Zero(map.num_dofs, 6), X;
   F.middleRows<6>(map.reference_dof).setIdentity();
