@@ -58,7 +58,7 @@ std::string full_report(const Structure& s, const Solution& sol) {
                        f.reused_symbolic ? "reused" : "new", f.analyze_seconds, f.factor_seconds);
     if (f.min_pivot_column >= 0)
       out += fmt::format("  conditioning: smallest pivot ratio d_j/K_jj = {:.2e}, softest mode u'Ku/u'Du = {:.2e} "
-                         "(a free motion below 1e-13)\n", f.min_pivot_ratio, sol.softest_mode_ratio);
+                         "(a free motion below {:.0e})\n", f.min_pivot_ratio, sol.softest_mode_ratio, sol.mechanism_ratio);
   }
   if (!sol.status.ok()) {
     out += fmt::format("\nSTATUS: {}\n", sol.status.code() == StatusCode::kSingular ? "SINGULAR" : "FAILED");

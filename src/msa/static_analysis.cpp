@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include "core/frame.hpp"
-#include "elements/joint_element.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
 #include "msa/singularity.hpp"
@@ -157,6 +156,7 @@ Solution solve(const Structure& s, const SolveOptions& options) {
 Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   Solution sol;
   sol.backend = ws.cholesky().backend_description();
+  sol.mechanism_ratio = opt.mechanism_ratio;
   sol.num_dofs = s.num_dofs();
   const auto t0 = Clock::now();
   auto sys = build_system(s);

@@ -72,7 +72,8 @@ struct Solution {
   int num_dofs = 0;                // 6 per node
   int num_free_dofs = 0;           // after supports and constraints
   solver::FactorizationReport factorization;
-  double softest_mode_ratio = 0.0;  // lowest u'Ku/u'Du found by inverse iteration (0 if singular)
+  double softest_mode_ratio = 0.0;  // lowest u'Ku/u'Du found by inverse iteration
+  double mechanism_ratio = 0.0;     // the threshold it was judged by (SolveOptions::mechanism_ratio)
   std::string backend;
   SingularityDiagnosis singularity;
   std::vector<LoadCaseResult> cases;
@@ -106,11 +107,9 @@ StatusOr<CartesianStiffness> cartesian_stiffness(const Structure& s, Workspace& 
 // max displacement and equilibrium, Cartesian stiffness with units, indices, singularity diagnosis.
 std::string full_report(const Structure& s, const Solution& sol);
 
-}  // namespace kinestat::msa
-
-namespace kinestat::msa {
 // The stiffness indices as printed lines (used in reports of every method).
 std::string indices_report(const StiffnessIndices& ix);
 // A 6x6 matrix (dofs x y z rx ry rz) under a title line "  TITLE [UNITS]", one labelled row per dof.
 std::string matrix6_report(const Mat6& M, const std::string& title, const char* units);
+
 }  // namespace kinestat::msa

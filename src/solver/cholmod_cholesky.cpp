@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <string>
 
