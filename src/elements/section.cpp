@@ -27,6 +27,18 @@ Section tube_section(double D, double t) {
   return s;
 }
 
+Section scaled_section(const Section& s, double factor) {
+  const double f2 = factor * factor, f4 = f2 * f2;
+  Section out = s;
+  out.A *= f2;
+  out.Asy *= f2;
+  out.Asz *= f2;
+  out.Iy *= f4;
+  out.Iz *= f4;
+  out.J *= f4;
+  return out;
+}
+
 double rectangle_torsion_constant(double b, double h) {
   const double a = std::max(b, h), c = std::min(b, h);  // long side a, short side c
   // J = a c^3 / 3 * (1 - 192/pi^5 * c/a * sum_{n odd} tanh(n pi a / 2c) / n^5)

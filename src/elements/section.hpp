@@ -26,6 +26,10 @@ Section rectangle_section(double b, double h);
 // Hollow rectangle, outer b x h, wall t (constant). J from Bredt's thin-wall formula.
 Section hollow_rectangle_section(double b, double h, double t);
 
+// The section with every dimension multiplied by `factor` (> 0): areas times factor^2, second
+// moments and J times factor^4 (a tube D x t becomes the tube factor D x factor t).
+Section scaled_section(const Section& s, double factor);
+
 // Saint-Venant torsion constant of a solid b x h rectangle.
 double rectangle_torsion_constant(double b, double h);
 

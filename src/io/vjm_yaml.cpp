@@ -86,7 +86,8 @@ class VjmParser : public YamlFields {
   void parse_orthoglide(const YAML::Node& n, VjmModel& m) const {
     const std::string item = "orthoglide";
     check_map(n, item,
-              {"architecture", "link_length", "parallelogram_width", "actuator_stiffness", "bar", "foot"});
+              {"architecture", "link_length", "parallelogram_width", "platform_offset", "actuator_stiffness", "bar",
+               "foot"});
     const YAML::Node a = require(n, item, "architecture");
     const std::string arch = text(a, item, "architecture");
     if (arch == "3-PUU") {
@@ -105,6 +106,11 @@ class VjmParser : public YamlFields {
       o.parallelogram_width = length(n, item, "parallelogram_width");
     else if (n["parallelogram_width"].IsDefined())
       fail(n["parallelogram_width"], item, "a 3-PUU has no parallelogram; remove 'parallelogram_width'");
+    if (const YAML::Node d = n["platform_offset"]; d.IsDefined()) {  // optional, default 0
+      const double v = number(d, item, "platform_offset");
+      if (v < 0) fail(d, item, "'platform_offset' must be >= 0 (the legs' attachment distance from the tool point)");
+      o.platform_offset = v * u_.length;
+    }
     o.actuator_stiffness =
         positive(require(n, item, "actuator_stiffness"), item, "actuator_stiffness") * u_.translational_stiffness();
     const YAML::Node bar = require(n, item, "bar");

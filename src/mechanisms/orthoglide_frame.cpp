@@ -50,9 +50,17 @@ StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, Ort
     // The VJM chain's base frame (orthoglide_chains): x = -e_i, y = -e_(i+1), z = e_(i+2) = a1.
     Mat3 R;
     R << -Vec3::Unit(i), -Vec3::Unit((i + 1) % 3), Vec3::Unit((i + 2) % 3);
-    const Vec3 slider = (*rho)[i] * Vec3::Unit(i);
+    // Platform offset d: slider and leg end both moved by d e_i (orthoglide_stiffness.hpp), the leg
+    // end joined to the tool node by a rigid link (the platform).
+    const double d = m.platform_offset;
+    const Vec3 slider = ((*rho)[i] + d) * Vec3::Unit(i), attach = p + d * Vec3::Unit(i);
+    int platform = tool;
+    if (d > 0) {
+      platform = s.add_node(id("platform"), attach);
+      s.add_rigid_link({.id = id("platform"), .master = tool, .slave = platform});
+    }
     // Same q1 as the VJM builder; F = R R_z(q1) has y = a2 (the second rotation's axis) and z = a1.
-    const Vec3 v = R.transpose() * (p - slider) / L;
+    const Vec3 v = R.transpose() * (attach - slider) / L;
     const Mat3 F = R * axis_angle(Vec3::UnitZ(), std::atan2(v.y(), v.x()));
     const Vec3 a1 = F.col(2), a2 = F.col(1);
 
@@ -78,20 +86,20 @@ StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, Ort
     };
     if (puu) {
       // Two bars between the same nodes: the VJM's leg spring is one bar of doubled A, I, J and shear areas.
-      const int end = s.add_node(id("leg end"), p);
+      const int end = s.add_node(id("leg end"), attach);
       bar(proximal, end, id("leg bar 1"));
       bar(proximal, end, id("leg bar 2"));
-      s.add_joint({.id = id("U2"), .node1 = tool, .node2 = end, .frame = F, .stiffness = released(true, true)});
+      s.add_joint({.id = id("U2"), .node1 = platform, .node2 = end, .frame = F, .stiffness = released(true, true)});
       continue;
     }
-    const int distal = s.add_node(id("distal plate"), p);
+    const int distal = s.add_node(id("distal plate"), attach);
     for (double side : {0.5, -0.5}) {
-      const Vec3 offset = side * m.parallelogram_width * a1;
+      const Vec3 bar_offset = side * m.parallelogram_width * a1;
       const std::string name = id(side > 0 ? "upper bar" : "lower bar");
-      const int n0 = s.add_node(name + " proximal plate", slider + offset);
-      const int n1 = s.add_node(name + " proximal end", slider + offset);
-      const int n2 = s.add_node(name + " distal end", p + offset);
-      const int n3 = s.add_node(name + " distal plate", p + offset);
+      const int n0 = s.add_node(name + " proximal plate", slider + bar_offset);
+      const int n1 = s.add_node(name + " proximal end", slider + bar_offset);
+      const int n2 = s.add_node(name + " distal end", attach + bar_offset);
+      const int n3 = s.add_node(name + " distal plate", attach + bar_offset);
       s.add_rigid_link({.id = name + " proximal plate", .master = proximal, .slave = n0});
       s.add_joint({.id = name + " proximal pin", .node1 = n0, .node2 = n1, .frame = F,
                    .stiffness = released(true, false)});
@@ -100,7 +108,7 @@ StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, Ort
                    .stiffness = released(true, false)});
       s.add_rigid_link({.id = name + " distal plate", .master = distal, .slave = n3});
     }
-    s.add_joint({.id = id("platform R"), .node1 = tool, .node2 = distal, .frame = F,
+    s.add_joint({.id = id("platform R"), .node1 = platform, .node2 = distal, .frame = F,
                  .stiffness = released(false, true)});
   }
   s.set_report_node(tool);

@@ -13,8 +13,10 @@
 //            tool point --revolute a1 (platform R)--> tool node.
 // a1 = e_(i+2) is the U joint's first axis, a2 = the axis of the second rotation (normal to a1 and d),
 // the VJM's base frame rotated by q1 about a1. Joints: released rotations 0, everything else
-// msa::kRigid. The legs end at the tool point, so the platform is the tool node itself (three joints
-// into it). Report node = the tool node. Units: SI (m, N, Pa), as the model.
+// msa::kRigid. With platform_offset d = 0 the legs end at the tool point and the platform is the
+// tool node itself (three joints into it); with d > 0 slider and leg end move by d e_i and a rigid link
+// (the platform) joins each leg end to the tool node. Report node = the tool node. Units: SI (m, N,
+// Pa), as the model.
 #pragma once
 
 #include "core/status.hpp"

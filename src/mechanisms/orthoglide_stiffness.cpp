@@ -32,6 +32,8 @@ Status validate_stiffness_model(const OrthoglideStiffnessModel& m) {
     return Status::Invalid(
         "Orthoglide stiffness model: link length, parallelogram width, foot length (m) and "
         "actuator stiffness (N/m) must be positive and finite");
+  if (!std::isfinite(m.platform_offset) || m.platform_offset < 0)
+    return Status::Invalid("Orthoglide stiffness model: the platform offset (m) must be finite and >= 0");
   for (const Section* s : {&m.bar_section, &m.foot_section})
     if (!positive(s->A) || !positive(s->Iy) || !positive(s->Iz) || !positive(s->J))
       return Status::Invalid("Orthoglide stiffness model: a bar or foot section has a non-positive A, Iy, Iz or J");
@@ -92,7 +94,8 @@ StatusOr<std::vector<Chain>> orthoglide_chains(const OrthoglideStiffnessModel& m
     vjm::Transform base = vjm::Transform::Identity();
     base.linear() = R;
     c.add_transform(base, "base");
-    c.add_actuator(JointType::kPrismatic, -Vec3::UnitX(), (*rho)[i], m.actuator_stiffness, "actuator");
+    const double d = m.platform_offset;  // slider moved out by d: same leg vector (header)
+    c.add_actuator(JointType::kPrismatic, -Vec3::UnitX(), (*rho)[i] + d, m.actuator_stiffness, "actuator");
     c.add_spring(foot, "foot");
     // Leg direction in the base frame from the inverse kinematics: R_z(q1) R_y(q2) e_x = v / L. Both
     // U axes are normal to the leg at Q0 (an axis along the leg would make Q0 a U-joint singularity).
@@ -114,6 +117,7 @@ StatusOr<std::vector<Chain>> orthoglide_chains(const OrthoglideStiffnessModel& m
     }
     c.add_passive(JointType::kRevolute, Vec3::UnitZ(), -q1,
                   a == OrthoglideArchitecture::kPUU ? "U2 (2nd axis)" : "platform R");
+    if (d > 0) c.add_translation(d * Vec3::UnitX(), "platform (attachment to tool point)");
     c.add_transform(base.inverse(), "tool (global axes)");
     chains.push_back(std::move(c));
   }

@@ -10,9 +10,11 @@
 //   3-PUU:   a second U joint (q3, q4 independent, nominally -q2, -q1);
 //   3-PRPaR: the parallelogram R_y(q2) T_x(L) R_y(-q2) V_s of eq. (22), whose 6x6 spring is derived by
 //            the VJM from its two bars (parallelogram_spring), then the platform R joint (q4).
-// The paper publishes neither its link stiffness nor its actuator stiffness: the inputs below are
-// documented choices (docs/vjm.md), so values differ from Tables 1-2 while the structure (isotropy
-// at Q0, sign patterns, orderings) does not depend on them.
+// then, with platform_offset d > 0, the platform (leg end p + d e_i to the tool point p).
+// The paper publishes neither its link stiffness nor its actuator stiffness: the defaults below are
+// nominal choices (docs/vjm.md), so values differ from Tables 1-2 while the structure (isotropy at
+// Q0, sign patterns, orderings) does not depend on them; orthoglide_identification.hpp identifies
+// the inputs from the tables (models/orthoglide_*.yaml).
 //
 // Point convention: the tables' Q1 (x = y = z = -73.65 mm) and Q2 (126.35 mm) are the corners of
 // the 200 mm design cube only with the axes reversed (p = -x): p = +126.35 mm on the kinematics'
@@ -44,6 +46,12 @@ struct OrthoglideStiffnessModel {
   Material foot_material = Material::from_E_nu("steel", 210e9, 0.3);
   Section foot_section = hollow_rectangle_section(0.06, 0.06, 0.005);
   double foot_length = 0.1;  // m, foot modelled as a cantilever along the slider axis
+  // Leg i meets the platform at p + d e_i, not at the tool point p (the platform's half-width along
+  // the slider axes, m). The slider moves out by d, so the legs' vectors, and with them the
+  // kinematics of orthoglide_kinematics.hpp, are unchanged (only the slider origin shifts); the leg
+  // forces gain a lever arm d on the platform rotation wherever the legs are not parallel to the
+  // sliders (everywhere but Q0).
+  double platform_offset = 0.0;
   // Optional 6x6 link springs (e.g. from FEA, fea::link_stiffness) replacing the beam-built ones;
   // empty: built from the sections above. Frames are those of the chain where the spring enters:
   //  foot_spring: the foot's end relative to the slider, axes x = -e_i (along the slider axis,

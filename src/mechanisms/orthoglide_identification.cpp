@@ -1,0 +1,185 @@
+#include "mechanisms/orthoglide_identification.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
+
+#include "elements/section.hpp"
+#include "vjm/stiffness.hpp"
+
+namespace kinestat::mechanisms {
+
+const char* input_name(OrthoglideInput input) {
+  switch (input) {
+    case OrthoglideInput::kActuatorStiffness: return "actuator stiffness (N/m)";
+    case OrthoglideInput::kBarScale: return "bar section scale (-)";
+    case OrthoglideInput::kParallelogramWidth: return "parallelogram width (m)";
+    case OrthoglideInput::kPlatformOffset: return "platform offset (m)";
+    case OrthoglideInput::kFootLength: return "foot length (m)";
+  }
+  return "?";
+}
+
+namespace {
+
+// The value of an input in a model; the bar scale is relative to the start model's section.
+double input_value(const OrthoglideStiffnessModel& m, OrthoglideInput input, double bar_scale) {
+  switch (input) {
+    case OrthoglideInput::kActuatorStiffness: return m.actuator_stiffness;
+    case OrthoglideInput::kBarScale: return bar_scale;
+    case OrthoglideInput::kParallelogramWidth: return m.parallelogram_width;
+    case OrthoglideInput::kPlatformOffset: return m.platform_offset;
+    case OrthoglideInput::kFootLength: return m.foot_length;
+  }
+  return 0.0;
+}
+
+OrthoglideStiffnessModel with_inputs(const OrthoglideStiffnessModel& start, const std::vector<OrthoglideInput>& inputs,
+                                     const Eigen::VectorXd& log_values) {
+  OrthoglideStiffnessModel m = start;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    const double v = std::exp(log_values[static_cast<Eigen::Index>(k)]);
+    switch (inputs[k]) {
+      case OrthoglideInput::kActuatorStiffness: m.actuator_stiffness = v; break;
+      case OrthoglideInput::kBarScale: m.bar_section = scaled_section(start.bar_section, v); break;
+      case OrthoglideInput::kParallelogramWidth: m.parallelogram_width = v; break;
+      case OrthoglideInput::kPlatformOffset: m.platform_offset = v; break;
+      case OrthoglideInput::kFootLength: m.foot_length = v; break;
+    }
+  }
+  return m;
+}
+
+StatusOr<double> model_compliance(const OrthoglideStiffnessModel& m, const ComplianceTarget& t) {
+  StatusOr<std::vector<vjm::Chain>> chains = orthoglide_chains(m, t.architecture, t.point);
+  if (!chains.ok()) return chains.status();
+  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
+  if (!K.ok()) return K.status();
+  if (!K->compliance_defined) return Status::Singular(fmt::format("{}: {}", t.label, K->status.message()));
+  return K->compliance(t.row, t.col);
+}
+
+// Eigen's NumericalDiff / LevenbergMarquardt functor interface.
+struct Residuals {
+  using Scalar = double;
+  using InputType = Eigen::VectorXd;
+  using ValueType = Eigen::VectorXd;
+  using JacobianType = Eigen::MatrixXd;
+  enum { InputsAtCompileTime = Eigen::Dynamic, ValuesAtCompileTime = Eigen::Dynamic };
+
+  const OrthoglideStiffnessModel* start_model;
+  const std::vector<OrthoglideInput>* free_inputs;
+  const std::vector<ComplianceTarget>* target_terms;
+  Status* failure;  // the last failed evaluation (the functor is copied by NumericalDiff)
+
+  int inputs() const { return static_cast<int>(free_inputs->size()); }
+  int values() const { return static_cast<int>(target_terms->size()); }
+
+  int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
+    const OrthoglideStiffnessModel m = with_inputs(*start_model, *free_inputs, x);
+    for (std::size_t k = 0; k < target_terms->size(); ++k) {
+      const ComplianceTarget& t = (*target_terms)[k];
+      StatusOr<double> c = model_compliance(m, t);
+      if (!c.ok()) {
+        // A trial step outside the model's domain (e.g. a spring too soft to be positive definite in
+        // double precision): a large residual makes the minimizer reject it and shorten the step.
+        *failure = c.status();
+        r.setConstant(1e6);
+        return 0;
+      }
+      // Diagonal terms are positive: their log ratio keeps the minimizer away from the degenerate
+      // corner where one compliance vanishes (its relative error would stay bounded by 1 there).
+      const double ratio = *c / t.value;
+      r[static_cast<Eigen::Index>(k)] = t.row == t.col && ratio > 0 ? std::log(ratio) : ratio - 1.0;
+    }
+    return 0;
+  }
+};
+
+}  // namespace
+
+StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideStiffnessModel& start,
+                                                              const std::vector<OrthoglideInput>& inputs,
+                                                              const std::vector<ComplianceTarget>& targets,
+                                                              double tolerance) {
+  if (Status s = validate_stiffness_model(start); !s.ok()) return s;
+  if (inputs.empty() || targets.size() < inputs.size())
+    return Status::Invalid(fmt::format("identification: {} target(s) for {} input(s); give at least as many "
+                                       "targets as inputs",
+                                       targets.size(), inputs.size()));
+  for (const ComplianceTarget& t : targets)
+    if (t.row < 0 || t.row > 5 || t.col < 0 || t.col > 5 || !std::isfinite(t.value) || t.value == 0.0)
+      return Status::Invalid(fmt::format("identification target '{}': needs row and col in 0..5 and a finite, "
+                                         "non-zero value",
+                                         t.label));
+  Eigen::VectorXd x(static_cast<Eigen::Index>(inputs.size()));
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    const double v = input_value(start, inputs[k], 1.0);
+    if (!(v > 0))
+      return Status::Invalid(fmt::format("identification: the start value of the {} must be positive (got {:g})",
+                                         input_name(inputs[k]), v));
+    x[static_cast<Eigen::Index>(k)] = std::log(v);
+  }
+
+  Status failure = Status::Ok();
+  Residuals f{&start, &inputs, &targets, &failure};
+  Eigen::VectorXd r0(static_cast<Eigen::Index>(targets.size()));
+  f(x, r0);
+  if (!failure.ok()) return failure;  // the start itself cannot be evaluated
+  Eigen::NumericalDiff<Residuals> df(f);
+  Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> lm(df);
+  lm.parameters.ftol = lm.parameters.xtol = 1e-14;
+  lm.parameters.maxfev = 400 * static_cast<Eigen::Index>(inputs.size() + 1);
+  lm.minimize(x);
+
+  OrthoglideIdentification out;
+  out.model = with_inputs(start, inputs, x);
+  out.iterations = static_cast<int>(lm.iter);
+  out.evaluations = static_cast<int>(lm.nfev);
+  std::string r = "Identified inputs (start -> identified):\n";
+  for (std::size_t k = 0; k < inputs.size(); ++k)
+    r += fmt::format("  {:<28} {:>12.6g} -> {:.6g}\n", input_name(inputs[k]), input_value(start, inputs[k], 1.0),
+                     std::exp(x[static_cast<Eigen::Index>(k)]));
+  r += "Targets (SI) and the identified model:\n";
+  double worst = 0.0;
+  std::string worst_label;
+  for (const ComplianceTarget& t : targets) {
+    StatusOr<double> c = model_compliance(out.model, t);
+    if (!c.ok()) return c.status();
+    const double rel = (*c - t.value) / std::abs(t.value);
+    out.relative_residual.push_back(rel);
+    if (std::abs(rel) >= worst) worst = std::abs(rel), worst_label = t.label;
+    r += fmt::format("  {:<36} C({},{}) target {:.6e} model {:.6e} (relative {:+.1e})\n", t.label, t.row, t.col,
+                     t.value, *c, rel);
+  }
+  r += fmt::format("Levenberg-Marquardt: {} iterations, {} evaluations, largest relative residual {:.2e} ({})\n",
+                   out.iterations, out.evaluations, worst, worst_label);
+  out.report = std::move(r);
+  if (!(worst <= tolerance))
+    return Status(StatusCode::kNotConverged,
+                  fmt::format("identification did not reach the tolerance {:g}:\n{}", tolerance,
+                                            out.report));
+  return out;
+}
+
+std::vector<ComplianceTarget> paper_calibration_targets() {
+  using A = OrthoglideArchitecture;
+  constexpr double tran = 1e-7, rot = 1e-4;  // the tables' 1e-4 mm/N and 1e-7 rad/(N mm) in SI
+  auto target = [](std::string label, A a, double c, int index, double value) {
+    return ComplianceTarget{std::move(label), a, paper_table_point(c), index, index, value};
+  };
+  return {target("Tables 1-2, Q0, k_tran", A::kPUU, 0.0, 0, 2.78 * tran),
+          target("Table 1, Q0, k_rot", A::kPUU, 0.0, 3, 20.9 * rot),
+          target("Table 2, Q0, k_rot", A::kPRPaR, 0.0, 3, 1.94 * rot),
+          target("Table 1, Q2, k_tran", A::kPUU, 126.35, 0, 71.3 * tran),
+          target("Table 2, Q2, k_tran", A::kPRPaR, 126.35, 0, 21.2 * tran)};
+}
+
+std::vector<OrthoglideInput> paper_calibration_inputs() {
+  return {OrthoglideInput::kActuatorStiffness, OrthoglideInput::kBarScale, OrthoglideInput::kParallelogramWidth,
+          OrthoglideInput::kPlatformOffset, OrthoglideInput::kFootLength};
+}
+
+}  // namespace kinestat::mechanisms
