@@ -24,11 +24,11 @@ const char* input_name(OrthoglideInput input) {
 
 namespace {
 
-// The value of an input in a model; the bar scale is relative to the start model's section.
-double input_value(const OrthoglideStiffnessModel& m, OrthoglideInput input, double bar_scale) {
+// The value of an input in the start model (the bar scale is relative to its section: 1).
+double start_value(const OrthoglideStiffnessModel& m, OrthoglideInput input) {
   switch (input) {
     case OrthoglideInput::kActuatorStiffness: return m.actuator_stiffness;
-    case OrthoglideInput::kBarScale: return bar_scale;
+    case OrthoglideInput::kBarScale: return 1.0;
     case OrthoglideInput::kParallelogramWidth: return m.parallelogram_width;
     case OrthoglideInput::kPlatformOffset: return m.platform_offset;
     case OrthoglideInput::kFootLength: return m.foot_length;
@@ -116,11 +116,17 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
                                          t.label));
   Eigen::VectorXd x(static_cast<Eigen::Index>(inputs.size()));
   for (std::size_t k = 0; k < inputs.size(); ++k) {
-    const double v = input_value(start, inputs[k], 1.0);
+    const double v = start_value(start, inputs[k]);
     if (!(v > 0))
       return Status::Invalid(fmt::format("identification: the start value of the {} must be positive (got {:g})",
                                          input_name(inputs[k]), v));
     x[static_cast<Eigen::Index>(k)] = std::log(v);
+    if ((inputs[k] == OrthoglideInput::kBarScale && start.bar_spring) ||
+        (inputs[k] == OrthoglideInput::kFootLength && start.foot_spring))
+      return Status::Invalid(fmt::format("identification: the start model overrides the {} spring with a 6x6 "
+                                         "matrix, so the {} has no effect; remove the override or that input",
+                                         inputs[k] == OrthoglideInput::kBarScale ? "bar" : "foot",
+                                         input_name(inputs[k])));
   }
 
   Status failure = Status::Ok();
@@ -140,7 +146,7 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
   out.evaluations = static_cast<int>(lm.nfev);
   std::string r = "Identified inputs (start -> identified):\n";
   for (std::size_t k = 0; k < inputs.size(); ++k)
-    r += fmt::format("  {:<28} {:>12.6g} -> {:.6g}\n", input_name(inputs[k]), input_value(start, inputs[k], 1.0),
+    r += fmt::format("  {:<28} {:>12.6g} -> {:.6g}\n", input_name(inputs[k]), start_value(start, inputs[k]),
                      std::exp(x[static_cast<Eigen::Index>(k)]));
   r += "Targets (SI) and the identified model:\n";
   double worst = 0.0;
@@ -159,8 +165,7 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
   out.report = std::move(r);
   if (!(worst <= tolerance))
     return Status(StatusCode::kNotConverged,
-                  fmt::format("identification did not reach the tolerance {:g}:\n{}", tolerance,
-                                            out.report));
+                  fmt::format("identification did not reach the tolerance {:g}:\n{}", tolerance, out.report));
   return out;
 }
 

@@ -14,7 +14,10 @@
 // and b off it (q_axis_form in test_orthoglide_stiffness.cpp checks that form).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <iostream>
 
 #include "mechanisms/orthoglide_identification.hpp"
 
@@ -52,17 +55,26 @@ TEST(OrthoglideIdentification, FiveInputsReproduceTheFiveDeclaredEntries) {
   const OrthoglideIdentification& id = identified();
   ASSERT_EQ(id.relative_residual.size(), 5u);
   for (double r : id.relative_residual) EXPECT_LT(std::abs(r), 1e-8) << id.report;
+  std::cout << id.report;  // the figures of docs/vjm.md
   EXPECT_NE(id.report.find("Levenberg-Marquardt"), std::string::npos);
-  // The identified inputs (also in models/orthoglide_*.yaml, checked by tests/io): plausible
-  // hardware, not extreme values: 4.17 N/um actuator, aluminium tube 14.87 x 1.487 mm bars, w =
-  // 26.0 mm, platform offset 28.5 mm, foot 633 mm of the 60 x 60 x 5 steel tube (the foot lumps the
-  // slider's and guide's transverse compliance).
+  // The identified inputs (also in models/orthoglide_*.yaml, checked by tests/io) are 4.17 N/um,
+  // aluminium tube 14.87 x 1.487 mm bars, w = 26.0 mm, d = 28.5 mm and a foot of 633 mm of the 60 x 60 x 5
+  // steel tube (an equivalent length: the foot lumps the slider's and guide's transverse compliance).
+  // Independent route for the first entry: at Q0 a translation stretches one leg, so the hand series
+  // of actuator, foot and leg (axial) must give Tables 1-2's 2.78e-4 mm/N with these inputs.
   const OrthoglideStiffnessModel& m = id.model;
-  EXPECT_NEAR(m.actuator_stiffness, 4.17e6, 0.01e6);
-  EXPECT_NEAR(m.bar_section.A, tube_section(0.01487, 0.001487).A, 1e-3 * m.bar_section.A);
-  EXPECT_NEAR(m.parallelogram_width, 0.02605, 0.0001);
-  EXPECT_NEAR(m.platform_offset, 0.02852, 0.0001);
-  EXPECT_NEAR(m.foot_length, 0.6327, 0.001);
+  const double series = 1 / m.actuator_stiffness + m.foot_length / (m.foot_material.E * m.foot_section.A) +
+                        m.link_length / (m.bar_material.E * 2 * m.bar_section.A);
+  EXPECT_NEAR(series, 2.78 * kTran, 1e-8 * 2.78 * kTran);
+  // Hardware, not a numerical artefact: a ball-screw axis of 1-100 N/um, bars of 5-50 mm, a bar spacing
+  // and a platform half-width below the leg length.
+  EXPECT_GT(m.actuator_stiffness, 1e6);
+  EXPECT_LT(m.actuator_stiffness, 1e8);
+  const double diameter = 0.020 * std::sqrt(m.bar_section.A / tube_section(0.020, 0.002).A);
+  EXPECT_GT(diameter, 0.005);
+  EXPECT_LT(diameter, 0.050);
+  EXPECT_LT(m.parallelogram_width, m.link_length);
+  EXPECT_LT(m.platform_offset, m.link_length);
 }
 
 TEST(OrthoglideIdentification, TheSolutionDoesNotDependOnTheStart) {
@@ -91,6 +103,11 @@ TEST(OrthoglideIdentification, BadRequestsAreRefusedWithAReason) {
   StatusOr<OrthoglideIdentification> zero = identify_orthoglide_inputs({}, kInputs, calibration_targets());
   ASSERT_FALSE(zero.ok());  // the nominal platform offset is 0: no log-start
   EXPECT_NE(zero.status().message().find("platform offset"), std::string::npos);
+  OrthoglideStiffnessModel overridden = start_model();
+  overridden.foot_spring = Mat6::Identity() * 1e6;
+  StatusOr<OrthoglideIdentification> ignored = identify_orthoglide_inputs(overridden, kInputs, calibration_targets());
+  ASSERT_FALSE(ignored.ok());
+  EXPECT_NE(ignored.status().message().find("overrides the foot spring"), std::string::npos);
   std::vector<ComplianceTarget> unreachable = calibration_targets();
   unreachable[0].point = Vec3(0, 0.4, 0);
   StatusOr<OrthoglideIdentification> far = identify_orthoglide_inputs(start_model(), kInputs, unreachable);
@@ -104,7 +121,8 @@ struct Blocks {
 };
 struct Point {
   Blocks unloaded, loaded;
-  double force;  // Table 3, N per axis
+  double force;   // Table 3, N per axis
+  double moment;  // Table 3, N mm per axis (ours: the wrench's Mx on the kinematics' axes; not compared)
 };
 
 Point computed(A a, double c) {
@@ -115,20 +133,21 @@ Point computed(A a, double c) {
     const Mat6& C = k.compliance;
     return Blocks{C(0, 0) / kTran, C(0, 1) / kTran, C(3, 3) / kRot, C(3, 4) / kRot};
   };
-  return {blocks(s->unloaded), blocks(s->loaded), -s->loaded_state.wrench(0)};  // tables' axes are reversed
+  // Forces change sign on the tables' reversed axes; a moment's sign depends on the model's handedness.
+  return {blocks(s->unloaded), blocks(s->loaded), -s->loaded_state.wrench(0), s->loaded_state.wrench(3) * 1e3};
 }
 
 // Tables 1-2 as printed (rows: unloaded, loaded; a and b of k_tran and k_rot) and Table 3's F.
 Point paper(A a, double c) {
   const bool puu = a == A::kPUU;
   if (c == kQ0)
-    return puu ? Point{{2.78, 0, 20.9, 0}, {2.74, -0.02, 16.7, -0.02}, 1823}
-               : Point{{2.78, 0, 1.94, 0}, {2.74, -0.02, 1.88, 0.01}, 1823};
+    return puu ? Point{{2.78, 0, 20.9, 0}, {2.74, -0.02, 16.7, -0.02}, 1823, -101}
+               : Point{{2.78, 0, 1.94, 0}, {2.74, -0.02, 1.88, 0.01}, 1823, 63.54};
   if (c == kQ1)
-    return puu ? Point{{10.9, 5.5, 24.1, 7.5}, {10.5, 5.3, 22.0, 6.0}, 234}
-               : Point{{9.86, 5.80, 2.06, -0.32}, {9.55, 5.52, 2.05, -0.31}, 248};
-  return puu ? Point{{71.3, -35.0, 25.8, -7.4}, {39.1, -18.9, 15.4, -0.7}, 4104}
-             : Point{{21.2, -10.2, 2.65, 1.14}, {16.7, -7.9, 2.50, 1.28}, 9418};
+    return puu ? Point{{10.9, 5.5, 24.1, 7.5}, {10.5, 5.3, 22.0, 6.0}, 234, 524}
+               : Point{{9.86, 5.80, 2.06, -0.32}, {9.55, 5.52, 2.05, -0.31}, 248, -6045};
+  return puu ? Point{{71.3, -35.0, 25.8, -7.4}, {39.1, -18.9, 15.4, -0.7}, 4104, -2525}
+             : Point{{21.2, -10.2, 2.65, 1.14}, {16.7, -7.9, 2.50, 1.28}, 9418, 68376};
 }
 
 // "Reproduced" means within 10 % of the printed value, or within 1.5 units of its last printed digit
@@ -182,9 +201,18 @@ TEST(OrthoglidePrediction, RotationalComplianceAtQ1AndQ2) {
 TEST(OrthoglidePrediction, SignOfEveryOffDiagonalTerm) {
   // The 20 non-zero printed couplings of Tables 1-2 (the nominal model has the same signs,
   // test_orthoglide_stiffness.cpp), including the tiny loaded ones at Q0.
+  std::cout << "Tables 1-3 (a, b of each block; paper in brackets): unloaded k_tran | k_rot || loaded k_tran | "
+               "k_rot | F | M\n";
   for (A a : {A::kPUU, A::kPRPaR}) {
     for (double c : {kQ0, kQ1, kQ2}) {
       const Point ours = computed(a, c), p = paper(a, c);
+      std::cout << fmt::format(
+          "{:7} {:7.2f} | {:.4g}, {:.4g} ({:g}, {:g}) | {:.4g}, {:.4g} ({:g}, {:g}) || {:.4g}, {:.4g} ({:g}, {:g}) | "
+          "{:.4g}, {:.4g} ({:g}, {:g}) | {:.0f} ({:g}) | {:.0f} ({:g})\n",
+          a == A::kPUU ? "3-PUU" : "3-PRPaR", c, ours.unloaded.tran_a, ours.unloaded.tran_b, p.unloaded.tran_a,
+          p.unloaded.tran_b, ours.unloaded.rot_a, ours.unloaded.rot_b, p.unloaded.rot_a, p.unloaded.rot_b,
+          ours.loaded.tran_a, ours.loaded.tran_b, p.loaded.tran_a, p.loaded.tran_b, ours.loaded.rot_a,
+          ours.loaded.rot_b, p.loaded.rot_a, p.loaded.rot_b, ours.force, p.force, ours.moment, p.moment);
       const std::pair<double, double> pairs[] = {{ours.unloaded.tran_b, p.unloaded.tran_b},
                                                  {ours.unloaded.rot_b, p.unloaded.rot_b},
                                                  {ours.loaded.tran_b, p.loaded.tran_b},
@@ -238,20 +266,23 @@ TEST(OrthoglidePrediction, LoadedChangePerNewtonAtQ2) {
   EXPECT_NEAR(ours.force, 0.5 / ((ours.unloaded.tran_a + 2 * ours.unloaded.tran_b) * 1e-4), 0.1 * ours.force);
 }
 
-TEST(OrthoglidePrediction, Q1TranslationIsSeventyPercentOfTheTables) {
-  // Not reproduced: the translational compliance at Q1 is 0.70-0.72 of the tables' in both
-  // architectures, unloaded and loaded alike (3-PUU 7.77, 3.72 vs 10.9, 5.5; 3-PRPaR 6.87, 4.17 vs
-  // 9.86, 5.80), and so Table 3's F at Q1 is 335 N against 234 and 248 N. The ratio is the same for
-  // every term, which points at one cause common to both architectures: the compliance there grows
-  // 3 % per mm along the diagonal (7.77 at -73.65 mm, 9.47 at -80 mm), and it does not move with L
-  // (7.66 to 7.89 for L = 300-320 mm after re-identification). This test pins the finding: a change
-  // that moves it must be explained in docs/vjm.md.
+TEST(OrthoglidePrediction, Q1TranslationMissesByOneCommonFactor) {
+  // Not reproduced: the translational compliance at Q1 is about 0.70 of the tables' (3-PUU 7.77, 3.72
+  // vs 10.9, 5.5; 3-PRPaR 6.87, 4.17 vs 9.86, 5.80), and so Table 3's F at Q1 is 335 N against 234 and
+  // 248 N. What is asserted is the structure of the miss: nearly one factor for every term (a and b),
+  // both architectures, unloaded and loaded (measured 0.676-0.723 around 0.702: +-3.8 %, of which the
+  // tables' rounding explains about 1 %). A miss that the parallelogram, the load or one block caused
+  // would differ between those terms by far more (docs/vjm.md).
+  std::vector<double> ratios;
   for (A a : {A::kPUU, A::kPRPaR}) {
     const Point ours = computed(a, kQ1), p = paper(a, kQ1);
     for (double r : {ours.unloaded.tran_a / p.unloaded.tran_a, ours.unloaded.tran_b / p.unloaded.tran_b,
                      ours.loaded.tran_a / p.loaded.tran_a, ours.loaded.tran_b / p.loaded.tran_b})
-      EXPECT_NEAR(r, 0.70, 0.04);
+      ratios.push_back(r);
   }
+  double mean = 0;
+  for (double r : ratios) mean += r / static_cast<double>(ratios.size());
+  for (double r : ratios) EXPECT_NEAR(r, mean, 0.05 * mean);
 }
 
 }  // namespace
