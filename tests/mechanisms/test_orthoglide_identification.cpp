@@ -31,7 +31,6 @@ const Vec6 kPaperLoad = (Vec6() << -0.5e-3, -0.5e-3, -0.5e-3, 0, 0, 0).finished(
 
 using A = OrthoglideArchitecture;
 
-std::vector<ComplianceTarget> calibration_targets() { return paper_calibration_targets(); }
 const std::vector<OrthoglideInput> kInputs = paper_calibration_inputs();
 
 // The nominal model (aluminium tube 20 x 2 bars, w = 80 mm, 20 N/um, steel foot 100 mm) with a
@@ -44,7 +43,8 @@ OrthoglideStiffnessModel start_model() {
 
 const OrthoglideIdentification& identified() {
   static const OrthoglideIdentification id = [] {
-    StatusOr<OrthoglideIdentification> r = identify_orthoglide_inputs(start_model(), kInputs, calibration_targets());
+    StatusOr<OrthoglideIdentification> r =
+        identify_orthoglide_inputs(start_model(), kInputs, paper_calibration_targets());
     EXPECT_TRUE(r.ok()) << r.status().message();
     return r.ok() ? *r : OrthoglideIdentification{};
   }();
@@ -85,7 +85,7 @@ TEST(OrthoglideIdentification, TheSolutionDoesNotDependOnTheStart) {
   far.parallelogram_width = 0.15;
   far.platform_offset = 0.08;
   far.foot_length = 0.05;
-  StatusOr<OrthoglideIdentification> r = identify_orthoglide_inputs(far, kInputs, calibration_targets());
+  StatusOr<OrthoglideIdentification> r = identify_orthoglide_inputs(far, kInputs, paper_calibration_targets());
   ASSERT_TRUE(r.ok()) << r.status().message();
   const OrthoglideStiffnessModel &a = r->model, &b = identified().model;
   EXPECT_NEAR(a.actuator_stiffness, b.actuator_stiffness, 1e-6 * b.actuator_stiffness);
@@ -100,15 +100,16 @@ TEST(OrthoglideIdentification, BadRequestsAreRefusedWithAReason) {
   ASSERT_FALSE(few.ok());
   EXPECT_EQ(few.status().code(), StatusCode::kInvalidInput);
   EXPECT_NE(few.status().message().find("0 target(s) for 5 input(s)"), std::string::npos);
-  StatusOr<OrthoglideIdentification> zero = identify_orthoglide_inputs({}, kInputs, calibration_targets());
+  StatusOr<OrthoglideIdentification> zero = identify_orthoglide_inputs({}, kInputs, paper_calibration_targets());
   ASSERT_FALSE(zero.ok());  // the nominal platform offset is 0: no log-start
   EXPECT_NE(zero.status().message().find("platform offset"), std::string::npos);
   OrthoglideStiffnessModel overridden = start_model();
   overridden.foot_spring = Mat6::Identity() * 1e6;
-  StatusOr<OrthoglideIdentification> ignored = identify_orthoglide_inputs(overridden, kInputs, calibration_targets());
+  StatusOr<OrthoglideIdentification> ignored =
+      identify_orthoglide_inputs(overridden, kInputs, paper_calibration_targets());
   ASSERT_FALSE(ignored.ok());
   EXPECT_NE(ignored.status().message().find("overrides the foot spring"), std::string::npos);
-  std::vector<ComplianceTarget> unreachable = calibration_targets();
+  std::vector<ComplianceTarget> unreachable = paper_calibration_targets();
   unreachable[0].point = Vec3(0, 0.4, 0);
   StatusOr<OrthoglideIdentification> far = identify_orthoglide_inputs(start_model(), kInputs, unreachable);
   EXPECT_FALSE(far.ok());
