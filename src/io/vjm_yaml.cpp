@@ -90,13 +90,9 @@ class VjmParser : public YamlFields {
                "foot"});
     const YAML::Node a = require(n, item, "architecture");
     const std::string arch = text(a, item, "architecture");
-    if (arch == "3-PUU") {
-      m.architecture = mechanisms::OrthoglideArchitecture::kPUU;
-    } else if (arch == "3-PRPaR") {
-      m.architecture = mechanisms::OrthoglideArchitecture::kPRPaR;
-    } else {
-      fail(a, item, fmt::format("unknown architecture '{}'; write 3-PUU or 3-PRPaR", arch));
-    }
+    const std::optional<mechanisms::OrthoglideArchitecture> known = mechanisms::architecture_from_name(arch);
+    if (!known) fail(a, item, fmt::format("unknown architecture '{}'; write 3-PUU or 3-PRPaR", arch));
+    m.architecture = *known;
     mechanisms::OrthoglideStiffnessModel o;
     auto length = [&](const YAML::Node& map, const std::string& it, const char* key) {
       return positive(require(map, it, key), it, key) * u_.length;

@@ -12,6 +12,12 @@ namespace kinestat::mechanisms {
 using vjm::Chain;
 using vjm::JointType;
 
+std::optional<OrthoglideArchitecture> architecture_from_name(const std::string& name) {
+  if (name == "3-PUU") return OrthoglideArchitecture::kPUU;
+  if (name == "3-PRPaR") return OrthoglideArchitecture::kPRPaR;
+  return std::nullopt;
+}
+
 Vec3 paper_table_point(double coordinate_mm) { return Vec3::Constant(-coordinate_mm / 1000.0); }
 
 namespace {

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "core/status.hpp"
 #include "core/types.hpp"
@@ -34,6 +35,8 @@
 namespace kinestat::mechanisms {
 
 enum class OrthoglideArchitecture { kPUU, kPRPaR };
+// "3-PUU" / "3-PRPaR" (the model files' spelling); nullopt for anything else.
+std::optional<OrthoglideArchitecture> architecture_from_name(const std::string& name);
 
 // SI units. Defaults: the prototype's L (design paper, strategy 1); aluminium tube bars; the other
 // values are assumptions stated in docs/vjm.md.
