@@ -4,13 +4,13 @@
 // the start values come from the model file, the terms and the inputs to adjust from TARGETS.
 // Sample run (the paper's declared calibration; the bundled models hold its result):
 //   kinestat identify models/orthoglide_puu.yaml models/orthoglide_paper_targets.yaml
+#include <cmath>
 #include <memory>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "cli/app.hpp"
-#include "elements/section.hpp"
 #include "io/identification_yaml.hpp"
 #include "io/vjm_yaml.hpp"
 
