@@ -15,6 +15,11 @@ int exit_code_for(const Status& status) {
   }
 }
 
+int report_failure(Context& ctx, const std::string& command, const Status& status) {
+  ctx.err << "kinestat " << command << ": " << status.message() << "\n";
+  return exit_code_for(status);
+}
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). SI units unless a file says otherwise.",
                "kinestat"};

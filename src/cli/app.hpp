@@ -31,6 +31,9 @@ struct Context {
   int exit_code = kExitOk;
 };
 
+// Prints "kinestat COMMAND: message" to ctx.err; returns the exit status for `status`.
+int report_failure(Context& ctx, const std::string& command, const Status& status);
+
 // A subcommand adds itself to the app; its callback runs when it is selected and sets ctx.exit_code.
 using CommandRegistrar = std::function<void(CLI::App& app, Context& ctx)>;
 

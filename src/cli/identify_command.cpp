@@ -51,10 +51,7 @@ std::string model_file_lines(const mechanisms::OrthoglideStiffnessModel& start,
 }
 
 int run_identify(const IdentifyArgs& a, Context& ctx) {
-  auto bad = [&](const Status& s) {
-    ctx.err << "kinestat identify: " << s.message() << "\n";
-    return exit_code_for(s);
-  };
+  auto bad = [&](const Status& s) { return report_failure(ctx, "identify", s); };
   StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
   if (!model.ok()) return bad(model.status());
   if (!model->orthoglide)

@@ -87,10 +87,7 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--json", args->json_file, "write the matrices (SI units) as JSON to this file");
   cmd->add_option("--cache", args->cache_dir, "reuse / store results in this directory (keyed by mesh, material, options)");
   cmd->callback([args, &ctx] {
-    auto fail = [&ctx](const Status& s) {
-      ctx.err << "kinestat link-stiffness: " << s.message() << "\n";
-      ctx.exit_code = exit_code_for(s);
-    };
+    auto fail = [&ctx](const Status& s) { ctx.exit_code = report_failure(ctx, "link-stiffness", s); };
     auto write_json = [&](const fea::LinkStiffness& r, bool from_cache) {
       if (args->json_file.empty()) return;
       std::ofstream out(args->json_file);

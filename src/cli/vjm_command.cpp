@@ -45,10 +45,7 @@ StatusOr<Eigen::Matrix<double, N, 1>> vector_option(const std::vector<double>& v
 }
 
 int run_vjm(const VjmArgs& a, Context& ctx) {
-  auto bad = [&](const Status& s) {
-    ctx.err << "kinestat vjm: " << s.message() << "\n";
-    return exit_code_for(s);
-  };
+  auto bad = [&](const Status& s) { return report_failure(ctx, "vjm", s); };
   StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
   if (!model.ok()) return bad(model.status());
   std::optional<Vec3> point;
