@@ -182,6 +182,12 @@ std::vector<ComplianceTarget> paper_calibration_targets() {
           target("Table 2, Q2, k_tran", A::kPRPaR, 126.35, 0, 21.2 * tran)};
 }
 
+OrthoglideStiffnessModel paper_calibration_start() {
+  OrthoglideStiffnessModel m;
+  m.platform_offset = 0.05;
+  return m;
+}
+
 std::vector<OrthoglideInput> paper_calibration_inputs() {
   return {OrthoglideInput::kActuatorStiffness, OrthoglideInput::kBarScale, OrthoglideInput::kParallelogramWidth,
           OrthoglideInput::kPlatformOffset, OrthoglideInput::kFootLength};

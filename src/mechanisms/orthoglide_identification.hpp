@@ -65,5 +65,7 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
 // points of paper_table_point, and the five inputs they identify (every input of OrthoglideInput).
 std::vector<ComplianceTarget> paper_calibration_targets();
 std::vector<OrthoglideInput> paper_calibration_inputs();
+// Its start: the nominal inputs (OrthoglideStiffnessModel{}) with a 50 mm platform offset guess.
+OrthoglideStiffnessModel paper_calibration_start();
 
 }  // namespace kinestat::mechanisms

@@ -34,8 +34,7 @@ Mat6 builder_stiffness(OrthoglideArchitecture a, const Vec3& p, const mechanisms
 // The declared calibration (mechanisms/orthoglide_identification.hpp) from the nominal defaults.
 const mechanisms::OrthoglideStiffnessModel& identified_model() {
   static const mechanisms::OrthoglideStiffnessModel m = [] {
-    mechanisms::OrthoglideStiffnessModel start;
-    start.platform_offset = 0.05;
+    const mechanisms::OrthoglideStiffnessModel start = mechanisms::paper_calibration_start();
     StatusOr<mechanisms::OrthoglideIdentification> id = mechanisms::identify_orthoglide_inputs(
         start, mechanisms::paper_calibration_inputs(), mechanisms::paper_calibration_targets());
     EXPECT_TRUE(id.ok()) << id.status().message();

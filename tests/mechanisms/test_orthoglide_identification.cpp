@@ -33,18 +33,10 @@ using A = OrthoglideArchitecture;
 
 const std::vector<OrthoglideInput> kInputs = paper_calibration_inputs();
 
-// The nominal model (aluminium tube 20 x 2 bars, w = 80 mm, 20 N/um, steel foot 100 mm) with a
-// platform offset guess of 50 mm.
-OrthoglideStiffnessModel start_model() {
-  OrthoglideStiffnessModel m;
-  m.platform_offset = 0.05;
-  return m;
-}
-
 const OrthoglideIdentification& identified() {
   static const OrthoglideIdentification id = [] {
     StatusOr<OrthoglideIdentification> r =
-        identify_orthoglide_inputs(start_model(), kInputs, paper_calibration_targets());
+        identify_orthoglide_inputs(paper_calibration_start(), kInputs, paper_calibration_targets());
     EXPECT_TRUE(r.ok()) << r.status().message();
     return r.ok() ? *r : OrthoglideIdentification{};
   }();
@@ -79,7 +71,7 @@ TEST(OrthoglideIdentification, FiveInputsReproduceTheFiveDeclaredEntries) {
 
 TEST(OrthoglideIdentification, TheSolutionDoesNotDependOnTheStart) {
   // Well-posed: five entries pin five inputs. Starting far from the solution lands on the same one.
-  OrthoglideStiffnessModel far = start_model();
+  OrthoglideStiffnessModel far = paper_calibration_start();
   far.actuator_stiffness = 4e7;
   far.bar_section = tube_section(0.01, 0.001);
   far.parallelogram_width = 0.15;
@@ -96,14 +88,14 @@ TEST(OrthoglideIdentification, TheSolutionDoesNotDependOnTheStart) {
 }
 
 TEST(OrthoglideIdentification, BadRequestsAreRefusedWithAReason) {
-  StatusOr<OrthoglideIdentification> few = identify_orthoglide_inputs(start_model(), kInputs, {});
+  StatusOr<OrthoglideIdentification> few = identify_orthoglide_inputs(paper_calibration_start(), kInputs, {});
   ASSERT_FALSE(few.ok());
   EXPECT_EQ(few.status().code(), StatusCode::kInvalidInput);
   EXPECT_NE(few.status().message().find("0 target(s) for 5 input(s)"), std::string::npos);
   StatusOr<OrthoglideIdentification> zero = identify_orthoglide_inputs({}, kInputs, paper_calibration_targets());
   ASSERT_FALSE(zero.ok());  // the nominal platform offset is 0: no log-start
   EXPECT_NE(zero.status().message().find("platform offset"), std::string::npos);
-  OrthoglideStiffnessModel overridden = start_model();
+  OrthoglideStiffnessModel overridden = paper_calibration_start();
   overridden.foot_spring = Mat6::Identity() * 1e6;
   StatusOr<OrthoglideIdentification> ignored =
       identify_orthoglide_inputs(overridden, kInputs, paper_calibration_targets());
@@ -111,7 +103,7 @@ TEST(OrthoglideIdentification, BadRequestsAreRefusedWithAReason) {
   EXPECT_NE(ignored.status().message().find("overrides the foot spring"), std::string::npos);
   std::vector<ComplianceTarget> unreachable = paper_calibration_targets();
   unreachable[0].point = Vec3(0, 0.4, 0);
-  StatusOr<OrthoglideIdentification> far = identify_orthoglide_inputs(start_model(), kInputs, unreachable);
+  StatusOr<OrthoglideIdentification> far = identify_orthoglide_inputs(paper_calibration_start(), kInputs, unreachable);
   EXPECT_FALSE(far.ok());
 }
 
