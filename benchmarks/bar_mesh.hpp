@@ -4,8 +4,8 @@
 #pragma once
 
 #include "fea/elasticity_assembly.hpp"
-#include "fea/region.hpp"
-#include "fea/tet_mesh.hpp"
+#include "kinestat/fea/region.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
 
 namespace kinestat::bench {
 

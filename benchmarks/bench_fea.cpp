@@ -15,10 +15,10 @@
 
 #include "bar_mesh.hpp"
 #include "fea/elasticity_assembly.hpp"
-#include "fea/region.hpp"
-#include "fea/surface_mesher.hpp"
-#include "fea/tet_element.hpp"
-#include "fea/tet_mesh.hpp"
+#include "kinestat/fea/region.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
+#include "kinestat/fea/tet_element.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
 
 namespace {
 

@@ -26,13 +26,13 @@
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 
-#include "core/frame.hpp"
-#include "elements/section.hpp"
-#include "fea/link_stiffness.hpp"
-#include "fea/region.hpp"
-#include "fea/surface_mesher.hpp"
-#include "mechanisms/orthoglide_stiffness.hpp"
-#include "vjm/link_spring.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/elements/section.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/region.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
+#include "kinestat/mechanisms/orthoglide_stiffness.hpp"
+#include "kinestat/vjm/link_spring.hpp"
 
 namespace {
 

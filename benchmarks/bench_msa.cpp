@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "mechanisms/five_bar.hpp"
-#include "msa/static_analysis.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat {
 namespace {

@@ -19,12 +19,12 @@
 #include <numbers>
 #include <vector>
 
-#include "mechanisms/five_bar.hpp"
-#include "mechanisms/five_bar_vjm.hpp"
-#include "mechanisms/orthoglide_frame.hpp"
-#include "mechanisms/orthoglide_stiffness.hpp"
-#include "msa/static_analysis.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
+#include "kinestat/mechanisms/five_bar_vjm.hpp"
+#include "kinestat/mechanisms/orthoglide_frame.hpp"
+#include "kinestat/mechanisms/orthoglide_stiffness.hpp"
+#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat {
 namespace {

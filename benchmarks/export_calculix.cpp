@@ -16,10 +16,10 @@
 
 #include "bar_mesh.hpp"
 #include "fea/elasticity_assembly.hpp"
-#include "fea/region.hpp"
-#include "fea/tet_element.hpp"
-#include "fea/tet_mesh.hpp"
-#include "solver/sparse_cholesky.hpp"
+#include "kinestat/fea/region.hpp"
+#include "kinestat/fea/tet_element.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace {
 

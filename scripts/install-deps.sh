@@ -5,6 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake pkg-config
+  python3                  # scripts/check_layers.py (Debian's /usr/bin/python3)
   libeigen3-dev            # dense linear algebra
   libsuitesparse-dev       # CHOLMOD (sparse Cholesky), with METIS ordering
   libopenblas0-pthread     # optimized BLAS under CHOLMOD's supernodal factorization

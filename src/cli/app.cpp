@@ -1,4 +1,4 @@
-#include "cli/app.hpp"
+#include "kinestat/cli/app.hpp"
 
 #include <ostream>
 

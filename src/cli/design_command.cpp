@@ -13,9 +13,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "cli/app.hpp"
-#include "io/workspace_vtk.hpp"
-#include "mechanisms/orthoglide_design.hpp"
+#include "kinestat/cli/app.hpp"
+#include "kinestat/io/workspace_vtk.hpp"
+#include "kinestat/mechanisms/orthoglide_design.hpp"
 
 namespace kinestat::cli {
 namespace {

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "cli/msa_output.hpp"
-#include "mechanisms/five_bar.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
 
 namespace kinestat::cli {
 namespace {

@@ -10,9 +10,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "cli/app.hpp"
-#include "io/identification_yaml.hpp"
-#include "io/vjm_yaml.hpp"
+#include "kinestat/cli/app.hpp"
+#include "kinestat/io/identification_yaml.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
 
 namespace kinestat::cli {
 namespace {

@@ -10,13 +10,13 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/app.hpp"
-#include "fea/link_stiffness.hpp"
-#include "fea/link_stiffness_inputs.hpp"
-#include "fea/mesh_convergence.hpp"
-#include "fea/result_cache.hpp"
-#include "fea/surface_mesher.hpp"
-#include "io/fea_vtk.hpp"
+#include "kinestat/cli/app.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/link_stiffness_inputs.hpp"
+#include "kinestat/fea/mesh_convergence.hpp"
+#include "kinestat/fea/result_cache.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
+#include "kinestat/io/fea_vtk.hpp"
 
 namespace kinestat::cli {
 

@@ -5,8 +5,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "io/results_json.hpp"
-#include "io/vtk_output.hpp"
+#include "kinestat/io/results_json.hpp"
+#include "kinestat/io/vtk_output.hpp"
 
 namespace kinestat::cli {
 

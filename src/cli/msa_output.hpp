@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "cli/app.hpp"
-#include "msa/static_analysis.hpp"
+#include "kinestat/cli/app.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::cli {
 

@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/msa_output.hpp"
-#include "io/structure_yaml.hpp"
+#include "kinestat/io/structure_yaml.hpp"
 
 namespace kinestat::cli {
 

@@ -7,11 +7,11 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "cli/app.hpp"
-#include "core/stiffness_indices.hpp"
-#include "io/vjm_yaml.hpp"
-#include "msa/static_analysis.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/cli/app.hpp"
+#include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::cli {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 
 #include <cmath>
 

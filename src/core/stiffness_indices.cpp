@@ -1,4 +1,4 @@
-#include "core/stiffness_indices.hpp"
+#include "kinestat/core/stiffness_indices.hpp"
 
 #include <cmath>
 #include <limits>
@@ -49,6 +49,47 @@ StiffnessIndices stiffness_indices(const MatX& K) {
   } else {
     s.determinant = sign * std::pow(10.0, log10_det);
   }
+  return s;
+}
+
+}  // namespace kinestat
+
+namespace kinestat {
+
+CartesianIndices cartesian_indices(const Mat6& K) {
+  CartesianIndices s;
+  const double fro = K.norm();
+  s.norm_frobenius = fro;
+  s.symmetry_error = fro > 0 ? (K - K.transpose()).norm() / fro : 0.0;
+  s.trace = K.trace();
+  s.norm_1 = K.cwiseAbs().colwise().sum().maxCoeff();
+  s.norm_inf = K.cwiseAbs().rowwise().sum().maxCoeff();
+  s.max_abs_entry = K.cwiseAbs().maxCoeff();
+  const Mat6 Ks = 0.5 * (K + K.transpose());
+  // Eigenvalues only (no vectors): the sweep path needs the spectrum, not the directions.
+  s.eigenvalues = Eigen::SelfAdjointEigenSolver<Mat6>(Ks, Eigen::EigenvaluesOnly).eigenvalues();
+  s.translational_eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Mat3>(Ks.topLeftCorner<3, 3>(), Eigen::EigenvaluesOnly).eigenvalues();
+  s.rotational_eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Mat3>(Ks.bottomRightCorner<3, 3>(), Eigen::EigenvaluesOnly).eigenvalues();
+  const Vec6 a = s.eigenvalues.cwiseAbs();
+  s.norm_2 = a.maxCoeff();
+  const double amin = a.minCoeff();
+  s.condition_number = amin > 0 ? s.norm_2 / amin : std::numeric_limits<double>::infinity();
+  const Eigen::PartialPivLU<Mat6> lu(K);
+  int sign = lu.permutationP().determinant();
+  double log10_det = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    const double d = lu.matrixLU()(i, i);
+    if (d == 0.0) {
+      sign = 0;
+      break;
+    }
+    if (d < 0) sign = -sign;
+    log10_det += std::log10(std::abs(d));
+  }
+  s.det_sign = sign;
+  s.log10_abs_det = sign == 0 ? -std::numeric_limits<double>::infinity() : log10_det;
   return s;
 }
 

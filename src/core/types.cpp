@@ -1,4 +1,4 @@
-#include "core/types.hpp"
+#include "kinestat/core/types.hpp"
 
 namespace kinestat {
 

@@ -1,4 +1,4 @@
-#include "elements/beam_element.hpp"
+#include "kinestat/elements/beam_element.hpp"
 
 #include <vector>
 

@@ -1,8 +1,8 @@
-#include "elements/joint_element.hpp"
+#include "kinestat/elements/joint_element.hpp"
 
 #include <cmath>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 
 namespace kinestat {
 

@@ -1,4 +1,4 @@
-#include "elements/section.hpp"
+#include "kinestat/elements/section.hpp"
 
 #include <algorithm>
 #include <cmath>

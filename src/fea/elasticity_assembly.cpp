@@ -7,8 +7,8 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "core/frame.hpp"
-#include "fea/tet_element.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/fea/tet_element.hpp"
 
 namespace kinestat::fea {
 

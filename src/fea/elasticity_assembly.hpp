@@ -5,10 +5,10 @@
 #include <array>
 #include <vector>
 
-#include "core/status.hpp"
-#include "core/types.hpp"
-#include "fea/tet_mesh.hpp"
-#include "solver/sparse_cholesky.hpp"
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::fea {
 

@@ -1,4 +1,4 @@
-#include "fea/link_stiffness.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 #include "fea/elasticity_assembly.hpp"
-#include "fea/tet_element.hpp"
+#include "kinestat/fea/tet_element.hpp"
 
 namespace kinestat::fea {
 

@@ -1,4 +1,4 @@
-#include "fea/link_stiffness_inputs.hpp"
+#include "kinestat/fea/link_stiffness_inputs.hpp"
 
 #include <cstdio>
 #include <fstream>

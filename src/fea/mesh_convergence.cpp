@@ -1,4 +1,4 @@
-#include "fea/mesh_convergence.hpp"
+#include "kinestat/fea/mesh_convergence.hpp"
 
 #include <cmath>
 #include <sstream>

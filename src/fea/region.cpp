@@ -1,4 +1,4 @@
-#include "fea/region.hpp"
+#include "kinestat/fea/region.hpp"
 
 #include <cmath>
 

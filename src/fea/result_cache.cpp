@@ -1,4 +1,4 @@
-#include "fea/result_cache.hpp"
+#include "kinestat/fea/result_cache.hpp"
 
 #include <filesystem>
 #include <fstream>

@@ -1,5 +1,5 @@
 // All of CGAL Mesh_3 lives in this one translation unit: it compiles slowly.
-#include "fea/surface_mesher.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
 
 #include <cmath>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "fea/tet_element.hpp"
+#include "kinestat/fea/tet_element.hpp"
 
 #include <array>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "fea/tet_mesh.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "io/fea_vtk.hpp"
+#include "kinestat/io/fea_vtk.hpp"
 
 #include <filesystem>
 

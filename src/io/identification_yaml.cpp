@@ -1,4 +1,4 @@
-#include "io/identification_yaml.hpp"
+#include "kinestat/io/identification_yaml.hpp"
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>

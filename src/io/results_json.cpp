@@ -1,4 +1,4 @@
-#include "io/results_json.hpp"
+#include "kinestat/io/results_json.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "io/structure_yaml.hpp"
+#include "kinestat/io/structure_yaml.hpp"
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -9,10 +9,10 @@
 #include <tuple>
 #include <unordered_map>
 
-#include "core/frame.hpp"
-#include "core/types.hpp"
-#include "elements/beam_element.hpp"
-#include "elements/section.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/core/types.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/elements/section.hpp"
 #include "io/yaml_fields.hpp"
 
 namespace kinestat::io {

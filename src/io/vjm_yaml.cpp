@@ -1,4 +1,4 @@
-#include "io/vjm_yaml.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -9,15 +9,15 @@
 #include <map>
 #include <numbers>
 
-#include "elements/beam_element.hpp"
-#include "elements/section.hpp"
-#include "fea/link_stiffness.hpp"
-#include "fea/link_stiffness_inputs.hpp"
-#include "fea/result_cache.hpp"
-#include "fea/surface_mesher.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/elements/section.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/link_stiffness_inputs.hpp"
+#include "kinestat/fea/result_cache.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
 #include "io/yaml_fields.hpp"
-#include "vjm/equilibrium.hpp"
-#include "vjm/link_spring.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
+#include "kinestat/vjm/link_spring.hpp"
 
 namespace kinestat::io {
 namespace {

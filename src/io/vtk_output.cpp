@@ -1,4 +1,4 @@
-#include "io/vtk_output.hpp"
+#include "kinestat/io/vtk_output.hpp"
 
 #include <fmt/format.h>
 #include <vtkCellData.h>

@@ -1,4 +1,4 @@
-#include "io/workspace_vtk.hpp"
+#include "kinestat/io/workspace_vtk.hpp"
 
 #include <array>
 #include <filesystem>

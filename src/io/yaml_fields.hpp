@@ -9,8 +9,8 @@
 #include <initializer_list>
 #include <string>
 
-#include "core/status.hpp"
-#include "core/types.hpp"
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
 
 namespace kinestat::io {
 

@@ -1,4 +1,4 @@
-#include "mechanisms/five_bar.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "mechanisms/five_bar_vjm.hpp"
+#include "kinestat/mechanisms/five_bar_vjm.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "vjm/link_spring.hpp"
+#include "kinestat/vjm/link_spring.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

@@ -1,4 +1,4 @@
-#include "mechanisms/orthoglide_design.hpp"
+#include "kinestat/mechanisms/orthoglide_design.hpp"
 
 #include <algorithm>
 #include <cmath>

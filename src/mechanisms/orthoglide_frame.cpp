@@ -1,12 +1,12 @@
-#include "mechanisms/orthoglide_frame.hpp"
+#include "kinestat/mechanisms/orthoglide_frame.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <string>
 
-#include "core/frame.hpp"
-#include "mechanisms/orthoglide_kinematics.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/mechanisms/orthoglide_kinematics.hpp"
 
 namespace kinestat::mechanisms {
 

@@ -1,4 +1,4 @@
-#include "mechanisms/orthoglide_identification.hpp"
+#include "kinestat/mechanisms/orthoglide_identification.hpp"
 
 #include <fmt/format.h>
 
@@ -6,8 +6,8 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
-#include "elements/section.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/elements/section.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::mechanisms {
 

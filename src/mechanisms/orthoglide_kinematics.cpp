@@ -1,4 +1,4 @@
-#include "mechanisms/orthoglide_kinematics.hpp"
+#include "kinestat/mechanisms/orthoglide_kinematics.hpp"
 
 #include <algorithm>
 #include <cmath>

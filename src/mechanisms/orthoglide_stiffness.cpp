@@ -1,11 +1,11 @@
-#include "mechanisms/orthoglide_stiffness.hpp"
+#include "kinestat/mechanisms/orthoglide_stiffness.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "mechanisms/orthoglide_kinematics.hpp"
-#include "vjm/link_spring.hpp"
+#include "kinestat/mechanisms/orthoglide_kinematics.hpp"
+#include "kinestat/vjm/link_spring.hpp"
 
 namespace kinestat::mechanisms {
 

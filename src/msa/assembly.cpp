@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "elements/joint_element.hpp"
+#include "kinestat/elements/joint_element.hpp"
 
 namespace kinestat::msa {
 

@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "msa/structure.hpp"
-#include "solver/sparse_cholesky.hpp"
+#include "kinestat/msa/structure.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::msa {
 

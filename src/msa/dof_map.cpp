@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 
 namespace kinestat::msa {
 namespace {

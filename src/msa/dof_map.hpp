@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "core/status.hpp"
-#include "msa/structure.hpp"
-#include "solver/sparse_cholesky.hpp"
+#include "kinestat/core/status.hpp"
+#include "kinestat/msa/structure.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::msa {
 

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "msa/static_analysis.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::msa {
 namespace {

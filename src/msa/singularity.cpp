@@ -1,12 +1,12 @@
-#include "msa/singularity.hpp"
+#include "kinestat/msa/singularity.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "core/frame.hpp"
-#include "solver/null_space.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/solver/null_space.hpp"
 
 namespace kinestat::msa {
 namespace {

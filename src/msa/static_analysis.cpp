@@ -1,15 +1,15 @@
-#include "msa/static_analysis.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 #include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
-#include "msa/singularity.hpp"
-#include "solver/null_space.hpp"
+#include "kinestat/msa/singularity.hpp"
+#include "kinestat/solver/null_space.hpp"
 
 namespace kinestat::msa {
 namespace {

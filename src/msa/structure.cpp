@@ -1,11 +1,11 @@
-#include "msa/structure.hpp"
+#include "kinestat/msa/structure.hpp"
 
 #include <cmath>
 #include <set>
 
 #include <fmt/format.h>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 
 namespace kinestat::msa {
 namespace {

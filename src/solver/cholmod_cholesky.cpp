@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "solver/sparse_cholesky.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::solver {
 namespace {

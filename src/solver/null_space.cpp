@@ -1,4 +1,4 @@
-#include "solver/null_space.hpp"
+#include "kinestat/solver/null_space.hpp"
 
 #include <algorithm>
 #include <random>

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "core/types.hpp"
+#include "kinestat/core/types.hpp"
 
 namespace kinestat::vjm {
 

@@ -1,4 +1,4 @@
-#include "vjm/chain.hpp"
+#include "kinestat/vjm/chain.hpp"
 
 #include <fmt/format.h>
 

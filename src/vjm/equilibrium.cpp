@@ -1,4 +1,4 @@
-#include "vjm/equilibrium.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "vjm/bordered_system.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::vjm {
 

@@ -1,9 +1,9 @@
-#include "vjm/link_spring.hpp"
+#include "kinestat/vjm/link_spring.hpp"
 
 #include <fmt/format.h>
 
-#include "core/frame.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::vjm {
 

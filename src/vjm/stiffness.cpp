@@ -1,11 +1,11 @@
-#include "vjm/stiffness.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 #include "vjm/bordered_system.hpp"
 
 namespace kinestat::vjm {

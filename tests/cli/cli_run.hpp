@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/app.hpp"
+#include "kinestat/cli/app.hpp"
 
 namespace kinestat::cli {
 

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/app.hpp"
+#include "kinestat/cli/app.hpp"
 #include "cli_run.hpp"
 
 namespace kinestat::cli {

@@ -5,9 +5,9 @@
 #include <numbers>
 #include <sstream>
 
-#include "cli/app.hpp"
+#include "kinestat/cli/app.hpp"
 #include "cli_run.hpp"
-#include "core/types.hpp"
+#include "kinestat/core/types.hpp"
 
 namespace kinestat::cli {
 namespace {

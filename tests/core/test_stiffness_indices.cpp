@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "core/frame.hpp"
-#include "core/stiffness_indices.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/core/stiffness_indices.hpp"
 
 namespace kinestat {
 namespace {

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/frame.hpp"
-#include "elements/beam_element.hpp"
-#include "elements/joint_element.hpp"
-#include "elements/section.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/elements/joint_element.hpp"
+#include "kinestat/elements/section.hpp"
 
 namespace kinestat {
 namespace {

@@ -2,7 +2,7 @@
 // scaled tube is the tube of scaled diameter and wall (the identification of docs/vjm.md relies on it).
 #include <gtest/gtest.h>
 
-#include "elements/section.hpp"
+#include "kinestat/elements/section.hpp"
 
 namespace kinestat {
 namespace {

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <iostream>
 
-#include "elements/beam_element.hpp"
-#include "elements/section.hpp"
-#include "fea/link_stiffness.hpp"
-#include "fea/mesh_convergence.hpp"
-#include "fea/tet_mesh.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/elements/section.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/mesh_convergence.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
 
 namespace kinestat::fea {
 namespace {

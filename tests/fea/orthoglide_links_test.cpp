@@ -3,8 +3,8 @@
 
 #include <optional>
 
-#include "fea/link_stiffness.hpp"
-#include "fea/surface_mesher.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
 
 namespace kinestat::fea {
 namespace {

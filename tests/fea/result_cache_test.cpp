@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "fea/result_cache.hpp"
+#include "kinestat/fea/result_cache.hpp"
 
 namespace kinestat::fea {
 namespace {

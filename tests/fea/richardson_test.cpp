@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "fea/mesh_convergence.hpp"
+#include "kinestat/fea/mesh_convergence.hpp"
 
 namespace kinestat::fea {
 namespace {

@@ -5,10 +5,10 @@
 #include <iostream>
 #include <fstream>
 
-#include "elements/beam_element.hpp"
-#include "elements/section.hpp"
-#include "fea/link_stiffness.hpp"
-#include "fea/surface_mesher.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/elements/section.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
 
 namespace kinestat::fea {
 namespace {

@@ -1,10 +1,10 @@
 // Element-level checks of the 4- and 10-node tetrahedra against elasticity theory.
 #include <gtest/gtest.h>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 #include "fea/elasticity_assembly.hpp"
-#include "fea/tet_element.hpp"
-#include "fea/tet_mesh.hpp"
+#include "kinestat/fea/tet_element.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
 
 namespace kinestat::fea {
 namespace {

@@ -12,9 +12,9 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
-#include "fea/link_stiffness.hpp"
-#include "fea/tet_mesh.hpp"
-#include "io/fea_vtk.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
+#include "kinestat/io/fea_vtk.hpp"
 
 namespace kinestat::io {
 namespace {

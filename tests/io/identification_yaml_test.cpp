@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "io/identification_yaml.hpp"
+#include "kinestat/io/identification_yaml.hpp"
 
 namespace kinestat::io {
 namespace {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "io/structure_yaml.hpp"
-#include "msa/static_analysis.hpp"
+#include "kinestat/io/structure_yaml.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::io {
 namespace {

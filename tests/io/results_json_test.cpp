@@ -1,6 +1,6 @@
 // solution_to_json carries every number of a hand-made Solution to the documented place, encodes
 // non-finite numbers as null with a note, and write_json round-trips through a file.
-#include "io/results_json.hpp"
+#include "kinestat/io/results_json.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/structure_yaml.hpp"
+#include "kinestat/io/structure_yaml.hpp"
 #include "sample_results.hpp"
 
 namespace kinestat::io {

@@ -6,9 +6,9 @@
 #include <limits>
 #include <string>
 
-#include "elements/section.hpp"
-#include "msa/static_analysis.hpp"
-#include "msa/structure.hpp"
+#include "kinestat/elements/section.hpp"
+#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/msa/structure.hpp"
 
 namespace kinestat::io_test {
 

@@ -1,6 +1,6 @@
 // The YAML structure reader: every bad-input path gives one message naming the file, the line
 // and the item; good input arrives in SI with the documented conversions.
-#include "io/structure_yaml.hpp"
+#include "kinestat/io/structure_yaml.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 
 #include <numbers>
 
-#include "io/structure_yaml.hpp"
-#include "mechanisms/five_bar.hpp"
-#include "msa/static_analysis.hpp"
+#include "kinestat/io/structure_yaml.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat {
 namespace {

@@ -9,9 +9,9 @@
 #include <fstream>
 #include <numbers>
 
-#include "fea/result_cache.hpp"
-#include "io/vjm_yaml.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/fea/result_cache.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::io {
 namespace {

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "fea/link_stiffness.hpp"
-#include "fea/result_cache.hpp"
-#include "io/vjm_yaml.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/result_cache.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::io {
 namespace {

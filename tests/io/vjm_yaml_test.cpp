@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "io/vjm_yaml.hpp"
-#include "mechanisms/orthoglide_identification.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/mechanisms/orthoglide_identification.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::io {
 namespace {

@@ -1,6 +1,6 @@
 // write_vtk: files read back with VTK's own XML reader hold the nodes, elements and results of the
 // Solution; the .pvd collection lists them; a singular solution shows its free motions.
-#include "io/vtk_output.hpp"
+#include "kinestat/io/vtk_output.hpp"
 
 #include <gtest/gtest.h>
 #include <vtkCell.h>
@@ -17,7 +17,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/structure_yaml.hpp"
+#include "kinestat/io/structure_yaml.hpp"
 #include "sample_results.hpp"
 
 namespace kinestat::io {

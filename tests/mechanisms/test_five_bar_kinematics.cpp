@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "mechanisms/five_bar.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

@@ -17,8 +17,8 @@
 #include <limits>
 #include <numbers>
 
-#include "mechanisms/five_bar.hpp"
-#include "msa/static_analysis.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

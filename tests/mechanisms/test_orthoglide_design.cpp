@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mechanisms/orthoglide_design.hpp"
+#include "kinestat/mechanisms/orthoglide_design.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

@@ -5,9 +5,9 @@
 // frame's released rotations. So the 6x6 Cartesian stiffness matrices must agree to round-off.
 #include <gtest/gtest.h>
 
-#include "mechanisms/orthoglide_frame.hpp"
-#include "msa/static_analysis.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/mechanisms/orthoglide_frame.hpp"
+#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

@@ -19,7 +19,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "mechanisms/orthoglide_identification.hpp"
+#include "kinestat/mechanisms/orthoglide_identification.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

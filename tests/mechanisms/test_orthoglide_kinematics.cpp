@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mechanisms/orthoglide_kinematics.hpp"
+#include "kinestat/mechanisms/orthoglide_kinematics.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

@@ -9,9 +9,9 @@
 #include <array>
 #include <utility>
 
-#include "mechanisms/orthoglide_kinematics.hpp"
-#include "mechanisms/orthoglide_stiffness.hpp"
-#include "vjm/link_spring.hpp"
+#include "kinestat/mechanisms/orthoglide_kinematics.hpp"
+#include "kinestat/mechanisms/orthoglide_stiffness.hpp"
+#include "kinestat/vjm/link_spring.hpp"
 
 namespace kinestat::mechanisms {
 namespace {

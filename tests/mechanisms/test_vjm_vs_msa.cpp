@@ -7,11 +7,11 @@
 #include <numbers>
 #include <utility>
 
-#include "core/frame.hpp"
-#include "mechanisms/five_bar_vjm.hpp"
-#include "msa/static_analysis.hpp"
-#include "vjm/link_spring.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/core/frame.hpp"
+#include "kinestat/mechanisms/five_bar_vjm.hpp"
+#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/link_spring.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat {
 namespace {

@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
-#include "msa/static_analysis.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::msa {
 namespace {

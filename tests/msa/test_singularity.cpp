@@ -2,8 +2,8 @@
 // into garbage.
 #include <gtest/gtest.h>
 
-#include "msa/singularity.hpp"
-#include "msa/static_analysis.hpp"
+#include "kinestat/msa/singularity.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::msa {
 namespace {

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "solver/null_space.hpp"
-#include "solver/sparse_cholesky.hpp"
+#include "kinestat/solver/null_space.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::solver {
 namespace {

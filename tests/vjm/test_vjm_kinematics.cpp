@@ -2,7 +2,7 @@
 // central finite differences of the forward kinematics, and geometric facts of the joints.
 #include <gtest/gtest.h>
 
-#include "vjm/chain.hpp"
+#include "kinestat/vjm/chain.hpp"
 #include "vjm_test_chains.hpp"
 
 namespace kinestat::vjm {

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "vjm/equilibrium.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 #include "vjm_test_chains.hpp"
 
 namespace kinestat::vjm {

@@ -2,9 +2,9 @@
 // each against beam theory, a rigid-body transfer, the literal eq. (9) or a penalty limit.
 #include <gtest/gtest.h>
 
-#include "core/frame.hpp"
+#include "kinestat/core/frame.hpp"
 #include "vjm/bordered_system.hpp"
-#include "vjm/stiffness.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 #include "vjm_test_chains.hpp"
 
 namespace kinestat::vjm {

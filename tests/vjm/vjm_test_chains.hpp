@@ -1,9 +1,9 @@
 // Chains shared by the vjm tests. SI units.
 #pragma once
 
-#include "elements/section.hpp"
-#include "vjm/chain.hpp"
-#include "vjm/link_spring.hpp"
+#include "kinestat/elements/section.hpp"
+#include "kinestat/vjm/chain.hpp"
+#include "kinestat/vjm/link_spring.hpp"
 
 namespace kinestat::vjm::test_chains {
 

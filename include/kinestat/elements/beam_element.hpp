@@ -1,0 +1,37 @@
+// Two-node 3D beam element (Przemieniecki 1968; Gonçalves et al. 2010, eq. (2)-(4)).
+// Local dofs per node: ux, uy, uz, rx, ry, rz; node 1 then node 2.
+//
+// Note on eq. (2)-(3) of the 5R paper: written literally, [kb -kb; -kb kb] with the 6x6 kb of
+// eq. (3) is not an element matrix (its off-diagonal bending blocks would have the wrong signs and
+// the 2EI/L carry-over terms would be missing, and it is not invariant under rigid motion). Here
+// the full 12x12 matrix is derived from beam theory and tested for rigid-body invariance,
+// symmetry and the cantilever formulas.
+#pragma once
+
+#include <array>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+#include "kinestat/elements/material.hpp"
+#include "kinestat/elements/section.hpp"
+
+namespace kinestat {
+
+enum class BeamTheory { kEulerBernoulli, kTimoshenko };
+
+// End releases: released[i] = true frees local dof i (0..11) from the element, e.g. a pin at
+// node 2 about local z is released[11]. Forces at released dofs are zero.
+using BeamReleases = std::array<bool, 12>;
+
+// 12x12 local stiffness. Timoshenko uses the section's shear areas (a zero shear area means that
+// plane has no shear deformation).
+Mat12 beam_local_stiffness(const Material& m, const Section& s, double length, BeamTheory theory);
+
+// Static condensation of released dofs: K* = K_aa - K_ar K_rr^-1 K_ra, zero rows/cols at r.
+// Fails when the released dofs leave the element itself free (e.g. torsion released at both ends).
+StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released);
+
+// T such that u_local = T u_global, from the local axes (columns x, y, z in global coordinates).
+Mat12 beam_transformation(const Mat3& axes);
+
+}  // namespace kinestat

@@ -1,0 +1,34 @@
+// The user-facing inputs of a link stiffness analysis written as text, shared by the
+// `link-stiffness` command (--material, --clamp, --reference, --reference-point) and the
+// `fea:` spring of VJM model files (docs/fea.md, docs/vjm.md), plus what both need to find a
+// cached result: one syntax and one cache key for the same link wherever it is named.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/elements/material.hpp"
+#include "kinestat/fea/region.hpp"
+#include "kinestat/fea/surface_mesher.hpp"
+
+namespace kinestat::fea {
+
+// `count` comma-separated numbers; kInvalidInput "WHAT: ..." otherwise.
+StatusOr<std::vector<double>> parse_numbers(const std::string& text, size_t count, const std::string& what);
+
+// "x=V" (plane normal to x at V; likewise y, z), "plane:PX,PY,PZ,NX,NY,NZ", "box:X0,Y0,Z0,X1,Y1,Z1";
+// lengths in the mesh file's unit, converted to m with `scale`. Messages start with `what`.
+StatusOr<Region> parse_region(const std::string& text, double scale, const std::string& what);
+
+// "steel" (E 210 GPa, nu 0.3), "aluminium" (70 GPa, 0.33) or "E=PA,nu=V". Messages start with `what`.
+StatusOr<Material> parse_material(const std::string& text, const std::string& what);
+
+// Default tetrahedron size (m): 1/20 of the surface's largest extent.
+double default_mesh_size(const SurfaceInfo& surface, double unit_scale);
+
+// What identifies the tetrahedral mesh of a surface file for the result cache: the file's bytes and
+// the meshing options that change the mesh. kInvalidInput naming the path if it cannot be read.
+StatusOr<std::string> surface_mesh_identity(const std::string& path, const MeshingOptions& meshing);
+
+}  // namespace kinestat::fea

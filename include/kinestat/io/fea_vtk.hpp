@@ -1,0 +1,26 @@
+// VTK XML unstructured grids (.vtu, readable in ParaView) of a link analysed by FEA: the mesh in
+// its undeformed position (m) with, per unit load case, the node displacements (point vector
+// "displacement", m per N or per N m: use ParaView's "Warp By Vector" to see the deformed link)
+// and the element von Mises stress at the centroid (cell scalar "von_mises", Pa per N or N m).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/fea/link_stiffness.hpp"
+#include "kinestat/fea/tet_mesh.hpp"
+
+namespace kinestat::io {
+
+// Names of the six unit load cases, in compliance-column order: "Fx", "Fy", "Fz", "Mx", "My", "Mz".
+const char* link_load_case_name(int k);
+
+// One file for load case k (0..5). Needs the fields (LinkStiffnessOptions::keep_fields).
+Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const fea::LinkStiffness& result, int k);
+
+// The six files DIR/PREFIX_Fx.vtu ... PREFIX_Mz.vtu (DIR is created); their paths in `written`.
+Status write_link_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,
+                            const fea::LinkStiffness& result, std::vector<std::string>* written);
+
+}  // namespace kinestat::io

@@ -1,0 +1,35 @@
+// MSA results as JSON (schema "kinestat-msa-results", documented field by field with units in
+// docs/results-json.md). Non-finite numbers (an overflowed determinant, the condition number of a
+// singular matrix) are written as null and listed under "non_finite_values".
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/msa/structure.hpp"
+
+namespace kinestat::io {
+
+// Bump when a field changes meaning or disappears (adding fields keeps the version).
+inline constexpr int kResultsSchemaVersion = 1;
+
+// Every result of an MSA solve: model summary, solver report, load cases, Cartesian stiffness,
+// indices and singularity diagnosis. Ids refer to the structure's nodes, beams and joints.
+nlohmann::json solution_to_json(const msa::Structure& s, const msa::Solution& sol);
+
+// All fields of StiffnessIndices (eigenvectors as a list, eigenvectors[i] belonging to eigenvalues[i]).
+// May hold non-finite numbers: pass the finished document through encode_non_finite.
+nlohmann::json stiffness_indices_to_json(const StiffnessIndices& ind);
+
+// Replaces every NaN/inf number in `j` by null and appends {"path": JSON pointer, "value": "inf",
+// "-inf" or "nan"} to j["non_finite_values"] (created, possibly empty, when `j` is an object):
+// JSON has no such numbers and a bare null would not say which one it was.
+void encode_non_finite(nlohmann::json& j);
+
+// Writes `j` indented; kInvalidInput naming the path when it cannot be written.
+Status write_json(const std::string& path, const nlohmann::json& j);
+
+}  // namespace kinestat::io

@@ -1,0 +1,60 @@
+// Posture kernels: the stiffness of a mechanism's tool point at many postures (workspace maps,
+// design sweeps). Everything that does not change between postures (element pattern, dof map,
+// factorization workspace, buffers) is built once when the kernel is made; evaluate() costs the
+// inverse kinematics, the assembly of the changed values, one small factorization and the solves
+// for the 6x6, and the indices of the 6x6. A kernel is not thread-safe: clone() one per thread.
+//
+// Points are in the mechanism's kinematics frame, SI (m). The five-bar is planar: z is ignored.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/core/types.hpp"
+
+namespace kinestat::mechanisms {
+
+enum class PostureStatus : std::uint8_t {
+  kOk = 0,           // stiffness, compliance and indices computed
+  kUnreachable = 1,  // outside the workspace of the chosen working/assembly mode: no values
+  kSingular = 2,     // reachable, but the stiffness is not defined there (a free motion): no values
+  kFailed = 3,       // reachable, no answer (e.g. no loaded equilibrium: the load buckles the robot)
+};
+const char* to_string(PostureStatus s);  // "ok", "unreachable", "singular", "failed"
+
+struct PostureResult {
+  PostureStatus status = PostureStatus::kUnreachable;
+  Mat6 stiffness = Mat6::Zero();   // tool point, global axes: N/m, N/rad, N m/m, N m/rad
+  Mat6 compliance = Mat6::Zero();  // its inverse: m/N, m/(N m), rad/N, rad/(N m)
+  CartesianIndices indices;        // of `stiffness` when kOk
+  // Distance to a singularity, dimensionless in [0, 1], 0 at a singularity; each kernel documents
+  // its measure (the five-bar: the smaller of its parallel and serial measures). Set whenever the
+  // point is reachable, also when singular.
+  double singularity_measure = 0.0;
+  Vec6 deflection = Vec6::Zero();  // tool-point displacement under the kernel's load (m, rad); 0 without
+};
+
+class PostureKernel {
+ public:
+  virtual ~PostureKernel() = default;
+  // The posture reached at `point` (m) and its stiffness.
+  virtual PostureResult evaluate(const Vec3& point) = 0;
+  // An independent copy for another thread (shares only immutable model data).
+  virtual std::unique_ptr<PostureKernel> clone() const = 0;
+  // "five-bar ++ up (MSA)", "Orthoglide 3-PUU (VJM, loaded)", ...: for titles and reports.
+  virtual std::string description() const = 0;
+};
+
+// Evaluates `kernel` at every point, on `threads` threads (0: all cores; TBB), one clone of the
+// kernel per thread; results[i] belongs to points[i]. `progress(done, total)` (may be empty) is
+// called from one thread at a time, about every 0.1 s, and once at the end.
+void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& points,
+                       std::vector<PostureResult>& results, int threads = 0,
+                       const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
+}  // namespace kinestat::mechanisms

@@ -1,0 +1,115 @@
+// Linear static analysis of an msa::Structure: assembly, CHOLMOD factorization, all load cases with
+// one factorization, reactions, element end forces, equilibrium check, Cartesian stiffness of the
+// report node, stiffness indices, and the diagnosis of singular structures.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/msa/structure.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
+
+namespace kinestat::msa {
+
+struct SolveOptions {
+  solver::SparseCholeskyOptions cholesky;
+  // For a singular structure, solve K + eps D instead (D = diag K, eps = regularization) and mark
+  // the result as regularized. Off by default: a singular structure gets a diagnosis, no numbers.
+  bool regularize = false;
+  // A motion whose stiffness ratio u'Ku / u'Du (D = diag K) is below this is free. A mechanism gives
+  // ~1e-16 (round-off); the five-bar's softest real mode next to its 2e11 joint springs ~1e-11.
+  // After a factorization that passes the pivot check, the softest modes are found by inverse
+  // iteration with the same factor, because a null pivot spoiled by round-off can look regular.
+  double mechanism_ratio = 1e-13;
+  double regularization = 1e-10;
+  // Indices of the reduced global matrix need a dense eigen-decomposition: skipped above this size.
+  int max_dofs_for_global_indices = 2000;
+};
+
+// One free motion (null-space mode) of a singular structure.
+struct FreeMotion {
+  std::vector<Vec6> node_motion;  // per node (ux uy uz rx ry rz); the largest translation is 1 (or the largest rotation if none)
+  double rayleigh_ratio = 0.0;    // u'Ku / u'Du: ~1e-16 for a true mechanism
+  std::string description;        // in words: which nodes move and how
+};
+
+struct SingularityDiagnosis {
+  bool singular = false;
+  struct WeakDof { int node; int dof; };  // dof in the node's support frame / global
+  std::vector<WeakDof> weak_dofs;          // where the pivot check failed
+  std::vector<FreeMotion> modes;
+  std::string message;                     // the whole diagnosis in words
+};
+
+struct LoadCaseResult {
+  std::string name;
+  std::vector<Vec6> displacement;    // per node, global: ux uy uz (m), rx ry rz (rad)
+  std::vector<Vec6> reaction;        // per node, global: forces (N) and moments (N m); zero off supports
+  std::vector<Vec12> beam_end_forces;  // per beam, local axes: N1 Vy1 Vz1 T1 My1 Mz1 N2 ... (force on the beam)
+  std::vector<Vec6> joint_forces;    // per joint, joint frame: spring force/moment acting on node2
+  Vec6 resultant = Vec6::Zero();     // sum of loads and reactions (force, moment about origin): ~0
+  double equilibrium_error = 0.0;    // |resultant| / (|loads| + |reactions|), force and moment parts
+  double free_dof_residual = 0.0;    // ||C'(K u - f)|| / ||C' f||
+  double max_translation = 0.0;
+  int max_translation_node = -1;
+};
+
+struct CartesianStiffness {
+  int node = -1;
+  Mat6 compliance = Mat6::Zero();  // m/N, m/(N m), rad/N, rad/(N m); global axes
+  Mat6 stiffness = Mat6::Zero();   // inverse of compliance when it is regular
+  bool stiffness_defined = false;
+  std::string note;                // why stiffness is undefined (a supported dof, a free motion)
+  StiffnessIndices indices;        // of `stiffness` when defined
+};
+
+struct Solution {
+  Status status;                   // kSingular: see `singularity`; cases are empty unless regularized
+  bool regularized = false;
+  int num_dofs = 0;                // 6 per node
+  int num_free_dofs = 0;           // after supports and constraints
+  solver::FactorizationReport factorization;
+  double softest_mode_ratio = 0.0;  // lowest u'Ku/u'Du found by inverse iteration
+  double mechanism_ratio = 0.0;     // the threshold it was judged by (SolveOptions::mechanism_ratio)
+  std::string backend;
+  SingularityDiagnosis singularity;
+  std::vector<LoadCaseResult> cases;
+  std::optional<CartesianStiffness> cartesian;       // of the report node
+  std::optional<StiffnessIndices> global_indices;    // of the reduced global matrix
+  double assembly_seconds = 0.0;
+  double solve_seconds = 0.0;
+};
+
+// Mutable workspace reused across solves of structures with the same topology (a posture sweep):
+// it keeps the sparse Cholesky object, so the symbolic analysis is done once.
+class Workspace {
+ public:
+  explicit Workspace(const solver::SparseCholeskyOptions& options = {});
+  solver::SparseCholesky& cholesky() { return *cholesky_; }
+  int num_symbolic_analyses() const { return cholesky_->num_symbolic_analyses(); }
+
+ private:
+  std::unique_ptr<solver::SparseCholesky> cholesky_;
+};
+
+// Solves every load case. Validates the structure first (kInvalidInput with the message).
+Solution solve(const Structure& s, Workspace& ws, const SolveOptions& options = {});
+Solution solve(const Structure& s, const SolveOptions& options = {});
+
+// Compliance/stiffness of one node (static condensation onto its 6 dofs) without load cases.
+StatusOr<CartesianStiffness> cartesian_stiffness(const Structure& s, Workspace& ws, int node,
+                                                 const SolveOptions& options = {});
+
+// A full human-readable report (as Ceres' Summary::FullReport): model size, solver, per load case
+// max displacement and equilibrium, Cartesian stiffness with units, indices, singularity diagnosis.
+std::string full_report(const Structure& s, const Solution& sol);
+
+// The stiffness indices as printed lines (used in reports of every method).
+std::string indices_report(const StiffnessIndices& ix);
+// A 6x6 matrix (dofs x y z rx ry rz) under a title line "  TITLE [UNITS]", one labelled row per dof.
+std::string matrix6_report(const Mat6& M, const std::string& title, const char* units);
+
+}  // namespace kinestat::msa

@@ -1,0 +1,133 @@
+// The MSA model: an immutable description of a frame (nodes, beams, joints, rigid links, supports,
+// load cases), built once and solved many times (Pinocchio's Model/Data split: this is the Model,
+// msa::Solution is the Data). Units are SI (m, N, rad, Pa); io/ converts files declared in mm.
+#pragma once
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/elements/material.hpp"
+#include "kinestat/elements/section.hpp"
+
+namespace kinestat::msa {
+
+using DofMask = std::array<bool, 6>;  // per node dof: ux uy uz rx ry rz
+inline constexpr DofMask kAllDofs = {true, true, true, true, true, true};
+inline constexpr double kRigid = std::numeric_limits<double>::infinity();
+
+struct Node {
+  std::string id;
+  Vec3 position = Vec3::Zero();
+};
+
+struct Beam {
+  std::string id;
+  int node1 = -1, node2 = -1;  // indices into Structure::nodes()
+  int material = -1, section = -1;
+  Vec3 orientation = Vec3::Zero();  // a vector in the local x-y plane; zero = default_orientation()
+  BeamTheory theory = BeamTheory::kEulerBernoulli;
+  BeamReleases releases{};          // local dofs freed at the ends (pins, torsion releases)
+};
+
+// 6-dof spring between two coincident nodes; stiffness in `frame` (columns: local axes in global).
+// A component may be 0 (released) or kRigid (exact constraint).
+struct Joint {
+  std::string id;
+  int node1 = -1, node2 = -1;
+  Mat3 frame = Mat3::Identity();
+  Vec6 stiffness = Vec6::Zero();
+};
+
+// The `slave` node follows `master` as a rigid body in the dofs of `mask` (expressed in `frame`);
+// the other dofs stay independent. Full mask = rigid offset / rigid link.
+struct RigidLink {
+  std::string id;
+  int master = -1, slave = -1;
+  DofMask mask = kAllDofs;
+  Mat3 frame = Mat3::Identity();
+};
+
+// Fixed dofs of a node, in `frame` (identity = global axes).
+struct Support {
+  int node = -1;
+  DofMask fixed = kAllDofs;
+  Mat3 frame = Mat3::Identity();
+};
+
+struct NodalLoad {
+  int node = -1;
+  Vec6 wrench = Vec6::Zero();  // Fx Fy Fz (N), Mx My Mz (N m), global axes
+};
+
+// A prescribed displacement of a supported dof (in the support's frame): m or rad.
+struct PrescribedDisplacement {
+  int node = -1;
+  int dof = 0;
+  double value = 0.0;
+};
+
+struct LoadCase {
+  std::string name;
+  std::vector<NodalLoad> loads;
+  std::vector<PrescribedDisplacement> prescribed;
+};
+
+class Structure {
+ public:
+  // Building. Each add_* returns the new item's index. Names must be unique per kind.
+  int add_node(std::string id, const Vec3& position);
+  int add_material(Material m);
+  int add_section(Section s);
+  int add_beam(Beam b);
+  int add_joint(Joint j);
+  int add_rigid_link(RigidLink r);
+  void add_support(Support s);
+  int add_load_case(LoadCase lc);
+  void set_report_node(int node) { report_node_ = node; }
+  void set_title(std::string t) { title_ = std::move(t); }
+
+  // Checks what the assembly relies on: valid indices, unique ids, positive lengths and section
+  // properties, coincident joint nodes, loads on existing nodes, no node both supported and
+  // constrained. Messages name the item and say what to fix.
+  Status validate() const;
+
+  const std::string& title() const { return title_; }
+  const std::vector<Node>& nodes() const { return nodes_; }
+  const std::vector<Material>& materials() const { return materials_; }
+  const std::vector<Section>& sections() const { return sections_; }
+  const std::vector<Beam>& beams() const { return beams_; }
+  const std::vector<Joint>& joints() const { return joints_; }
+  const std::vector<RigidLink>& rigid_links() const { return rigid_links_; }
+  const std::vector<Support>& supports() const { return supports_; }
+  const std::vector<LoadCase>& load_cases() const { return load_cases_; }
+  std::optional<int> report_node() const { return report_node_; }
+
+  std::optional<int> find_node(const std::string& id) const;
+  std::optional<int> find_material(const std::string& id) const;
+  std::optional<int> find_section(const std::string& id) const;
+  int num_dofs() const { return kDofsPerNode * static_cast<int>(nodes_.size()); }
+  // Largest distance between nodes (a length scale for tolerances); 1 if fewer than two nodes.
+  double length_scale() const;
+  // Local axes of a beam (x along it), from its orientation vector or the default.
+  Mat3 beam_axes(const Beam& b) const;
+
+ private:
+  std::string title_;
+  std::vector<Node> nodes_;
+  std::vector<Material> materials_;
+  std::vector<Section> sections_;
+  std::vector<Beam> beams_;
+  std::vector<Joint> joints_;
+  std::vector<RigidLink> rigid_links_;
+  std::vector<Support> supports_;
+  std::vector<LoadCase> load_cases_;
+  std::optional<int> report_node_;
+};
+
+}  // namespace kinestat::msa

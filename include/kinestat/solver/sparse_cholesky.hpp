@@ -1,0 +1,72 @@
+// The one sparse Cholesky interface of kinestat (as Ceres hides CHOLMOD behind SparseCholesky).
+// Methods (MSA, FEA) see only this header: a distributed backend (PETSc, MUMPS over MPI) is a new
+// implementation of this class, not a change to the methods.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+
+namespace kinestat::solver {
+
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+
+enum class Ordering { kAuto, kAmd, kMetis, kNatural };
+
+struct SparseCholeskyOptions {
+  Ordering ordering = Ordering::kAuto;
+  // A column whose Cholesky pivot d_j falls below this fraction of its diagonal entry A_jj has lost
+  // all but -log10(ratio) of the ~16 digits of double precision to cancellation: it is (numerically)
+  // a linear combination of earlier columns, i.e. a free motion. 1e-12 leaves ~4 digits; a
+  // mechanism's null mode gives ~1e-16, and stiff-spring models (joint springs 1e9 times stiffer
+  // than the beams) still pass with ~1e-10.
+  double singular_pivot_ratio = 1e-12;
+};
+
+// What a factorization did and found; printed by the MSA/FEA summaries.
+struct FactorizationReport {
+  int n = 0;
+  long nnz_matrix = 0;          // stored entries of the lower triangle
+  long nnz_factor = 0;          // entries of L
+  double flops = 0.0;           // floating-point operations of the numeric factorization
+  bool reused_symbolic = false; // the sparsity pattern matched the previous call: no new analysis
+  bool supernodal = false;
+  std::string ordering;         // "AMD", "METIS", "natural", ...
+  double analyze_seconds = 0.0;
+  double factor_seconds = 0.0;
+  // Pivot check, in the user's (unpermuted) column numbering.
+  int failed_column = -1;       // first column whose pivot was not positive (factorization stopped)
+  std::vector<int> weak_columns;  // columns with pivot ratio below the tolerance (free motions)
+  double min_pivot_ratio = 0.0; // min over columns of d_j / A_jj
+  int min_pivot_column = -1;
+  bool singular() const { return failed_column >= 0 || !weak_columns.empty(); }
+};
+
+class SparseCholesky {
+ public:
+  virtual ~SparseCholesky() = default;
+
+  // Factorizes the symmetric matrix A (both triangles stored or only the lower one; the upper
+  // triangle is ignored). The symbolic analysis is redone only when A's sparsity pattern differs
+  // from the last one analysed. Returns kSingular (with the report filled) when a pivot fails or
+  // falls below the tolerance; the factor is then unusable for Solve.
+  virtual Status Factorize(const SparseMatrix& A, FactorizationReport* report) = 0;
+
+  // Solves A X = B for all columns of B with the last successful factorization.
+  virtual Status Solve(const MatX& B, MatX* X) const = 0;
+
+  // How many symbolic analyses this object has done (a posture sweep should do one).
+  virtual int num_symbolic_analyses() const = 0;
+
+  // Name of the backend and of the BLAS it runs on, for reports and benchmarks.
+  virtual std::string backend_description() const = 0;
+
+  static std::unique_ptr<SparseCholesky> Create(const SparseCholeskyOptions& options = {});
+};
+
+}  // namespace kinestat::solver

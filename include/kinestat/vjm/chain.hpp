@@ -1,0 +1,138 @@
+// The serial chain of the virtual joint method (Pashkevich, Klimchik, Chablat, Wenger 2009, eq. (1)):
+// base transform, actuated joint with its actuator spring, rigid links, 6-dof virtual springs,
+// passive joints (R, P, U, S, coupled) and tool transform, as one product of elementary factors.
+// Its kinematics: tool pose (eq. 4), the Jacobians J_q, J_theta (eq. 5) and the derivatives of
+// J^T F that the loaded mode needs (the Hessians of eq. 20).
+//
+// Conventions (shared by every vjm function, and the same as msa::CartesianStiffness):
+// - SI units: m, rad, N, N m. Prismatic coordinates in m, revolute ones in rad.
+// - A tool displacement (twist) is (dx dy dz, rx ry rz): the translation of the tool point and a
+//   small rotation vector, both in global (base) axes. A wrench is (Fx Fy Fz, Mx My Mz): force and
+//   moment about the tool point, global axes. Jacobian columns are such twists.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+
+namespace kinestat::vjm {
+
+using Transform = Eigen::Isometry3d;
+
+enum class JointType { kRevolute, kPrismatic };
+
+// Passive joint coordinate q_k, or virtual (spring) coordinate theta_k.
+enum class VariableKind { kPassive, kVirtual };
+
+struct VariableRef {
+  VariableKind kind = VariableKind::kPassive;
+  int index = 0;
+  double coefficient = 1.0;  // the factor moves by coefficient * variable (the parallelogram's -q)
+};
+
+// One factor of the product (1): a constant rigid transform, or an elementary rotation about /
+// translation along a unit axis of the current frame by `offset + coefficient * variable`.
+struct Factor {
+  std::string label;  // names the factor in messages
+  bool is_motion = false;
+  Transform transform = Transform::Identity();  // the constant factor (is_motion == false)
+  JointType type = JointType::kRevolute;
+  Vec3 axis = Vec3::UnitZ();            // unit, in the current frame
+  double offset = 0.0;                  // constant part, e.g. the actuated coordinate q_a of V_a(q_a + theta)
+  std::optional<VariableRef> variable;  // none: a locked joint
+};
+
+// A block of K_theta (eq. 6): the stiffness of virtual coordinates first .. first+size-1.
+struct Spring {
+  std::string label;
+  int first = 0;
+  MatX stiffness;  // size x size; N/m, N/rad, N m/m, N m/rad as the coordinates require
+};
+
+class Chain {
+ public:
+  explicit Chain(std::string name = "chain") : name_(std::move(name)) {}
+
+  // A rigid link: base, foot, leg or tool transform of eq. (1).
+  void add_transform(const Transform& T, std::string label);
+  void add_translation(const Vec3& d, std::string label);
+  void add_rotation(const Vec3& axis, double angle, std::string label);
+
+  // Actuated joint V_a(q_a + theta_0): value q_a (m or rad) and actuator stiffness k (N/m or
+  // N m/rad). k = +infinity locks the joint (no virtual coordinate). Returns the theta index or -1.
+  int add_actuator(JointType type, const Vec3& axis, double value, double stiffness, std::string label);
+
+  // 6-dof virtual spring V_s(theta_1..theta_6): translations along x, y, z then rotations about
+  // x, y, z of the current frame; K is its 6x6 stiffness in that frame (dofs ux uy uz rx ry rz),
+  // symmetric positive definite. Returns the first theta index.
+  int add_spring(const Mat6& K, std::string label);
+
+  // Passive joint with nominal coordinate q0 (from the inverse kinematics). Returns its q index.
+  int add_passive(JointType type, const Vec3& axis, double nominal, std::string label);
+  // A factor that repeats the motion of passive joint `index` scaled by `coefficient`: the
+  // parallelogram of eq. (22) is R_y(q) T_x(L) R_y(-q), i.e. coefficient -1.
+  void add_coupled(JointType type, const Vec3& axis, int index, double coefficient, std::string label);
+  // U joint: rotation about axis1, then about axis2 of the rotated frame. Returns the first q index.
+  int add_universal(const Vec3& axis1, const Vec3& axis2, double q1, double q2, std::string label);
+  // S joint: rotations about x, y, z of the current frame (singular when the middle angle is
+  // +-pi/2). Returns the first q index.
+  int add_spherical(const Vec3& angles, std::string label);
+
+  const std::string& name() const { return name_; }
+  const std::vector<Factor>& factors() const { return factors_; }
+  const std::vector<Spring>& springs() const { return springs_; }
+  int num_passive() const { return static_cast<int>(nominal_q_.size()); }
+  int num_virtual() const { return num_virtual_; }
+  const VecX& nominal_passive() const { return nominal_q_; }
+  void set_nominal_passive(const VecX& q) { nominal_q_ = q; }
+
+  // K_theta = diag(K_theta,1 ... ), m x m (eq. 6).
+  MatX spring_stiffness() const;
+  // Sum of the rigid translation lengths (m): the scale that makes m and rad comparable.
+  double length_scale() const;
+  // Springs finite, symmetric and positive definite; axes non-zero; coordinates sized right.
+  // Messages name the chain and the factor.
+  Status validate() const;
+
+  // Tool pose T(q, theta) of eq. (1).
+  Transform forward(const VecX& q, const VecX& theta) const;
+  Transform nominal_pose() const { return forward(nominal_q_, VecX::Zero(num_virtual_)); }
+
+ private:
+  int add_motion(JointType type, const Vec3& axis, double offset, std::optional<VariableRef> v, std::string label);
+
+  std::string name_;
+  std::vector<Factor> factors_;
+  std::vector<Spring> springs_;
+  VecX nominal_q_ = VecX(0);
+  int num_virtual_ = 0;
+};
+
+// Tool pose and the Jacobians of eq. (5) at (q, theta): 6 x n and 6 x m, columns are twists.
+struct ChainJacobians {
+  Transform pose = Transform::Identity();
+  MatX Jq;
+  MatX Jtheta;
+};
+ChainJacobians jacobians(const Chain& chain, const VecX& q, const VecX& theta);
+
+// H = d(J^T F)/d(q, theta) at fixed wrench F, the matrices of eq. (19)-(20): row i is the equation
+// of coordinate i, column j the coordinate differentiated, e.g. Hthetaq(i, j) = d(J_theta,i . F)/dq_j.
+// For a pure force this is the Hessian of F^T p(q, theta) (symmetric); with a moment it is the
+// linearization of J^T F with J's rotation rows being angular velocities, which is not a Hessian and
+// not symmetric (a constant moment does no path-independent work), see docs/vjm.md.
+struct ChainHessians {
+  MatX Hqq, Hqtheta, Hthetaq, Hthetatheta;
+};
+ChainHessians hessians(const Chain& chain, const VecX& q, const VecX& theta, const Vec6& F);
+
+// The twist that takes pose `from` to pose `to`: (p_to - p_from, rotation vector of R_to R_from^T).
+Vec6 pose_difference(const Transform& to, const Transform& from);
+// `T` displaced by the twist d: p + d_p and exp([d_r]x) R.
+Transform displace(const Transform& T, const Vec6& d);
+
+}  // namespace kinestat::vjm

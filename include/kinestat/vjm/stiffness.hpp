@@ -1,0 +1,65 @@
+// VJM Cartesian stiffness: one chain unloaded (eq. 9-10), one chain loaded (eq. 19-21), and the
+// aggregation over the chains that share a platform (K = sum K_i, section 3.3).
+//
+// Singular postures: the matrix of eq. (9) loses rank when a tool direction is neither compliant
+// nor free (a "rigid" direction: no spring and no passive joint moves the tool along it, infinite
+// stiffness) or when the passive joints have a self-motion (several q give the same tool motion;
+// it changes nothing in K). Both are solved by orthogonal elimination instead of inverting eq. (9):
+// the stiffness that exists is returned and the lost directions are named. See docs/vjm.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+#include "kinestat/vjm/chain.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
+
+namespace kinestat::vjm {
+
+struct StiffnessOptions {
+  // Relative tolerance (on dimensionless, length-scaled quantities) below which a singular value
+  // or eigenvalue counts as zero: a lost direction. 1e-10 keeps ~6 digits of double precision for
+  // what is kept and still separates a spring 1e6 times stiffer than the others.
+  double rank_tolerance = 1e-10;
+};
+
+// Same dof order and units as msa::CartesianStiffness: (ux uy uz rx ry rz) of the tool point,
+// global axes; stiffness in N/m, N/rad, N m/m, N m/rad; compliance in the inverse units.
+struct CartesianStiffness {
+  Mat6 stiffness = Mat6::Zero();
+  Mat6 compliance = Mat6::Zero();      // valid when compliance_defined; zero along rigid directions
+  bool compliance_defined = false;     // no free direction (the stiffness is regular off the rigid ones)
+  std::vector<Vec6> free_directions;   // unit twists with zero stiffness (the chain/platform moves freely)
+  std::vector<Vec6> rigid_directions;  // unit twists with infinite stiffness (excluded from `stiffness`)
+  std::vector<VecX> self_motions;      // passive-joint combinations that do not move the tool
+  // kOk, or kSingular with the lost directions in words. For a single chain free directions are
+  // normal (its passive mobility) and do not make the status singular.
+  Status status;
+};
+
+// Unloaded stiffness of one chain at its nominal passive coordinates, theta = 0 (eq. 9-10).
+StatusOr<CartesianStiffness> unloaded_stiffness(const Chain& chain, const StiffnessOptions& options = {});
+
+// Loaded-mode stiffness dF = K^F dt of one chain at an equilibrium (q, theta, F) (eq. 19-21).
+// Asymmetric when the wrench has a moment (docs/vjm.md). kSingular error when K_theta - H_thetatheta
+// is singular (the springs buckle under this load).
+StatusOr<CartesianStiffness> loaded_stiffness(const Chain& chain, const ChainState& state,
+                                              const StiffnessOptions& options = {});
+
+// Platform stiffness: sum of the chains' matrices; a free direction of the sum (the platform is a
+// mechanism there) is reported with kSingular and leaves the compliance undefined.
+CartesianStiffness aggregate(const std::vector<CartesianStiffness>& chains, double length_scale,
+                             const StiffnessOptions& options = {});
+
+StatusOr<CartesianStiffness> platform_unloaded_stiffness(const std::vector<Chain>& chains,
+                                                         const StiffnessOptions& options = {});
+StatusOr<CartesianStiffness> platform_loaded_stiffness(const std::vector<Chain>& chains, const PlatformState& state,
+                                                       const StiffnessOptions& options = {});
+
+// A twist in words for diagnoses: "translation along (0.707, 0.707, 0)", "rotation about (0, 0, 1)"
+// or both parts of a screw motion.
+std::string describe_twist(const Vec6& twist);
+
+}  // namespace kinestat::vjm

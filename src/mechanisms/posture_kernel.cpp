@@ -1,0 +1,59 @@
+#include "kinestat/mechanisms/posture_kernel.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+namespace kinestat::mechanisms {
+
+const char* to_string(PostureStatus s) {
+  switch (s) {
+    case PostureStatus::kOk: return "ok";
+    case PostureStatus::kUnreachable: return "unreachable";
+    case PostureStatus::kSingular: return "singular";
+    case PostureStatus::kFailed: return "failed";
+  }
+  return "unknown";
+}
+
+void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& points,
+                       std::vector<PostureResult>& results, int threads,
+                       const std::function<void(std::size_t, std::size_t)>& progress) {
+  results.resize(points.size());
+  const std::size_t total = points.size();
+  using Clock = std::chrono::steady_clock;
+  std::atomic<std::size_t> done{0};
+  std::mutex report_mutex;
+  auto last_report = Clock::now();
+  // One kernel per worker thread: a kernel keeps mutable buffers (not thread-safe by contract).
+  tbb::enumerable_thread_specific<std::unique_ptr<PostureKernel>> local([&] { return kernel.clone(); });
+  auto body = [&](const tbb::blocked_range<std::size_t>& r) {
+    PostureKernel& k = *local.local();
+    for (std::size_t i = r.begin(); i != r.end(); ++i) results[i] = k.evaluate(points[i]);
+    const std::size_t now_done = done += r.size();
+    if (progress && report_mutex.try_lock()) {
+      const auto now = Clock::now();
+      if (now - last_report > std::chrono::milliseconds(100)) {
+        last_report = now;
+        progress(now_done, total);
+      }
+      report_mutex.unlock();
+    }
+  };
+  // Chunks of ~256 postures: small enough to balance, large enough that scheduling costs nothing.
+  const tbb::blocked_range<std::size_t> range(0, total, 256);
+  if (threads > 0) {
+    tbb::task_arena arena(threads);
+    arena.execute([&] { tbb::parallel_for(range, body); });
+  } else {
+    tbb::parallel_for(range, body);
+  }
+  if (progress) progress(total, total);
+}
+
+}  // namespace kinestat::mechanisms
