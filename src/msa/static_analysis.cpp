@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
 #include "kinestat/msa/singularity.hpp"
@@ -167,7 +168,8 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   }
   sol.num_free_dofs = sys->map.num_free();
   if (sol.num_free_dofs == 0) {
-    sol.status = Status::Invalid("every dof of the structure is supported or tied: nothing to solve");
+    sol.status = Status::Invalid(at_source(s.source(), "every dof of the structure is supported or tied: nothing to "
+                                                       "solve; free some dofs of the supports"));
     return sol;
   }
   if (sol.num_free_dofs <= opt.max_dofs_for_global_indices) sol.global_indices = stiffness_indices(MatX(sys->Kr));
