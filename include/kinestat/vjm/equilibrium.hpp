@@ -24,6 +24,7 @@ struct EquilibriumOptions {
   // relative static residual |J^T F - K theta| / (|J^T F| + |K theta|) both below this.
   double tolerance = 1e-12;  // the round-off floor of the static residual is ~1e-14 for stiff chains
   double rank_tolerance = 1e-10;  // as StiffnessOptions::rank_tolerance
+  int max_chain_coordinates = kDefaultMaxChainCoordinates;  // as StiffnessOptions::max_chain_coordinates
 };
 
 struct ConvergenceReport {
@@ -61,7 +62,7 @@ struct PlatformState {
 
 // Checks that the chains are valid and that their nominal tool points coincide (the platform is
 // assembled); the message names the chain at fault.
-Status validate_platform(const std::vector<Chain>& chains);
+Status validate_platform(const std::vector<Chain>& chains, int max_chain_coordinates = kDefaultMaxChainCoordinates);
 
 StatusOr<PlatformState> platform_equilibrium(const std::vector<Chain>& chains, const Vec6& displacement,
                                              const EquilibriumOptions& options = {});
