@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/cli/app.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/io/workspace_vtk.hpp"
 #include "kinestat/mechanisms/orthoglide_design.hpp"
 
@@ -29,6 +30,7 @@ struct DesignArgs {
   std::string vtk_dir;
   int vtk_grid = 21;
   int search_points = 41;
+  double max_points = 2e6;
 };
 
 const char* strategy_summary(int s) {
@@ -86,20 +88,35 @@ void register_design_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--vtk-grid", args->vtk_grid, "joint grid points per axis in the VTK workspace (default 21)");
   cmd->add_option("--search-points", args->search_points,
                   "points per face edge of the numerical check of the transmission factors (default 41)");
+  cmd->add_option("--max-points", args->max_points,
+                  "refuse --vtk-grid N (N^3 points) or --search-points N (~7 N^2 + N^3/64 points) above this "
+                  "(default 2e6)");
   cmd->callback([args, &ctx] {
     auto fail = [&ctx](const std::string& message) {
       ctx.err << "kinestat design orthoglide: " << message << "\n";
       ctx.exit_code = kExitBadInput;
     };
     // Checked here too, to name the option and its unit in the message.
-    if (!(std::isfinite(args->cube_mm) && args->cube_mm > 0.0))
-      return fail(fmt::format("--cube {} mm: the cube edge must be positive", args->cube_mm));
+    if (Status s = check_quantity(args->cube_mm, Quantity::kLength, "--cube (the cube edge)", {kMm, "mm"},
+                                  Sign::kPositive);
+        !s.ok())
+      return fail(s.message());
     if (!(args->mu > 0.0 && args->mu < 1.0))
       return fail(fmt::format("--mu {}: must lie strictly between 0 and 1 (the factors are bounded to [mu, 1/mu])",
                               args->mu));
     if (args->strategy && (*args->strategy < 1 || *args->strategy > 3))
       return fail(fmt::format("--strategy {}: must be 1, 2 or 3", *args->strategy));
     if (args->vtk_grid < 2 || args->search_points < 2) return fail("--vtk-grid and --search-points must be at least 2");
+    // Sizes estimated before anything is allocated or searched.
+    const double n = args->search_points;
+    for (const Status& s :
+         {check_size(std::pow(static_cast<double>(args->vtk_grid), 3.0), args->max_points,
+                     fmt::format("--vtk-grid {}", args->vtk_grid), "joint-grid points (N^3)",
+                     "give a smaller --vtk-grid or raise the limit with --max-points"),
+          check_size(7.0 * n * n + std::pow(n / 4.0, 3.0), args->max_points,
+                     fmt::format("--search-points {}", args->search_points), "points searched (~7 N^2 + N^3/64)",
+                     "give a smaller --search-points or raise the limit with --max-points")})
+      if (!s.ok()) return fail(s.message());
     std::vector<int> strategies = args->strategy ? std::vector<int>{*args->strategy} : std::vector<int>{1, 2, 3};
     std::vector<mechanisms::OrthoglideDesign> designs;
     for (int s : strategies) {
@@ -115,7 +132,8 @@ void register_design_command(CLI::App& app, Context& ctx) {
       print_design(ctx.out, d, args->search_points);
       if (!args->vtk_dir.empty()) {
         std::vector<std::string> written;
-        if (Status st = io::write_orthoglide_workspace_vtk(d, args->vtk_grid, args->vtk_dir, &written); !st.ok())
+        if (Status st = io::write_orthoglide_workspace_vtk(d, args->vtk_grid, args->vtk_dir, &written, args->max_points);
+            !st.ok())
           return fail(st.message());
         for (const auto& path : written) ctx.out << "  wrote " << path << " (lengths in m)\n";
       }

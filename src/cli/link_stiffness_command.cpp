@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "kinestat/cli/app.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/mesh_convergence.hpp"
@@ -56,7 +58,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   struct Args {
     std::string mesh, material = "steel", clamp, reference, unit = "mm", model = "rigid", vtk_dir, json_file, cache_dir;
     std::string reference_point;
-    double size = 0.0, stiff_ratio = 1e4;
+    std::optional<double> size;  // absent: the default size; given: checked, never replaced
+    double stiff_ratio = 1e4, max_elements = fea::MeshingOptions{}.max_elements;
     bool linear = false;
     bool convergence = false;
   };
@@ -73,6 +76,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->check(CLI::IsMember({"mm", "m"}))
       ->capture_default_str();
   cmd->add_option("--size", args->size, "tetrahedron size in mesh units (default: 1/20 of the part's largest extent)");
+  cmd->add_option("--max-elements", args->max_elements,
+                  "refuse to mesh when about more tetrahedra than this are estimated (volume / size^3)")
+      ->capture_default_str();
   cmd->add_flag("--linear", args->linear, "4-node tetrahedra (default 10-node; linear ones lock in bending)");
   cmd->add_flag("--convergence", args->convergence,
                 "also solve meshes of size 2h and 1.41h and print a Richardson estimate of each compliance term: "
@@ -118,8 +124,15 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     fea::MeshingOptions meshing;
     meshing.unit_scale = scale;
     meshing.quadratic = !args->linear;
-    meshing.size = args->size * scale;
-    if (!(meshing.size > 0.0)) meshing.size = fea::default_mesh_size(*surface, scale);
+    meshing.max_elements = args->max_elements;
+    if (args->size) {
+      if (Status s = check_quantity(*args->size, Quantity::kLength, "--size", {scale, args->unit}, Sign::kPositive);
+          !s.ok())
+        return fail(s);
+      meshing.size = *args->size * scale;
+    } else {
+      meshing.size = fea::default_mesh_size(*surface, scale);
+    }
     std::string cache_key;
     if (!args->cache_dir.empty()) {
       auto identity = fea::surface_mesh_identity(args->mesh, meshing);

@@ -24,6 +24,7 @@ struct VjmArgs {
   std::vector<double> point;   // mm
   std::vector<double> load;    // mm, deg
   std::vector<double> wrench;  // N, N m
+  int max_coordinates = vjm::kDefaultMaxChainCoordinates;
 };
 
 // The stiffness, compliance, indices and lost directions of one VJM result.
@@ -56,7 +57,11 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   }
   StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, point);
   if (!chains.ok()) return bad(chains.status());
-  StatusOr<vjm::CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
+  vjm::StiffnessOptions stiffness_options;
+  stiffness_options.max_chain_coordinates = a.max_coordinates;
+  vjm::EquilibriumOptions equilibrium_options;
+  equilibrium_options.max_chain_coordinates = a.max_coordinates;
+  StatusOr<vjm::CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains, stiffness_options);
   if (!K0.ok()) return bad(K0.status());
 
   std::string out = fmt::format("kinestat VJM report{}\n", model->title.empty() ? "" : ": " + model->title);
@@ -74,11 +79,11 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
       Vec6 disp = *d;
       disp.head<3>() *= kMm;
       disp.tail<3>() *= kDeg;
-      state = vjm::platform_equilibrium(*chains, disp);
+      state = vjm::platform_equilibrium(*chains, disp, equilibrium_options);
     } else {
       StatusOr<Vec6> w = vector_option<6>(a.wrench, "--wrench", "Fx,Fy,Fz in N and Mx,My,Mz in N m");
       if (!w.ok()) return bad(w.status());
-      state = vjm::platform_equilibrium_under_wrench(*chains, *w);
+      state = vjm::platform_equilibrium_under_wrench(*chains, *w, equilibrium_options);
     }
     if (!state.ok()) {
       ctx.out << out;
@@ -91,7 +96,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
                        t(0) / kMm, t(1) / kMm, t(2) / kMm, t(3) / kDeg, t(4) / kDeg, t(5) / kDeg);
     out += fmt::format("  wrench F = ({:.6e}, {:.6e}, {:.6e}) N, M = ({:.6e}, {:.6e}, {:.6e}) N m\n", F(0), F(1),
                        F(2), F(3), F(4), F(5));
-    StatusOr<vjm::CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
+    StatusOr<vjm::CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state, stiffness_options);
     if (!KF.ok()) {
       ctx.out << out;
       return bad(KF.status());
@@ -120,6 +125,10 @@ void register_vjm_command(CLI::App& app, Context& ctx) {
                   "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N m) about the tool point: loaded mode")
       ->delimiter(',')
       ->excludes(load);
+  cmd->add_option("--max-coordinates", args->max_coordinates,
+                  "refuse a chain with more coordinates (passive and virtual) than this: its dense matrices grow "
+                  "as the square")
+      ->capture_default_str();
   cmd->callback([args, &ctx] { ctx.exit_code = run_vjm(*args, ctx); });
 }
 
