@@ -18,6 +18,7 @@ PACKAGES=(
   nlohmann-json3-dev       # JSON results
   libfmt-dev               # formatting
   libtbb-dev               # threads (FEA assembly)
+  clang-16 libclang-rt-16-dev libfuzzer-16-dev  # scripts/sanitize.sh, scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 
 missing=()

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything (Release) and runs every test with ctest.
+# Installs what is missing, builds everything (Release) and runs every test with ctest; then the same
+# tests under AddressSanitizer and UndefinedBehaviorSanitizer (scripts/sanitize.sh, build-sanitize/)
+# and each fuzz harness for 30 s (scripts/fuzz.sh). docs/reliability.md describes both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 jobs=$(nproc 2>/dev/null || echo 2)
-cd build
-ctest --output-on-failure -j"$jobs" --timeout 600
+(cd build && ctest --output-on-failure -j"$jobs" --timeout 600)
+scripts/sanitize.sh
+scripts/fuzz.sh 30

@@ -1,0 +1,41 @@
+// Fuzz harness: the command-line value parsers shared by the commands and the model files: regions
+// (--clamp, --reference), materials (--material), number lists (--reference-point). The first byte
+// chooses the parser, the rest is the option's text.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "kinestat/fea/link_stiffness_inputs.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 1) return 0;
+  const std::string text(reinterpret_cast<const char*>(data + 1), size - 1);
+  namespace fea = kinestat::fea;
+  switch (data[0] % 4) {
+    case 0: {
+      const auto r = fea::parse_region(text, 1e-3, "--clamp");
+      if (r.ok() && !(r->point.allFinite() && r->normal.allFinite() && r->lo.allFinite() && r->hi.allFinite()))
+        std::abort();
+      break;
+    }
+    case 1: {
+      const auto m = fea::parse_material(text, "--material");
+      if (m.ok() && !(m->E > 0 && m->G > 0)) std::abort();
+      break;
+    }
+    case 2: {
+      const auto v = fea::parse_numbers(text, 3, "--reference-point");
+      if (v.ok())
+        for (double x : *v)
+          if (!std::isfinite(x)) std::abort();
+      break;
+    }
+    default: {
+      const auto r = fea::parse_region(text, 1.0, "--reference");
+      if (!r.ok() && r.status().message().empty()) std::abort();
+    }
+  }
+  return 0;
+}
