@@ -1,5 +1,5 @@
 // Fuzz harness: the command-line value parsers shared by the commands and the model files: regions
-// (--clamp, --reference), materials (--material), number lists (--reference-point). The first byte
+// (--clamp, --reference), materials (--material), points (--reference-point). The first byte
 // chooses the parser, the rest is the option's text.
 #include <cmath>
 #include <cstddef>
@@ -26,10 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       break;
     }
     case 2: {
-      const auto v = fea::parse_numbers(text, 3, "--reference-point");
-      if (v.ok())
-        for (double x : *v)
-          if (!std::isfinite(x)) std::abort();
+      const auto p = fea::parse_point(text, 1e-3, "--reference-point");
+      if (p.ok() && !p->allFinite()) std::abort();
       break;
     }
     default: {

@@ -113,9 +113,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     options.reference_model = args->model == "rigid" ? fea::ReferenceModel::kRigidCoupling : fea::ReferenceModel::kStiffBody;
     options.stiff_body_ratio = args->stiff_ratio;
     if (!args->reference_point.empty()) {
-      auto p = fea::parse_numbers(args->reference_point, 3, "--reference-point");
+      auto p = fea::parse_point(args->reference_point, scale, "--reference-point");
       if (!p.ok()) return fail(p.status());
-      options.reference_point = Vec3((*p)[0], (*p)[1], (*p)[2]) * scale;
+      options.reference_point = *p;
     }
     options.keep_fields = !args->vtk_dir.empty();
 

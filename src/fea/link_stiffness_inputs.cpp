@@ -48,6 +48,12 @@ StatusOr<Vec3> lengths(const std::vector<double>& v, size_t first, double scale,
 
 }  // namespace
 
+StatusOr<Vec3> parse_point(const std::string& text, double scale, const std::string& what) {
+  auto v = parse_numbers(text, 3, what);
+  if (!v.ok()) return v.status();
+  return lengths(*v, 0, scale, what);
+}
+
 StatusOr<Region> parse_region(const std::string& text, double scale, const std::string& what) {
   if (text.size() > 2 && text[1] == '=' && (text[0] == 'x' || text[0] == 'y' || text[0] == 'z')) {
     auto v = parse_numbers(text.substr(2), 1, what);

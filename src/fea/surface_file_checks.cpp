@@ -96,6 +96,7 @@ Status check_off(const std::string& path, std::uintmax_t bytes) {
 Status check_ply(const std::string& path, std::uintmax_t bytes) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
+  bool element_seen = false;
   for (int n = 0; n < 10000 && std::getline(in, line); ++n) {
     std::istringstream words(line);
     std::string first;
@@ -105,12 +106,17 @@ Status check_ply(const std::string& path, std::uintmax_t bytes) {
       std::string name;
       double count = -1;
       words >> name >> count;
+      element_seen = true;
       // Every element takes at least one byte, in any format.
       if (!(count >= 0 && count <= static_cast<double>(bytes)))
         return Status::Invalid(fmt::format("{}: the PLY header announces {} '{}' elements, more than the file's {} "
                                            "bytes can hold; the file is truncated or its header is wrong",
                                            path, count, name, bytes));
     } else if (first == "property") {
+      // CGAL attaches a property to the last element read: with none, it reads past an empty vector.
+      if (!element_seen)
+        return Status::Invalid(fmt::format("{}: a PLY property is declared before any element; check the header",
+                                           path));
       std::string kind, length_type;
       words >> kind >> length_type;
       static const char* kNarrow[] = {"char", "uchar", "int8", "uint8", "short", "ushort", "int16", "uint16"};

@@ -14,7 +14,8 @@ namespace kinestat::fea {
 // - OFF: the header is not a plain ASCII "OFF" (binary, colour, normal or texture variants are not
 //   read), its counts need more bytes than the file has, or a face line's vertex count or indices
 //   are not integers that the line and the vertex count allow (records one per line, as CGAL reads);
-// - PLY: an element count exceeds the file's size, or a list's length type is wider than 16 bits;
+// - PLY: an element count exceeds the file's size, a property comes before any element, or a list's
+//   length type is wider than 16 bits;
 // - binary STL: the triangle count needs more bytes than the file has.
 // OBJ and ASCII STL carry no counts. Anything else is left to CGAL's reader.
 Status check_surface_file_structure(const std::string& path);

@@ -66,6 +66,9 @@ TEST(SurfaceInputChecks, FaceRecordsThatWouldAllocateOrConvertOutOfRangeAreRefus
                  "element face 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
                  "1000000000 0 1 2\n",
                  "list's length is of type 'int'");
+  // Found by fuzz_surface_mesh: CGAL's PLY reader attached the property to an element that did not exist.
+  expect_refused("property_first.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n",
+                 "a PLY property is declared before any element");
   expect_refused("out_of_range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "cannot read a triangle surface");
 }
 
@@ -109,6 +112,11 @@ TEST(OptionParsers, NumbersMustBeFiniteAndComplete) {
   expect_contains(parse_numbers("1,1e400,3", 3, "--reference-point").status().message(), "'1e400' is not");
   expect_contains(parse_numbers("1,2,3,", 3, "--reference-point").status().message(), "expected 3");
   ASSERT_TRUE(parse_numbers("1,2,3", 3, "p").ok());
+  expect_contains(parse_point("0,1e300,0", 1e-3, "--reference-point").status().message(),
+                  "--reference-point = 1e+300 mm is too large for a length");
+  const auto p = parse_point("1,2,3", 1e-3, "p");
+  ASSERT_TRUE(p.ok());
+  EXPECT_NEAR((*p - Vec3(1e-3, 2e-3, 3e-3)).norm(), 0.0, 1e-18);
 }
 
 TEST(OptionParsers, RegionsAreRangedAndNormalized) {
