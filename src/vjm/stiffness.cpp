@@ -124,24 +124,12 @@ StatusOr<CartesianStiffness> loaded_stiffness(const Chain& chain, const ChainSta
   const MatX C = Jq.transpose() + H.Hqtheta * kJt;  // J_q^T + K_qtheta k J_theta^T
   const MatX D = H.Hqq + H.Hqtheta * kH;            // K_qq + K_qtheta k K_thetaq
 
-  // Rigid directions: left null space of [J_q J_theta] (columns normalized). The force along them is
-  // a reaction, so (21) is solved on the complement Uc: dF~ = Uc f, rows projected by Uc^T.
-  MatX Jall(6, n + m);
-  Jall << Jq, Jth;
-  for (int j = 0; j < Jall.cols(); ++j)
-    if (Jall.col(j).norm() > 0) Jall.col(j).normalize();
+  // Rigid directions: left null space of [J_q J_theta]. The force along them is a reaction, so (21)
+  // is solved on the complement Uc: dF~ = Uc f, rows projected by Uc^T.
+  const ToolSpaceSplit split = split_tool_space(J.Jq, J.Jtheta, w, opt.rank_tolerance);
+  const int c = split.rank;
+  const Mat6& U = split.U;
   std::vector<Vec6> rigid;
-  int c = 6;
-  Mat6 U = Mat6::Identity();
-  if (Jall.cols() > 0) {
-    Eigen::JacobiSVD<MatX> svd(Jall, Eigen::ComputeFullU);
-    const VecX& sv = svd.singularValues();
-    c = 0;
-    while (c < sv.size() && sv[c] > opt.rank_tolerance * std::max(1.0, sv[0])) ++c;
-    U = svd.matrixU();
-  } else {
-    c = 0;
-  }
   for (int k = c; k < 6; ++k) rigid.push_back(unscaled_direction(U.col(k), L));
   const MatX Uc = U.leftCols(c);
   MatX A(c + n, c + n);

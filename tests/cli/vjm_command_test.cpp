@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 
@@ -93,6 +94,40 @@ TEST(VjmCommand, PrescribedDisplacementReportsTheWrench) {
   ASSERT_NE(at, std::string::npos) << r.out;
   const double Fx = std::stod(r.out.substr(at + 12));
   EXPECT_NEAR(Fx, 7e-6 / q0_translational_compliance(), 1e-4 * Fx);
+}
+
+TEST(VjmCommand, WrenchOnVeryStiffSpringsConverges) {
+  // Three orthogonal legs, each a 1e9 N/mm (and N mm/rad) spring at the tool point: K = 3e9 N/mm
+  // isotropic. The wrench residual's round-off floor (~eps K l) is far above 1e-10 of the load; the
+  // solve must still converge and give F / K.
+  const std::string path = std::string(KINESTAT_BINARY_DIR) + "/vjm_stiff_legs.yaml";
+  {
+    std::ofstream f(path);
+    f << "units: mm-N-s\nchains:\n";
+    // Base point, then a rotation (axis, deg) that turns the local x towards the tool point.
+    struct Leg { const char* base; const char* axis; int angle; };
+    const Leg legs[3] = {{"[250, 0, 0]", "[0, 0, 1]", 180}, {"[0, 250, 0]", "[0, 0, 1]", -90}, {"[0, 0, 250]", "[0, 1, 0]", 90}};
+    for (int i = 0; i < 3; ++i) {
+      f << "  - name: leg " << i << "\n    elements:\n";
+      f << "      - {translate: " << legs[i].base << "}\n";
+      f << "      - {rotate: {axis: " << legs[i].axis << ", angle: " << legs[i].angle << "}}\n";
+      f << "      - {translate: [250, 0, 0]}\n";
+      f << "      - {spring: {matrix: [";
+      for (int r = 0; r < 6; ++r) {
+        f << (r ? ", " : "") << "[";
+        for (int c = 0; c < 6; ++c) f << (c ? ", " : "") << (r == c ? "1.0e9" : "0");
+        f << "]";
+      }
+      f << "]}}\n";
+      f << "      - {rotate: {axis: " << legs[i].axis << ", angle: " << -legs[i].angle << "}}\n";
+    }
+  }
+  const CliRun r = run_cli({"vjm", path, "--wrench", "1000,-500,800,0,0,0"});
+  ASSERT_EQ(r.code, kExitOk) << r.err << r.out;
+  const std::size_t at = r.out.find("displacement (");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double dx_mm = std::stod(r.out.substr(at + 14));
+  EXPECT_NEAR(dx_mm, 1000 / 3e9, 1e-4 * 1000 / 3e9) << r.out;
 }
 
 TEST(VjmCommand, BadInputExitsWith2) {

@@ -20,8 +20,11 @@ struct EquilibriumOptions {
   int max_fixed_point_iterations = 50;  // eq. (15)
   int max_newton_iterations = 50;       // full Newton-Raphson fallback (and outer platform iteration)
   bool newton_fallback = true;
-  // Convergence: kinematic residual |t - f| (translation / length scale, rotation in rad) and the
-  // relative static residual |J^T F - K theta| / (|J^T F| + |K theta|) both below this.
+  // Convergence: the relative static residual |J^T F - K theta| / (|J^T F| + |K theta|) below this,
+  // and the kinematic residual |t - f| (translation / length scale, rotation in rad) below this times
+  // the prescribed displacement (same scaling), or at the pose's round-off floor 16 eps. Under a
+  // prescribed wrench, the relative wrench residual below 100 times this, or stalled at its round-off
+  // floor ~eps |K| (very stiff springs).
   double tolerance = 1e-12;  // the round-off floor of the static residual is ~1e-14 for stiff chains
   double rank_tolerance = 1e-10;  // as StiffnessOptions::rank_tolerance
 };
