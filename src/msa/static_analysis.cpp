@@ -69,7 +69,12 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   const VecX residual = sys.K * u - f;  // reactions at supports, constraint forces at tied nodes
   r.displacement.resize(nn);
   r.reaction.assign(nn, Vec6::Zero());
-  double fscale = 0.0, mscale = 0.0;
+  // Scale of the loads and reactions, each term taken on its own (not their net sum at a node, which
+  // is zero where a support takes a load directly), forces times the structure size so that forces
+  // and moments share one unit (N m): a pure-moment case then compares the round-off in its
+  // resultant force with its moments, not with the round-off reactions themselves.
+  const double size = s.length_scale();
+  double scale = 0.0;
   for (int n = 0; n < nn; ++n) {
     r.displacement[n] = u.segment<6>(6 * n);
     if (sys.map.supported_node[n]) r.reaction[n] = residual.segment<6>(6 * n);
@@ -79,16 +84,15 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
       r.max_translation_node = n;
     }
     // Resultant of loads + reactions about the origin: zero for a structure in equilibrium.
-    const Vec6 w = f.segment<6>(6 * n) + r.reaction[n];
     const Vec3& x = s.nodes()[n].position;
-    r.resultant.head<3>() += w.head<3>();
-    r.resultant.tail<3>() += w.tail<3>() + x.cross(w.head<3>());
-    fscale += w.head<3>().norm();
-    mscale += w.tail<3>().norm() + x.norm() * w.head<3>().norm();
+    for (const Vec6& w : {Vec6(f.segment<6>(6 * n)), r.reaction[n]}) {
+      r.resultant.head<3>() += w.head<3>();
+      r.resultant.tail<3>() += w.tail<3>() + x.cross(w.head<3>());
+      scale += w.tail<3>().norm() + (size + x.norm()) * w.head<3>().norm();
+    }
   }
-  const double ef = fscale > 0 ? r.resultant.head<3>().norm() / fscale : 0.0;
-  const double em = mscale > 0 ? r.resultant.tail<3>().norm() / mscale : 0.0;
-  r.equilibrium_error = std::max(ef, em);
+  const double unbalance = size * r.resultant.head<3>().norm() + r.resultant.tail<3>().norm();
+  r.equilibrium_error = scale > 0 ? unbalance / scale : 0.0;
   const VecX rr = sys.map.C.transpose() * residual;
   const double fn = (sys.map.C.transpose() * (f - sys.K * u0)).norm();  // the reduced right-hand side
   r.free_dof_residual = fn > 0 ? rr.norm() / fn : rr.norm();

@@ -51,7 +51,7 @@ struct LoadCaseResult {
   std::vector<Vec12> beam_end_forces;  // per beam, local axes: N1 Vy1 Vz1 T1 My1 Mz1 N2 ... (force on the beam)
   std::vector<Vec6> joint_forces;    // per joint, joint frame: spring force/moment acting on node2
   Vec6 resultant = Vec6::Zero();     // sum of loads and reactions (force, moment about origin): ~0
-  double equilibrium_error = 0.0;    // |resultant| / (|loads| + |reactions|), force and moment parts
+  double equilibrium_error = 0.0;    // |resultant| / (|loads| + |reactions|), forces times the model size
   double free_dof_residual = 0.0;    // ||C'(K u - f)|| / ||C' f||
   double max_translation = 0.0;
   int max_translation_node = -1;
