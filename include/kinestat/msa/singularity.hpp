@@ -8,7 +8,9 @@ namespace kinestat::msa {
 
 // From the failed factorization of K_r: the dofs whose pivots vanished (mapped back from CHOLMOD's
 // column to node and dof) and the free motions (near-null space of K_r with stiffness ratio below
-// `tolerance`, the pivot tolerance), described per node.
+// `tolerance`, the pivot tolerance), described per node. Parts joined to no support (or a model with
+// no supports) are named first ("nodes {...} are not connected to any support"), with their six
+// rigid-body motions in the canonical basis (FreeMotion).
 SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map, const solver::SparseMatrix& Kr,
                                           const solver::FactorizationReport& report, double tolerance);
 

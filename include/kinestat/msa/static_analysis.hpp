@@ -29,9 +29,13 @@ struct SolveOptions {
   int max_dofs_for_global_indices = 2000;
 };
 
-// One free motion (null-space mode) of a singular structure.
+// One free motion (null-space mode) of a singular structure. A part that no support holds (the whole
+// model when it has none) contributes six rigid-body motions in the canonical basis: unit translations
+// along global x, y, z, then 1 rad rotations about x, y, z through the part's centroid; they come
+// first, the other free motions (mechanisms) after them.
 struct FreeMotion {
-  std::vector<Vec6> node_motion;  // per node (ux uy uz rx ry rz); the largest translation is 1 (or the largest rotation if none)
+  std::vector<Vec6> node_motion;  // per node (ux uy uz rx ry rz); the largest translation is 1 (or the largest
+                                  // rotation if none); rigid-body motions as above
   double rayleigh_ratio = 0.0;    // u'Ku / u'Du: ~1e-16 for a true mechanism
   std::string description;        // in words: which nodes move and how
 };
