@@ -1,6 +1,7 @@
-// kinestat design orthoglide --cube C --mu MU [--strategy 1|2|3] [--vtk DIR]
+// kinestat design orthoglide --cube C --mu MU [--strategy 1|2|3] [--vtk DIR] [--encoder-offsets E1,E2]
 // Geometric synthesis of the Orthoglide (Pashkevich, Wenger, Chablat 2005, Table 3): link length,
-// joint limits and cube location for a cube of edge C and transmission factors in [MU, 1/MU].
+// joint limits and cube location for a cube of edge C and transmission factors in [MU, 1/MU]; the
+// paper's other analyses (section 5.2 switch points, Fig. 3 and Table 2 volumes, encoder offsets).
 #include <cmath>
 #include <limits>
 #include <map>
@@ -29,7 +30,12 @@ struct DesignArgs {
   std::string vtk_dir;
   int vtk_grid = 21;
   int search_points = 41;
+  std::vector<double> encoder_offsets_mm = {5.0, 10.0};  // section 6's examples
 };
+
+// Grid of the volume fractions of Fig. 3 and Table 2 (n^3 cells over [-L, L]^3; ~0.5 % from the
+// paper's own ray method, tests/mechanisms/test_orthoglide_design.cpp).
+constexpr int kVolumeGrid = 80;
 
 const char* strategy_summary(int s) {
   switch (s) {
@@ -44,7 +50,7 @@ std::string range(const mechanisms::TransmissionRange& r) {
   return fmt::format("[{:.3f}, {:.3f}]", r.min, r.max);
 }
 
-void print_design(std::ostream& out, const mechanisms::OrthoglideDesign& d, int search_points) {
+void print_design(std::ostream& out, const mechanisms::OrthoglideDesign& d, const DesignArgs& args) {
   const double L = d.link_length;
   out << fmt::format("strategy {}: {}\n", d.strategy, strategy_summary(d.strategy));
   out << fmt::format("  link length L               {:.1f} mm\n", L / kMm);
@@ -58,13 +64,41 @@ void print_design(std::ostream& out, const mechanisms::OrthoglideDesign& d, int 
                        d.joint_sum_limit / kMm);
   out << fmt::format("  unit manipulator (L = 1)    rho in [{:.4f}, {:.4f}], p in [{:.4f}, {:.4f}]\n", d.rho_min / L,
                      d.rho_max / L, d.p_min / L, d.p_max / L);
-  const mechanisms::OrthoglideDesignCheck check = mechanisms::check_design(d, search_points);
+  if (std::isfinite(d.joint_sum_limit))
+    out << fmt::format("  joint box kept              {:.2f} % of [rho_min, rho_max]^3 within the software limit\n",
+                       100.0 * d.joint_box_kept);
+  std::vector<double> offsets;
+  for (double e : args.encoder_offsets_mm) offsets.push_back(e * kMm);
+  const mechanisms::OrthoglideDesignCheck check = mechanisms::check_design(d, args.search_points, offsets);
   out << "  velocity transmission factors (dimensionless):\n";
   out << fmt::format("    cube                      {} (Proposition 1); numerical search {}\n", range(d.cube),
                      range(check.cube.range));
   out << fmt::format("    joint-bounded workspace   {} (critical points Q, R, S); numerical search {}{}\n",
                      range(d.joint_space), range(check.joint_space.range),
                      std::isfinite(d.joint_sum_limit) ? " with the software limit" : "");
+  for (const mechanisms::EncoderOffsetEffect& e : check.encoder_offsets)
+    out << fmt::format("    {:<26}{} (numerical search; every slider {:.1f} mm {} than commanded)\n",
+                       fmt::format("cube, encoders {:+.1f} mm", e.offset / kMm), range(e.cube.range),
+                       std::abs(e.offset) / kMm, e.offset >= 0 ? "further out" : "further in");
+}
+
+// The paper's analyses that depend on neither the cube nor the strategy (unit manipulator, L = 1).
+void print_paper_analyses(std::ostream& out, const mechanisms::MinimumSwitchPoints& m,
+                          const mechanisms::DexterousVolumes& v) {
+  out << "Workspace analyses of the paper (unit manipulator L = 1; the same for every cube and strategy):\n";
+  out << "  section 5.2, mu_min over the joint box [rho_min, 1]^3 (Fig. 9a):\n";
+  out << fmt::format("    S-|R- switch of the formulas   rho_SR = {:.4f}, mu = {:.4f}; numerical search there {:.4f}\n",
+                     m.rho_sr, m.mu_sr, m.search_mu_at_rho_sr);
+  out << fmt::format("    R-|Q- switch of the formulas   rho_RQ = {:.4f}, mu = {:.4f}; numerical search there {:.4f}\n",
+                     m.rho_rq, m.mu_rq, m.search_mu_at_rho_rq);
+  out << fmt::format("    true switch to Q-              rho = {:.4f}, mu = {:.4f} (below it the minimum is at no "
+                     "critical point: on the edge (rho_min, rho_min, t), or near S- on a face)\n",
+                     m.rho_q, m.mu_q);
+  out << fmt::format("  Fig. 3: singularity-free workspace V0 = {:.1f} % of the sphere |p| < L (paper: 97.2 %)\n",
+                     100.0 * v.singularity_free_of_sphere);
+  out << fmt::format("  Table 2, factors bounded by 1/3 and 3: lower {:.3f} V0, two-sided {:.3f} V0, upper {:.3f} V0 "
+                     "(paper: 0.84, 0.67, 0.72)\n",
+                     v.lower_of_w0, v.two_sided_of_w0, v.upper_of_w0);
 }
 
 }  // namespace
@@ -86,6 +120,10 @@ void register_design_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--vtk-grid", args->vtk_grid, "joint grid points per axis in the VTK workspace (default 21)");
   cmd->add_option("--search-points", args->search_points,
                   "points per face edge of the numerical check of the transmission factors (default 41)");
+  cmd->add_option("--encoder-offsets", args->encoder_offsets_mm,
+                  "encoder offsets, in mm, whose effect on the cube's factors is reported: every slider that much "
+                  "further out than commanded (default 5,10)")
+      ->delimiter(',');
   cmd->callback([args, &ctx] {
     auto fail = [&ctx](const std::string& message) {
       ctx.err << "kinestat design orthoglide: " << message << "\n";
@@ -100,6 +138,8 @@ void register_design_command(CLI::App& app, Context& ctx) {
     if (args->strategy && (*args->strategy < 1 || *args->strategy > 3))
       return fail(fmt::format("--strategy {}: must be 1, 2 or 3", *args->strategy));
     if (args->vtk_grid < 2 || args->search_points < 2) return fail("--vtk-grid and --search-points must be at least 2");
+    for (double e : args->encoder_offsets_mm)
+      if (!std::isfinite(e)) return fail(fmt::format("--encoder-offsets {} mm: every offset must be a finite number", e));
     std::vector<int> strategies = args->strategy ? std::vector<int>{*args->strategy} : std::vector<int>{1, 2, 3};
     std::vector<mechanisms::OrthoglideDesign> designs;
     for (int s : strategies) {
@@ -112,7 +152,7 @@ void register_design_command(CLI::App& app, Context& ctx) {
         "[{:.3f}, {:.3f}]\n\n",
         args->cube_mm, args->mu, 1.0 / args->mu);
     for (const auto& d : designs) {
-      print_design(ctx.out, d, args->search_points);
+      print_design(ctx.out, d, *args);
       if (!args->vtk_dir.empty()) {
         std::vector<std::string> written;
         if (Status st = io::write_orthoglide_workspace_vtk(d, args->vtk_grid, args->vtk_dir, &written); !st.ok())
@@ -121,6 +161,8 @@ void register_design_command(CLI::App& app, Context& ctx) {
       }
       ctx.out << "\n";
     }
+    print_paper_analyses(ctx.out, mechanisms::unit_minimum_switch_points(args->search_points),
+                         mechanisms::unit_dexterous_volumes(1.0 / 3.0, 3.0, kVolumeGrid));
     ctx.exit_code = kExitOk;
   });
 }
