@@ -133,13 +133,12 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
         !s.ok())
       return s;
   FiveBarKernelOptions o;
-  const std::string& m = a.mode;
-  if (m.size() != 2 || (m[0] != '+' && m[0] != '-') || (m[1] != '+' && m[1] != '-'))
-    return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or --", m));
-  o.mode = {m[0] == '+' ? 1 : -1, m[1] == '+' ? 1 : -1};
-  if (a.assembly != "up" && a.assembly != "down")
-    return Status::Invalid(fmt::format("--assembly '{}' must be up or down", a.assembly));
-  o.assembly = a.assembly == "up" ? Assembly::kUp : Assembly::kDown;
+  const auto mode = working_mode_from_name(a.mode);
+  if (!mode) return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or --", a.mode));
+  o.mode = *mode;
+  const auto assembly = assembly_from_name(a.assembly);
+  if (!assembly) return Status::Invalid(fmt::format("--assembly '{}' must be up or down", a.assembly));
+  o.assembly = *assembly;
   if (a.method != "msa" && a.method != "vjm")
     return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", a.method));
   o.method = a.method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
