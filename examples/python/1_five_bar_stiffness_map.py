@@ -14,7 +14,7 @@ import numpy as np
 
 import kinestat as ks
 
-x, y = np.meshgrid(np.linspace(-0.2, 0.2, 201), np.linspace(-0.05, 0.25, 151))  # m
+x, y = np.meshgrid(np.linspace(-0.11, 0.11, 221), np.linspace(-0.03, 0.17, 201))  # m
 kernel = ks.mechanisms.make_reference_five_bar_kernel()  # paper's five-bar, mode ++, assembly up, MSA
 r = ks.mechanisms.evaluate_postures(kernel, np.stack([x, y, 0 * x], axis=-1))
 plt.pcolormesh(x * 1e3, y * 1e3, r.translational_eigenvalues[..., 0] / 1e3, shading="auto", cmap="viridis")

@@ -22,4 +22,8 @@ NotConvergedError, all subclasses of KinestatError.
 from ._kinestat import *  # noqa: F401,F403  (core and elements)
 from ._kinestat import (KinestatError, InputError, SingularError, NotConvergedError,  # noqa: F401
                         __version__)
-from . import solver, msa, vjm, fea, mechanisms, io  # noqa: F401
+
+# The star import brought the extension's submodules; the package's own modules (which add the
+# pure-Python helpers) take their names.
+del solver, msa, vjm, fea, mechanisms, io  # noqa: F821
+from . import solver, msa, vjm, fea, mechanisms, io  # noqa: E402,F401

@@ -27,7 +27,7 @@ def test_sweep_reuses_the_workspace():
 def test_evaluate_postures_equals_single_solves():
     options = mech.FiveBarKernelOptions()
     kernel = mech.make_reference_five_bar_kernel(options)
-    x, y = np.meshgrid(np.linspace(-0.05, 0.05, 3), np.linspace(0.10, 0.16, 4))
+    x, y = np.meshgrid(np.linspace(-0.03, 0.03, 3), np.linspace(0.05, 0.12, 4))
     points = np.stack([x, y, np.zeros_like(x)], axis=-1)  # (4, 3, 3): a grid of points (m)
     r = mech.evaluate_postures(kernel, points)
     assert r.status.shape == (4, 3) and r.stiffness.shape == (4, 3, 6, 6)
