@@ -53,6 +53,10 @@ T unwrap(StatusOr<T>&& r) {
   return std::move(r).value();
 }
 
+// Indices and sizes are checked before they reach C++ code that trusts them (an out-of-range index
+// there would crash the interpreter): InputError "WHAT: INDEX is not in 0..SIZE-1".
+void check_index(long index, long size, const char* what);
+
 // Runs f() with the GIL released (long computations that touch no Python object), so that other
 // Python threads run meanwhile.
 template <class F>

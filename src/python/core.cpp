@@ -61,7 +61,13 @@ void bind_core(py::module_& m) {
       .def_readonly("eigenvalues", &StiffnessIndices::eigenvalues)
       .def_readonly("eigenvectors", &StiffnessIndices::eigenvectors)
       .def_readonly("symmetry_error", &StiffnessIndices::symmetry_error, "||K - K^T||_F / ||K||_F");
-  m.def("stiffness_indices", &stiffness_indices, py::arg("K"), "Every index of a dense symmetric matrix K.");
+  m.def(
+      "stiffness_indices",
+      [](const MatX& K) {
+        if (K.rows() != K.cols()) raise_status(Status::Invalid("stiffness_indices: K must be a square matrix"));
+        return stiffness_indices(K);
+      },
+      py::arg("K"), "Every index of a dense symmetric matrix K.");
 
   py::class_<CartesianIndices>(m, "CartesianIndices",
                                "Indices of a 6x6 Cartesian stiffness (ux uy uz rx ry rz; N/m, N, N m/rad), with the "

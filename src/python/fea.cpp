@@ -47,7 +47,14 @@ void bind_mesh(py::module_& m) {
   m.def("to_quadratic", &to_quadratic, py::arg("linear"), "4-node -> 10-node elements.");
   m.def("validate", [](const TetMesh& t) { check(validate(t)); }, py::arg("mesh"),
         "Raises InputError naming the first bad element.");
-  m.def("element_volume", &element_volume, py::arg("mesh"), py::arg("element"), "Signed volume (m^3).");
+  m.def(
+      "element_volume",
+      [](const TetMesh& t, int e) {
+        check(validate(t));
+        check_index(e, t.num_elements(), "element_volume: element");
+        return element_volume(t, e);
+      },
+      py::arg("mesh"), py::arg("element"), "Signed volume (m^3).");
   m.def(
       "bounding_box",
       [](const TetMesh& t) {

@@ -102,7 +102,13 @@ void bind_results(py::module_& m) {
       py::arg("structure"), py::arg("solution"), py::arg("dir"), py::arg("basename"),
       "ParaView files DIR/BASENAME_caseN.vtu and DIR/BASENAME.pvd (free motions for a singular structure). "
       "Returns the paths written.");
-  m.def("link_load_case_name", &io::link_load_case_name, py::arg("k"));
+  m.def(
+      "link_load_case_name",
+      [](int k) {
+        check_index(k, 6, "link_load_case_name: k");
+        return io::link_load_case_name(k);
+      },
+      py::arg("k"), "'Fx', 'Fy', 'Fz', 'Mx', 'My', 'Mz' for k = 0..5.");
   m.def(
       "write_link_vtu",
       [](const std::string& path, const fea::TetMesh& mesh, const fea::LinkStiffness& r, int k) {

@@ -61,6 +61,11 @@ void raise_status(const Status& status, py::object diagnosis) {
   throw py::error_already_set();
 }
 
+void check_index(long index, long size, const char* what) {
+  if (index < 0 || index >= size)
+    raise_status(Status::Invalid(fmt::format("{}: {} is not in 0..{}", what, index, size - 1)));
+}
+
 Eigen::Matrix4d to_matrix4(const Eigen::Isometry3d& T) { return T.matrix(); }
 
 Eigen::Isometry3d from_matrix4(const Eigen::Matrix4d& M) {

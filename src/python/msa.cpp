@@ -137,7 +137,15 @@ void bind_model(py::module_& m) {
       .def("find_section", &Structure::find_section, py::arg("id"))
       .def_property_readonly("num_dofs", &Structure::num_dofs)
       .def("length_scale", &Structure::length_scale)
-      .def("beam_axes", &Structure::beam_axes, py::arg("beam"), "Local axes (columns) of a beam.")
+      .def(
+          "beam_axes",
+          [](const Structure& s, const Beam& b) {
+            const long n = static_cast<long>(s.nodes().size());
+            check_index(b.node1, n, "beam_axes: node1");
+            check_index(b.node2, n, "beam_axes: node2");
+            return s.beam_axes(b);
+          },
+          py::arg("beam"), "Local axes (columns) of a beam.")
       .def("__repr__", [](const Structure& s) {
         return "Structure('" + s.title() + "': " + std::to_string(s.nodes().size()) + " nodes, " +
                std::to_string(s.beams().size()) + " beams, " + std::to_string(s.joints().size()) + " joints, " +

@@ -13,6 +13,22 @@ namespace {
 
 using namespace vjm;
 
+// q and theta sized for the chain (Eigen does not check sizes in a release build).
+void check_coordinates(const Chain& c, const VecX& q, const VecX& theta) {
+  if (q.size() != c.num_passive() || theta.size() != c.num_virtual())
+    raise_status(Status::Invalid("chain '" + c.name() + "': q needs " + std::to_string(c.num_passive()) +
+                                 " and theta " + std::to_string(c.num_virtual()) + " values; got " +
+                                 std::to_string(q.size()) + " and " + std::to_string(theta.size())));
+}
+
+// A platform state that belongs to these chains.
+void check_state(const std::vector<Chain>& chains, const PlatformState& state) {
+  if (state.chains.size() != chains.size())
+    raise_status(Status::Invalid("platform state of " + std::to_string(state.chains.size()) + " chains given for " +
+                                 std::to_string(chains.size()) + " chains"));
+  for (size_t i = 0; i < chains.size(); ++i) check_coordinates(chains[i], state.chains[i].q, state.chains[i].theta);
+}
+
 // A platform result whose status is singular raises SingularError carrying it (free directions).
 CartesianStiffness checked(StatusOr<CartesianStiffness>&& r, bool raise_on_singular) {
   CartesianStiffness k = unwrap(std::move(r));
@@ -71,12 +87,20 @@ void bind_chain(py::module_& m) {
       .def_property_readonly("springs", &Chain::springs, py::return_value_policy::copy)
       .def_property_readonly("num_passive", &Chain::num_passive)
       .def_property_readonly("num_virtual", &Chain::num_virtual)
-      .def_property("nominal_passive", &Chain::nominal_passive, &Chain::set_nominal_passive)
+      .def_property("nominal_passive", &Chain::nominal_passive,
+                    [](Chain& c, const VecX& q) {
+                      check_coordinates(c, q, VecX::Zero(c.num_virtual()));
+                      c.set_nominal_passive(q);
+                    })
       .def("spring_stiffness", &Chain::spring_stiffness, "K_theta (eq. 6)")
       .def("length_scale", &Chain::length_scale)
       .def("validate", [](const Chain& c) { check(c.validate()); }, "Raises InputError naming the chain and factor.")
       .def(
-          "forward", [](const Chain& c, const VecX& q, const VecX& theta) { return to_matrix4(c.forward(q, theta)); },
+          "forward",
+          [](const Chain& c, const VecX& q, const VecX& theta) {
+            check_coordinates(c, q, theta);
+            return to_matrix4(c.forward(q, theta));
+          },
           py::arg("q"), py::arg("theta"), "Tool pose T(q, theta) (4x4), eq. (1).")
       .def("nominal_pose", [](const Chain& c) { return to_matrix4(c.nominal_pose()); })
       .def("__repr__", [](const Chain& c) {
@@ -88,14 +112,26 @@ void bind_chain(py::module_& m) {
       .def_property_readonly("pose", [](const ChainJacobians& j) { return to_matrix4(j.pose); })
       .def_readonly("Jq", &ChainJacobians::Jq, "6 x n, columns are twists")
       .def_readonly("Jtheta", &ChainJacobians::Jtheta, "6 x m");
-  m.def("jacobians", &jacobians, py::arg("chain"), py::arg("q"), py::arg("theta"), "Pose and Jacobians, eq. (5).");
+  m.def(
+      "jacobians",
+      [](const Chain& c, const VecX& q, const VecX& theta) {
+        check_coordinates(c, q, theta);
+        return jacobians(c, q, theta);
+      },
+      py::arg("chain"), py::arg("q"), py::arg("theta"), "Pose and Jacobians, eq. (5).");
   py::class_<ChainHessians>(m, "ChainHessians")
       .def_readonly("Hqq", &ChainHessians::Hqq)
       .def_readonly("Hqtheta", &ChainHessians::Hqtheta)
       .def_readonly("Hthetaq", &ChainHessians::Hthetaq)
       .def_readonly("Hthetatheta", &ChainHessians::Hthetatheta);
-  m.def("hessians", &hessians, py::arg("chain"), py::arg("q"), py::arg("theta"), py::arg("F"),
-        "d(J^T F)/d(q, theta) at fixed wrench F, eq. (19)-(20).");
+  m.def(
+      "hessians",
+      [](const Chain& c, const VecX& q, const VecX& theta, const Vec6& F) {
+        check_coordinates(c, q, theta);
+        return hessians(c, q, theta, F);
+      },
+      py::arg("chain"), py::arg("q"), py::arg("theta"), py::arg("F"),
+      "d(J^T F)/d(q, theta) at fixed wrench F, eq. (19)-(20).");
   m.def(
       "pose_difference",
       [](const Eigen::Matrix4d& to, const Eigen::Matrix4d& from) {
@@ -144,6 +180,7 @@ void bind_equilibrium(py::module_& m) {
   m.def(
       "chain_equilibrium",
       [](const Chain& c, const Vec6& d, const EquilibriumOptions& o, const ChainState* start) {
+        if (start) check_coordinates(c, start->q, start->theta);
         return unwrap(without_gil([&] { return chain_equilibrium(c, d, o, start); }));
       },
       py::arg("chain"), py::arg("displacement"), py::arg("options") = EquilibriumOptions{},
@@ -180,6 +217,7 @@ void bind_stiffness(py::module_& m) {
   m.def(
       "loaded_stiffness",
       [](const Chain& c, const ChainState& s, const StiffnessOptions& o) {
+        check_coordinates(c, s.q, s.theta);
         return unwrap(without_gil([&] { return loaded_stiffness(c, s, o); }));
       },
       py::arg("chain"), py::arg("state"), py::arg("options") = StiffnessOptions{},
@@ -198,6 +236,7 @@ void bind_stiffness(py::module_& m) {
       "platform_loaded_stiffness",
       [](const std::vector<Chain>& chains, const PlatformState& state, const StiffnessOptions& o,
          bool raise_on_singular) {
+        check_state(chains, state);
         return checked(without_gil([&] { return platform_loaded_stiffness(chains, state, o); }), raise_on_singular);
       },
       py::arg("chains"), py::arg("state"), py::arg("options") = StiffnessOptions{}, py::kw_only(),

@@ -101,7 +101,14 @@ def test_model_file_matches_the_model_in_code(source_dir):
                                          "orthoglide_bad.yaml")
 
 
-def test_transforms_are_checked():
-    c = vjm.Chain()
+def test_bad_transforms_and_sizes_raise_instead_of_crashing():
+    c = vjm.Chain("leg")
     with pytest.raises(ks.InputError, match="rigid transform"):
         c.add_transform(np.diag([2.0, 1, 1, 1]), "not a rotation")
+    c.add_passive(vjm.JointType.REVOLUTE, [0, 0, 1], 0.0, "hinge")
+    c.add_translation([0.5, 0, 0], "link")
+    with pytest.raises(ks.InputError, match="q needs 1 and theta 0"):
+        c.forward([0.1, 0.2], [])
+    np.testing.assert_allclose(c.forward([np.pi / 2], [])[:3, 3], [0, 0.5, 0], atol=1e-15)
+    with pytest.raises(ks.InputError, match="0..5"):
+        ks.io.link_load_case_name(6)
