@@ -4,6 +4,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 
 #include "kinestat/core/status.hpp"
@@ -31,5 +32,7 @@ void encode_non_finite(nlohmann::json& j);
 
 // Writes `j` indented; kInvalidInput naming the path when it cannot be written.
 Status write_json(const std::string& path, const nlohmann::json& j);
+// The same text to a stream (`--json -` writes to stdout).
+void write_json(std::ostream& out, const nlohmann::json& j);
 
 }  // namespace kinestat::io
