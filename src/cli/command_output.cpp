@@ -24,6 +24,11 @@ std::ostream& Output::report() {
 
 std::ostream& Output::progress() { return options_.quiet ? discard_ : ctx_.err; }
 
+int Output::finish(const std::string& command, const Status& result) {
+  if (!result.ok() && options_.quiet) return report_failure(ctx_, command, result);
+  return exit_code_for(result);
+}
+
 Status Output::write_json(const nlohmann::json& j) {
   if (options_.json.empty()) return Status::Ok();
   if (options_.json == "-") {

@@ -32,6 +32,9 @@ class Output {
   // To the --json file (its folder created) or to stdout; Ok without --json. kInvalidInput naming
   // the file when it cannot be written.
   Status write_json(const nlohmann::json& j);
+  // The exit status of a computed result (0, or 3 for a singular one). A result that is not ok is
+  // explained in the report; with --quiet, which drops the report, through report_failure instead.
+  int finish(const std::string& command, const Status& result);
 
  private:
   Context& ctx_;

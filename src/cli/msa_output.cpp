@@ -33,7 +33,7 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
       return report_failure(ctx, command, st);
     for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
   }
-  return exit_code_for(sol.status);
+  return out.finish(command, sol.status);
 }
 
 }  // namespace kinestat::cli

@@ -88,7 +88,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   out.report() << fmt::format("  {} chains; tool point ({:.4f}, {:.4f}, {:.4f}) mm\n\n", chains->size(), tool.x(),
                               tool.y(), tool.z())
                << stiffness_report(*K0, "unloaded, eq. 10");
-  int code = exit_code_for(K0->status);
+  Status result = K0->status;
 
   if (displacement || wrench) {
     StatusOr<vjm::PlatformState> state = displacement ? vjm::platform_equilibrium(*chains, *displacement)
@@ -106,10 +106,10 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
     if (!KF.ok()) return bad(KF.status());
     results.loaded = *KF;
     out.report() << stiffness_report(*KF, "loaded, eq. 21");
-    if (code == kExitOk) code = exit_code_for(KF->status);
+    if (result.ok()) result = KF->status;
   }
   if (Status s = out.write_json(io::vjm_results_to_json(results)); !s.ok()) return bad(s);
-  return code;
+  return out.finish("vjm", result);
 }
 
 }  // namespace

@@ -232,6 +232,21 @@ TEST(CommandConventions, EveryCommandReportsFailuresTheSameWay) {
   }
 }
 
+// A singular result is explained in the report; with --quiet (no report) the reason still reaches
+// stderr, through the same one-line-prefix report as every failure.
+TEST(CommandConventions, QuietSingularResultsStillSayWhy) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"solve", kModels + "released_chain.yaml"},
+        std::vector<std::string>{"fivebar", "--theta1", "30", "--theta2", "30"},
+        std::vector<std::string>{"vjm", single_leg_model()}}) {
+    const CliRun r = run_cli(with(args, {"--quiet"}));
+    EXPECT_EQ(r.code, kExitSingular) << args[0];
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_EQ(r.err.rfind("kinestat " + args[0] + ": ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(args[0] == "vjm" ? "zero stiffness" : "free motion 1"), std::string::npos) << r.err;
+  }
+}
+
 TEST(CommandConventions, VtkFilesCarryTheirUnits) {
   const auto dir = fresh_dir("conventions_vtk");
   ASSERT_EQ(run_cli({"solve", kModels + "cantilever.yaml", "--vtk", dir.string(), "--quiet"}).code, kExitOk);
