@@ -162,7 +162,7 @@ class VjmParser : public YamlFields {
     Material mat;
     if (const YAML::Node m = f["material"]; m.IsDefined()) {
       if (f["E"].IsDefined() || f["nu"].IsDefined()) fail(m, it, "give either 'material' or 'E' and 'nu', not both");
-      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'");
+      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'", u_.stress());
       if (!parsed.ok()) fail(m, it, parsed.status().message());
       mat = *parsed;
     } else {

@@ -7,8 +7,10 @@
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -33,8 +35,9 @@ TEST(FeaVtk, SixFilesReadBackWithFieldsAndUniformAxialStress) {
   std::filesystem::remove_all(dir);
   std::vector<std::string> written;
   ASSERT_TRUE(write_link_vtu_files(dir, "bar", mesh, *r, &written).ok());
-  ASSERT_EQ(written.size(), 6u);
+  ASSERT_EQ(written.size(), 7u);  // six load cases and the .pvd that groups them
   EXPECT_EQ(std::filesystem::path(written[3]).filename(), "bar_Mx.vtu");
+  EXPECT_EQ(std::filesystem::path(written[6]).filename(), "bar.pvd");
 
   for (int k = 0; k < 6; ++k) {
     vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -44,6 +47,9 @@ TEST(FeaVtk, SixFilesReadBackWithFieldsAndUniformAxialStress) {
     ASSERT_EQ(grid->GetNumberOfPoints(), mesh.num_nodes());
     ASSERT_EQ(grid->GetNumberOfCells(), mesh.num_elements());
     EXPECT_EQ(grid->GetCellType(0), VTK_QUADRATIC_TETRA);
+    auto* units = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("units"));
+    ASSERT_NE(units, nullptr);
+    EXPECT_EQ(units->GetValue(1), k < 3 ? "displacement: m per N" : "displacement: m per N m");
     vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
     vtkDataArray* vm = grid->GetCellData()->GetArray("von_mises");
     ASSERT_TRUE(u && vm);
