@@ -213,7 +213,9 @@ void bind_orthoglide_design(py::module_& m) {
   py::class_<OrthoglideDesignCheck>(m, "OrthoglideDesignCheck")
       .def_readonly("joint_space", &OrthoglideDesignCheck::joint_space)
       .def_readonly("cube", &OrthoglideDesignCheck::cube);
-  m.def("check_design", &check_design, py::arg("design"), py::arg("n") = 101, py::call_guard<py::gil_scoped_release>());
+  m.def("check_design", &check_design, py::arg("design"), py::arg("n") = 101,
+        py::arg("encoder_offsets") = std::vector<double>{}, py::call_guard<py::gil_scoped_release>(),
+        "Numerical search of the factors over the cube and the joint-bounded workspace; encoder_offsets (m).");
   py::class_<JointWorkspaceSamples>(m, "JointWorkspaceSamples", "n^3 joint grid, index i + n (j + n k).")
       .def_readonly("n", &JointWorkspaceSamples::n)
       .def_property_readonly("rho", [](const JointWorkspaceSamples& s) { return rows(s.rho); }, "(n^3, 3) m")
