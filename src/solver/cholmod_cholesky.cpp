@@ -1,4 +1,6 @@
 // CHOLMOD backend of SparseCholesky. Internal: nothing outside this file includes cholmod.h.
+#include "solver/cholmod_cholesky.hpp"
+
 #include <cholmod.h>
 
 #include <algorithm>
@@ -9,8 +11,6 @@
 #include <string>
 
 #include <fmt/format.h>
-
-#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::solver {
 namespace {
@@ -230,7 +230,7 @@ class CholmodCholesky final : public SparseCholesky {
 
 }  // namespace
 
-std::unique_ptr<SparseCholesky> SparseCholesky::Create(const SparseCholeskyOptions& options) {
+std::unique_ptr<SparseCholesky> make_cholmod_cholesky(const SparseCholeskyOptions& options) {
   return std::make_unique<CholmodCholesky>(options);
 }
 
