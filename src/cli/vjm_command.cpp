@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 
 #include "kinestat/cli/app.hpp"
-#include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
-#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::cli {
@@ -27,15 +27,8 @@ struct VjmArgs {
 };
 
 // The stiffness, compliance, indices and lost directions of one VJM result.
-std::string stiffness_report(const vjm::CartesianStiffness& K, const std::string& what) {
-  std::string out = msa::matrix6_report(K.stiffness, "stiffness K (" + what + ")", "N/m, N/rad; N m/m, N m/rad");
-  if (K.compliance_defined)
-    out += msa::matrix6_report(K.compliance, "compliance C = K^-1 (" + what + ")", "m/N, m/(N m); rad/N, rad/(N m)");
-  out += "  indices of K:\n" + msa::indices_report(stiffness_indices(K.stiffness));
-  for (const Vec6& d : K.free_directions) out += "  LOST (free, zero stiffness): " + vjm::describe_twist(d) + "\n";
-  for (const Vec6& d : K.rigid_directions) out += "  LOST (rigid, infinite stiffness): " + vjm::describe_twist(d) + "\n";
-  if (!K.status.ok()) out += "  STATUS: " + K.status.message() + "\n";
-  return out;
+std::string stiffness_report(const CartesianStiffness& K, const std::string& what) {
+  return cartesian_stiffness_report(K, "Cartesian stiffness (" + what + ")");
 }
 
 template <int N>
@@ -48,6 +41,11 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   auto bad = [&](const Status& s) { return report_failure(ctx, "vjm", s); };
   StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
   if (!model.ok()) return bad(model.status());
+  if (Status s = io::resolve_fea_springs(*model, [&ctx](const std::string& stage) {
+        ctx.err << "vjm: " << stage << " ...\n";
+      });
+      !s.ok())
+    return bad(s);
   std::optional<Vec3> point;
   if (!a.point.empty()) {
     StatusOr<Vec3> p = vector_option<3>(a.point, "--point", "x,y,z in mm");
@@ -56,7 +54,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   }
   StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, point);
   if (!chains.ok()) return bad(chains.status());
-  StatusOr<vjm::CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
+  StatusOr<CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
   if (!K0.ok()) return bad(K0.status());
 
   std::string out = fmt::format("kinestat VJM report{}\n", model->title.empty() ? "" : ": " + model->title);
@@ -91,7 +89,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
                        t(0) / kMm, t(1) / kMm, t(2) / kMm, t(3) / kDeg, t(4) / kDeg, t(5) / kDeg);
     out += fmt::format("  wrench F = ({:.6e}, {:.6e}, {:.6e}) N, M = ({:.6e}, {:.6e}, {:.6e}) N m\n", F(0), F(1),
                        F(2), F(3), F(4), F(5));
-    StatusOr<vjm::CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
+    StatusOr<CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
     if (!KF.ok()) {
       ctx.out << out;
       return bad(KF.status());
