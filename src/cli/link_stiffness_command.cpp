@@ -13,17 +13,13 @@
 #include "kinestat/cli/app.hpp"
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
+#include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/fea/mesh_convergence.hpp"
-#include "kinestat/fea/result_cache.hpp"
-#include "kinestat/fea/surface_mesher.hpp"
 #include "kinestat/io/fea_vtk.hpp"
 
 namespace kinestat::cli {
 
 namespace {
-
-// Meshes with more nodes than this print their progress (assembly and factorization take seconds).
-constexpr int kProgressNodes = 20000;
 
 nlohmann::json matrix_json(const Mat6& A) {
   nlohmann::json rows = nlohmann::json::array();
@@ -39,15 +35,16 @@ nlohmann::json result_json(const std::string& mesh_file, const fea::LinkStiffnes
                     {"nodes_per_element", r.nodes_per_element}, {"dofs", r.num_dofs}}},
           {"from_cache", from_cache},
           {"reference_model", fea::reference_model_name(r.reference_model)},
-          {"reference_point_m", vec(r.reference_point)},
+          {"reference_point_m", vec(r.cartesian.point)},
           {"units", {{"dofs", "ux uy uz rx ry rz in the mesh (link) frame"},
                      {"stiffness", "N/m | N/rad (rows ux uy uz), N | N m/rad (rows rx ry rz)"},
                      {"compliance", "m/N | m/(N m) (rows ux uy uz), rad/N | rad/(N m) (rows rx ry rz)"}}},
-          {"stiffness", matrix_json(r.stiffness)},
-          {"compliance", matrix_json(r.compliance)},
+          {"stiffness", matrix_json(r.cartesian.stiffness)},
+          {"compliance", matrix_json(r.cartesian.compliance)},
           {"symmetry_error", {{"compliance", r.compliance_symmetry_error}, {"stiffness", r.stiffness_symmetry_error}}},
-          {"eigenvalues_SI_mixed_units", {{"stiffness", vec(r.stiffness_eigenvalues)},
-                                          {"compliance", vec(r.compliance_eigenvalues)}}}};
+          {"eigenvalues_SI_mixed_units",
+           {{"stiffness", r.cartesian.indices ? vec(r.cartesian.indices->eigenvalues) : std::vector<double>{}},
+            {"compliance", vec(r.compliance_eigenvalues)}}}};
 }
 
 }  // namespace
@@ -95,9 +92,16 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       if (!out) fail(Status::Invalid(args->json_file + ": cannot write the JSON file"));
     };
     const double scale = args->unit == "mm" ? 1e-3 : 1.0;
+    fea::LinkStiffnessRequest request;
+    request.mesh_file = args->mesh;
+    request.unit_scale = scale;
+    request.mesh_size = args->size * scale;  // 0: the default size
+    request.quadratic = !args->linear;
+    request.cache_dir = args->cache_dir;
     auto material = fea::parse_material(args->material, "--material " + args->material);
     if (!material.ok()) return fail(material.status());
-    fea::LinkStiffnessOptions options;
+    request.material = *material;
+    fea::LinkStiffnessOptions& options = request.options;
     auto clamp = fea::parse_region(args->clamp, scale, "--clamp " + args->clamp);
     if (!clamp.ok()) return fail(clamp.status());
     auto reference = fea::parse_region(args->reference, scale, "--reference " + args->reference);
@@ -112,60 +116,26 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       options.reference_point = Vec3((*p)[0], (*p)[1], (*p)[2]) * scale;
     }
     options.keep_fields = !args->vtk_dir.empty();
+    options.progress = [&ctx](const std::string& stage) { ctx.err << "link-stiffness: " << stage << " ...\n"; };
 
-    auto surface = fea::check_surface_file(args->mesh);
-    if (!surface.ok()) return fail(surface.status());
-    fea::MeshingOptions meshing;
-    meshing.unit_scale = scale;
-    meshing.quadratic = !args->linear;
-    meshing.size = args->size * scale;
-    if (!(meshing.size > 0.0)) meshing.size = fea::default_mesh_size(*surface, scale);
-    std::string cache_key;
-    if (!args->cache_dir.empty()) {
-      auto identity = fea::surface_mesh_identity(args->mesh, meshing);
-      if (!identity.ok()) return fail(identity.status());
-      cache_key = fea::link_stiffness_cache_key(*identity, *material, options);
-      if (args->vtk_dir.empty()) {
-        if (auto cached = fea::load_cached_link_stiffness(args->cache_dir, cache_key)) {
-          ctx.out << "(from cache " << args->cache_dir << "/" << cache_key << ".txt)\n"
-                  << fea::link_stiffness_report(*cached);
-          return write_json(*cached, true);
-        }
-      }
-    }
-    auto mesh = fea::mesh_surface_file(args->mesh, meshing);
-    if (!mesh.ok()) return fail(mesh.status());
-    if (mesh->num_nodes() > kProgressNodes)
-      options.progress = [&ctx](const std::string& stage) { ctx.err << "link-stiffness: " << stage << " ...\n"; };
-    auto result = fea::link_stiffness(*mesh, *material, options);
-    if (!result.ok()) return fail(result.status());
-    ctx.out << fmt::format("{}: {} triangles, meshed with size {:g} m; material {} (E = {:g} Pa, nu = {:g})\n",
-                           args->mesh, surface->triangles, meshing.size, material->id, material->E, material->nu())
-            << fea::link_stiffness_report(*result);
-    if (!cache_key.empty())
-      if (Status s = fea::store_cached_link_stiffness(args->cache_dir, cache_key, *result); !s.ok()) return fail(s);
-    if (!args->vtk_dir.empty()) {
+    auto run = fea::compute_link_stiffness(request);
+    if (!run.ok()) return fail(run.status());
+    ctx.out << run->report;
+    if (run->mesh) {
       std::vector<std::string> written;
       const std::string stem = std::filesystem::path(args->mesh).stem().string();
-      if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *mesh, *result, &written); !s.ok()) return fail(s);
+      if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *run->mesh, run->result, &written); !s.ok())
+        return fail(s);
       for (const auto& w : written) ctx.out << "wrote " << w << "\n";
     }
     if (args->convergence) {
       // The finest mesh is the one just solved; two coarser ones give the three points Richardson needs.
-      auto make = [&](double h) {
-        fea::MeshingOptions m = meshing;
-        m.size = h;
-        return fea::mesh_surface_file(args->mesh, m);
-      };
-      fea::LinkStiffnessOptions study_options = options;
-      study_options.keep_fields = false;
-      study_options.progress = nullptr;
-      const double h = meshing.size;
-      auto study = fea::mesh_convergence_study(make, {2.0 * h, std::sqrt(2.0) * h, h}, *material, study_options);
+      const double h = run->mesh_size;
+      auto study = fea::link_stiffness_convergence(request, {2.0 * h, std::sqrt(2.0) * h, h});
       if (!study.ok()) return fail(study.status());
       ctx.out << "\n" << fea::convergence_report(*study);
     }
-    write_json(*result, false);
+    write_json(run->result, run->from_cache);
   });
 }
 
