@@ -41,11 +41,9 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   auto bad = [&](const Status& s) { return report_failure(ctx, "vjm", s); };
   StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
   if (!model.ok()) return bad(model.status());
-  if (Status s = io::resolve_fea_springs(*model, [&ctx](const std::string& stage) {
-        ctx.err << "vjm: " << stage << " ...\n";
-      });
-      !s.ok())
-    return bad(s);
+  // The model's `fea:` link springs: meshing and FEA (or their cache), with progress on stderr.
+  auto progress = [&ctx](const std::string& stage) { ctx.err << "vjm: " << stage << " ...\n"; };
+  if (Status s = io::resolve_fea_springs(*model, progress); !s.ok()) return bad(s);
   std::optional<Vec3> point;
   if (!a.point.empty()) {
     StatusOr<Vec3> p = vector_option<3>(a.point, "--point", "x,y,z in mm");

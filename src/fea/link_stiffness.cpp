@@ -202,7 +202,7 @@ std::string link_stiffness_report(const LinkStiffness& r) {
     os << fmt::format("  solver: {} dofs, {}, ordering {}, nnz(L) = {}; assembly {:.3f} s, factor+solve {:.3f} s\n",
                       r.num_dofs, r.backend, r.factorization.ordering, r.factorization.nnz_factor, r.assembly_seconds,
                       r.solve_seconds);
-  os << cartesian_stiffness_report(r.cartesian, "  reference point");
+  os << cartesian_stiffness_report(r.cartesian, "  6x6 of the reference");
   os << fmt::format("  symmetry error (diagonally scaled, Frobenius): compliance {:.2e}, stiffness {:.2e}\n",
                     r.compliance_symmetry_error, r.stiffness_symmetry_error);
   os << "  eigenvalues of C (SI, mixed units):";

@@ -42,8 +42,10 @@ TEST(LinkStiffnessRequest, EqualsMeshingAndSolvingByHandThenComesFromTheCache) {
   StatusOr<LinkStiffness> by_hand = link_stiffness(*mesh, request.material, request.options);
   ASSERT_TRUE(by_hand.ok());
   EXPECT_EQ(first->result.num_dofs, by_hand->num_dofs);
+  // Same mesh (fixed seed) and system; the parallel assembly and BLAS sum in varying order, so the
+  // two solves agree to round-off amplified by the conditioning (measured 3e-12 relative).
   EXPECT_LT((first->result.cartesian.compliance - by_hand->cartesian.compliance).norm(),
-            1e-12 * by_hand->cartesian.compliance.norm());
+            1e-9 * by_hand->cartesian.compliance.norm());
 
   StatusOr<LinkStiffnessRun> second = compute_link_stiffness(request);
   ASSERT_TRUE(second.ok());
