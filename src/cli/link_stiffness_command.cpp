@@ -15,8 +15,7 @@
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/mesh_convergence.hpp"
-#include "kinestat/fea/result_cache.hpp"
-#include "kinestat/fea/surface_mesher.hpp"
+#include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/io/fea_vtk.hpp"
 #include "kinestat/io/link_stiffness_json.hpp"
 
@@ -35,22 +34,6 @@ constexpr double kMPa = 1e6;
 // with those of 5, 3.33 and 2.5 mm.
 constexpr double kElementsAcross = 3.0;
 constexpr double kRefinement = 1.5;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// Meshes the surface, saying so on `progress` (meshing a part takes seconds).
-StatusOr<fea::TetMesh> mesh_with_progress(const std::string& path, const fea::MeshingOptions& meshing,
-                                          std::ostream& progress) {
-  progress << fmt::format("link-stiffness: meshing {} with size {:g} mm ...\n", path, meshing.size / kMm);
-  const auto t0 = std::chrono::steady_clock::now();
-  StatusOr<fea::TetMesh> mesh = fea::mesh_surface_file(path, meshing);
-  if (mesh.ok())
-    progress << fmt::format("link-stiffness: {} nodes, {} tetrahedra ({:.1f} s)\n", mesh->num_nodes(),
-                            mesh->num_elements(), seconds_since(t0));
-  return mesh;
-}
 
 // The estimated relative error of each diagonal compliance term of `C` (the result printed above,
 // on a mesh of the study or not) against the study's Richardson limit.
@@ -111,9 +94,16 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     auto fail = [&ctx](const Status& s) { ctx.exit_code = report_failure(ctx, "link-stiffness", s); };
     Output out(ctx, args->out);
     const double scale = args->unit == "mm" ? 1e-3 : 1.0;
+    fea::LinkStiffnessRequest request;
+    request.mesh_file = args->mesh;
+    request.unit_scale = scale;
+    request.mesh_size = args->size_mm * kMm;  // 0: the default size
+    request.quadratic = !args->linear;
+    request.cache_dir = args->cache_dir;
     auto material = fea::parse_material(args->material, "--material " + args->material, kMPa);
     if (!material.ok()) return fail(material.status());
-    fea::LinkStiffnessOptions options;
+    request.material = *material;
+    fea::LinkStiffnessOptions& options = request.options;
     auto clamp = fea::parse_region(args->clamp, scale, "--clamp " + args->clamp);
     if (!clamp.ok()) return fail(clamp.status());
     auto reference = fea::parse_region(args->reference, scale, "--reference " + args->reference);
@@ -128,69 +118,36 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       options.reference_point = Vec3((*p)[0], (*p)[1], (*p)[2]) * scale;
     }
     options.keep_fields = !args->vtk_dir.empty();
-
-    auto surface = fea::check_surface_file(args->mesh);
-    if (!surface.ok()) return fail(surface.status());
-    fea::MeshingOptions meshing;
-    meshing.unit_scale = scale;
-    meshing.quadratic = !args->linear;
-    meshing.size = args->size_mm * kMm;
-    if (!(meshing.size > 0.0)) meshing.size = fea::default_mesh_size(*surface, scale);
-    auto write_json = [&](const fea::LinkStiffness& r, bool from_cache, const fea::ConvergenceStudy* study) {
-      if (!out.json_wanted()) return Status::Ok();
-      nlohmann::json j = io::link_stiffness_to_json(args->mesh, meshing.size, r, from_cache);
-      if (study) j["convergence"] = io::convergence_study_to_json(*study);
-      return out.write_json(j);
-    };
-    std::string cache_key;
-    if (!args->cache_dir.empty()) {
-      auto identity = fea::surface_mesh_identity(args->mesh, meshing);
-      if (!identity.ok()) return fail(identity.status());
-      cache_key = fea::link_stiffness_cache_key(*identity, *material, options);
-      if (args->vtk_dir.empty() && !args->convergence) {
-        if (auto cached = fea::load_cached_link_stiffness(args->cache_dir, cache_key)) {
-          out.report() << "(from cache " << args->cache_dir << "/" << cache_key << ".txt)\n"
-                       << fea::link_stiffness_report(*cached);
-          if (Status s = write_json(*cached, true, nullptr); !s.ok()) return fail(s);
-          return;
-        }
-      }
-    }
-    auto mesh = mesh_with_progress(args->mesh, meshing, out.progress());
-    if (!mesh.ok()) return fail(mesh.status());
     options.progress = [&out](const std::string& stage) { out.progress() << "link-stiffness: " << stage << " ...\n"; };
-    auto result = fea::link_stiffness(*mesh, *material, options);
-    if (!result.ok()) return fail(result.status());
-    out.report() << fmt::format("{}: {} triangles, meshed with size {:g} mm; material {} (E = {:g} MPa, nu = {:g})\n",
-                                args->mesh, surface->triangles, meshing.size / kMm, material->id, material->E / kMPa,
+
+    auto run = fea::compute_link_stiffness(request);
+    if (!run.ok()) return fail(run.status());
+    out.report() << fmt::format("material {} (E = {:g} MPa, nu = {:g})\n", material->id, material->E / kMPa,
                                 material->nu())
-                 << fea::link_stiffness_report(*result);
-    if (!cache_key.empty())
-      if (Status s = fea::store_cached_link_stiffness(args->cache_dir, cache_key, *result); !s.ok()) return fail(s);
-    if (!args->vtk_dir.empty()) {
+                 << run->report;
+    if (run->mesh) {
       std::vector<std::string> written;
       const std::string stem = std::filesystem::path(args->mesh).stem().string();
-      if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *mesh, *result, &written); !s.ok()) return fail(s);
+      if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *run->mesh, run->result, &written); !s.ok())
+        return fail(s);
       for (const auto& w : written) out.report() << "wrote " << w << "\n";
     }
     std::optional<fea::ConvergenceStudy> study;
     if (args->convergence) {
-      const double thinnest = (surface->hi - surface->lo).minCoeff() * scale;
-      const double h = std::min(meshing.size, thinnest / kElementsAcross);
-      auto make = [&](double size) -> StatusOr<fea::TetMesh> {
-        if (size == meshing.size) return *mesh;  // the mesh just solved
-        fea::MeshingOptions m = meshing;
-        m.size = size;
-        return mesh_with_progress(args->mesh, m, out.progress());
-      };
-      auto s = fea::mesh_convergence_study(make, {h, h / kRefinement, h / (kRefinement * kRefinement)}, *material,
-                                           options);
+      const double thinnest = (run->surface.hi - run->surface.lo).minCoeff() * scale;
+      const double h = std::min(run->mesh_size, thinnest / kElementsAcross);
+      auto s = fea::link_stiffness_convergence(request, {h, h / kRefinement, h / (kRefinement * kRefinement)});
       if (!s.ok()) return fail(s.status());
       study = *s;
       out.report() << "\n"
-                   << fea::convergence_report(*study) << result_error_line(*study, result->compliance, meshing.size);
+                   << fea::convergence_report(*study)
+                   << result_error_line(*study, run->result.cartesian.compliance, run->mesh_size);
     }
-    if (Status s = write_json(*result, false, study ? &*study : nullptr); !s.ok()) return fail(s);
+    if (out.json_wanted()) {
+      nlohmann::json j = io::link_stiffness_to_json(args->mesh, run->mesh_size, run->result, run->from_cache);
+      if (study) j["convergence"] = io::convergence_study_to_json(*study);
+      if (Status s = out.write_json(j); !s.ok()) return fail(s);
+    }
     ctx.exit_code = kExitOk;
   });
 }

@@ -8,10 +8,10 @@
 #include <fmt/format.h>
 
 #include "cli/command_output.hpp"
-#include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/io/vjm_results_json.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
-#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::cli {
@@ -29,15 +29,8 @@ struct VjmArgs {
 };
 
 // The stiffness, compliance, indices and lost directions of one VJM result.
-std::string stiffness_report(const vjm::CartesianStiffness& K, const std::string& what) {
-  std::string out = msa::matrix6_report(K.stiffness, "stiffness K (" + what + ")", "N/m, N/rad; N m/m, N m/rad");
-  if (K.compliance_defined)
-    out += msa::matrix6_report(K.compliance, "compliance C = K^-1 (" + what + ")", "m/N, m/(N m); rad/N, rad/(N m)");
-  out += "  indices of K:\n" + msa::indices_report(stiffness_indices(K.stiffness));
-  for (const Vec6& d : K.free_directions) out += "  LOST (free, zero stiffness): " + vjm::describe_twist(d) + "\n";
-  for (const Vec6& d : K.rigid_directions) out += "  LOST (rigid, infinite stiffness): " + vjm::describe_twist(d) + "\n";
-  if (!K.status.ok()) out += "  STATUS: " + K.status.message() + "\n";
-  return out;
+std::string stiffness_report(const CartesianStiffness& K, const std::string& what) {
+  return cartesian_stiffness_report(K, "Cartesian stiffness (" + what + ")");
 }
 
 template <int N>
@@ -71,9 +64,14 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   }
   StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
   if (!model.ok()) return bad(model.status());
+  // The model's `fea:` link springs: meshing and FEA (or their cache), with progress on stderr.
+  auto progress = [&ctx, &a](const std::string& stage) {
+    if (!a.out.quiet) ctx.err << "vjm: " << stage << " ...\n";
+  };
+  if (Status s = io::resolve_fea_springs(*model, progress); !s.ok()) return bad(s);
   StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, point);
   if (!chains.ok()) return bad(chains.status());
-  StatusOr<vjm::CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
+  StatusOr<CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
   if (!K0.ok()) return bad(K0.status());
 
   io::VjmResults results;
@@ -102,7 +100,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
                  << fmt::format("  wrench F = ({:.6e}, {:.6e}, {:.6e}) N, M = ({:.6e}, {:.6e}, {:.6e}) N mm\n", F(0),
                                 F(1), F(2), F(3) / kMm, F(4) / kMm, F(5) / kMm);
     results.state = *state;
-    StatusOr<vjm::CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
+    StatusOr<CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
     if (!KF.ok()) return bad(KF.status());
     results.loaded = *KF;
     out.report() << stiffness_report(*KF, "loaded, eq. 21");

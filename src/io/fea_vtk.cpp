@@ -63,8 +63,8 @@ Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const f
   note->SetName("load_case");
   note->InsertNextValue(fmt::format("unit {} = 1 {} on the reference point ({:g}, {:g}, {:g}) m; coordinates m, "
                                     "displacement m per {}, von_mises Pa per {}",
-                                    link_load_case_name(k), force ? "N" : "N m", result.reference_point.x(),
-                                    result.reference_point.y(), result.reference_point.z(), force ? "N" : "N m",
+                                    link_load_case_name(k), force ? "N" : "N m", result.cartesian.point.x(),
+                                    result.cartesian.point.y(), result.cartesian.point.z(), force ? "N" : "N m",
                                     force ? "N" : "N m"));
   grid->GetFieldData()->AddArray(note);
   const std::string per = force ? "N" : "N m";

@@ -70,9 +70,9 @@ json load_case_json(const msa::Structure& s, const msa::LoadCaseResult& r) {
   return c;
 }
 
-json cartesian_json(const msa::Structure& s, const msa::CartesianStiffness& cs) {
+json cartesian_json(const msa::Structure& s, const CartesianStiffness& cs) {
   json c;
-  c["node"] = node_id(s, cs.node);
+  c["node"] = node_id(s, s.report_node().value_or(-1));  // Solution::cartesian is the report node's
   c["axes"] = "global";
   c["order"] = {"ux", "uy", "uz", "rx", "ry", "rz"};
   c["compliance"] = to_rows(cs.compliance);
@@ -81,7 +81,7 @@ json cartesian_json(const msa::Structure& s, const msa::CartesianStiffness& cs) 
   c["stiffness"] = cs.stiffness_defined ? to_rows(cs.stiffness) : json();
   c["stiffness_units"] = unit_matrix(false);
   c["note"] = cs.note;
-  c["indices"] = cs.stiffness_defined ? stiffness_indices_to_json(cs.indices) : json();
+  c["indices"] = cs.indices ? stiffness_indices_to_json(*cs.indices) : json();
   return c;
 }
 

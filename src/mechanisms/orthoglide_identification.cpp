@@ -55,7 +55,7 @@ OrthoglideStiffnessModel with_inputs(const OrthoglideStiffnessModel& start, cons
 StatusOr<double> model_compliance(const OrthoglideStiffnessModel& m, const ComplianceTarget& t) {
   StatusOr<std::vector<vjm::Chain>> chains = orthoglide_chains(m, t.architecture, t.point);
   if (!chains.ok()) return chains.status();
-  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
+  StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
   if (!K.ok()) return K.status();
   if (!K->compliance_defined) return Status::Singular(fmt::format("{}: {}", t.label, K->status.message()));
   return K->compliance(t.row, t.col);

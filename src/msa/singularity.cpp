@@ -1,4 +1,4 @@
-#include "kinestat/msa/singularity.hpp"
+#include "msa/singularity_diagnosis.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -96,7 +96,8 @@ std::string describe_node_motion(const Vec6& m, double L) {
 }
 
 SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map, const solver::SparseMatrix& Kr,
-                                          const solver::FactorizationReport& report, double tolerance) {
+                                          const solver::FactorizationReport& report, double tolerance,
+                                          const solver::SparseCholeskyOptions& options) {
   SingularityDiagnosis d;
   d.singular = true;
   std::vector<int> cols = report.weak_columns;
@@ -164,7 +165,7 @@ SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map,
 
   const int block = std::min<int>(Kr.rows(), static_cast<int>(cols.size()) + 6 + static_cast<int>(rigid_modes.cols()));
   // Modes count as free up to the pivot tolerance; at least the lowest one is always described.
-  auto ns = solver::near_null_space(Kr, block, tolerance);
+  auto ns = solver::near_null_space(Kr, block, tolerance, options);
   if (!ns.ok()) {
     d.message = text + "  (the free motions could not be computed: " + ns.status().message() + ")";
     return d;

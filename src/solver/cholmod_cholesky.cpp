@@ -1,4 +1,6 @@
 // CHOLMOD backend of SparseCholesky. Internal: cholmod.h is seen by this file and library_versions.cpp only.
+#include "solver/cholmod_cholesky.hpp"
+
 #include <cholmod.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include <fmt/format.h>
 
 #include "kinestat/solver/library_versions.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::solver {
 namespace {
@@ -212,7 +213,7 @@ class CholmodCholesky final : public SparseCholesky {
 
 }  // namespace
 
-std::unique_ptr<SparseCholesky> SparseCholesky::Create(const SparseCholeskyOptions& options) {
+std::unique_ptr<SparseCholesky> make_cholmod_cholesky(const SparseCholeskyOptions& options) {
   return std::make_unique<CholmodCholesky>(options);
 }
 

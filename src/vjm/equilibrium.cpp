@@ -6,8 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "vjm/bordered_system.hpp"
+#include "kinestat/vjm/platform.hpp"
 #include "kinestat/vjm/stiffness.hpp"
+#include "vjm/bordered_system.hpp"
 
 namespace kinestat::vjm {
 
@@ -161,22 +162,6 @@ StatusOr<ChainState> chain_equilibrium(const Chain& chain, const Vec6& displacem
                               "cannot move in",
                               chain.name(), rep.summary()));
   return s;
-}
-
-Status validate_platform(const std::vector<Chain>& chains) {
-  if (chains.empty()) return Status::Invalid("the platform has no chains; add at least one");
-  for (const Chain& c : chains)
-    if (Status s = c.validate(); !s.ok()) return s;
-  const Vec3 p0 = chains[0].nominal_pose().translation();
-  for (const Chain& c : chains) {
-    const double gap = (c.nominal_pose().translation() - p0).norm();
-    if (gap > 1e-9 * std::max(c.length_scale(), chains[0].length_scale()))
-      return Status::Invalid(
-          fmt::format("chain '{}': its nominal tool point is {:.6g} m from chain '{}''s; the "
-                      "platform is not assembled (check the nominal passive coordinates)",
-                      c.name(), gap, chains[0].name()));
-  }
-  return Status::Ok();
 }
 
 namespace {

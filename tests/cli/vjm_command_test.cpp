@@ -17,10 +17,11 @@ const std::string kSource = KINESTAT_SOURCE_DIR;
 const std::string kPuu = kSource + "/models/orthoglide_puu.yaml";
 const std::string kPrpar = kSource + "/models/orthoglide_prpar.yaml";
 
-// The 6x6 printed after the line that contains `title`.
-Mat6 printed_matrix(const std::string& out, const std::string& title) {
+// The 6x6 printed after the line that contains `title`, in the report section headed `section`.
+Mat6 printed_matrix(const std::string& out, const std::string& section, const std::string& title) {
   Mat6 M = Mat6::Constant(std::nan(""));
-  const std::size_t at = out.find(title);
+  const std::size_t from = out.find(section);
+  const std::size_t at = from == std::string::npos ? from : out.find(title, from);
   if (at == std::string::npos) return M;
   std::istringstream s(out.substr(out.find('\n', at) + 1));
   std::string line, label;
@@ -58,10 +59,10 @@ void expect_isotropic_translation(const Mat6& C, double c) {
 TEST(VjmCommand, PuuAtQ0IsIsotropicWithTheSeriesCompliance) {
   const CliRun r = run_cli({"vjm", kPuu});
   ASSERT_EQ(r.code, kExitOk) << r.err;
-  const Mat6 C = printed_matrix(r.out, "compliance C = K^-1 (unloaded");
+  const Mat6 C = printed_matrix(r.out, "(unloaded", "compliance C = K^-1 [");
   expect_isotropic_translation(C, q0_translational_compliance());
   // Stiffness printed is the inverse of the compliance printed, and symmetric.
-  const Mat6 K = printed_matrix(r.out, "stiffness K (unloaded");
+  const Mat6 K = printed_matrix(r.out, "(unloaded", "stiffness K [");
   EXPECT_LT((K * C - Mat6::Identity()).cwiseAbs().maxCoeff(), 1e-3);
   EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-4 * K.cwiseAbs().maxCoeff());
   EXPECT_NE(r.out.find("condition number"), std::string::npos);
@@ -71,7 +72,8 @@ TEST(VjmCommand, PuuAtQ0IsIsotropicWithTheSeriesCompliance) {
 TEST(VjmCommand, PrparAtQ0HasTheSameTranslationalCompliance) {
   const CliRun r = run_cli({"vjm", kPrpar, "--point", "0,0,0"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
-  expect_isotropic_translation(printed_matrix(r.out, "compliance C = K^-1 (unloaded"), q0_translational_compliance());
+  expect_isotropic_translation(printed_matrix(r.out, "(unloaded", "compliance C = K^-1 ["),
+                               q0_translational_compliance());
 }
 
 TEST(VjmCommand, WrenchGivesTheComplianceTimesTheForce) {
@@ -83,7 +85,7 @@ TEST(VjmCommand, WrenchGivesTheComplianceTimesTheForce) {
   ASSERT_NE(at, std::string::npos) << r.out;
   const double dx_mm = std::stod(r.out.substr(at + 14));
   EXPECT_NEAR(dx_mm, 100 * q0_translational_compliance() * 1e3, 1e-4 * dx_mm);
-  EXPECT_NE(printed_matrix(r.out, "stiffness K (loaded").maxCoeff(), 0.0);
+  EXPECT_NE(printed_matrix(r.out, "(loaded", "stiffness K [").maxCoeff(), 0.0);
 }
 
 TEST(VjmCommand, PrescribedDisplacementReportsTheWrench) {

@@ -29,6 +29,7 @@ TEST(FeaVtk, SixFilesReadBackWithFieldsAndUniformAxialStress) {
   fea::LinkStiffnessOptions o;
   o.clamp = fea::Region::plane(Vec3::Zero(), Vec3::UnitX());
   o.reference = fea::Region::plane(Vec3(L, 0, 0), Vec3::UnitX());
+  o.keep_fields = true;
   auto r = fea::link_stiffness(mesh, Material::from_E_nu("steel", 210e9, 0.3), o);
   ASSERT_TRUE(r.ok()) << r.status().message();
   const std::string dir = (std::filesystem::temp_directory_path() / "kinestat_fea_vtk_test").string();
