@@ -17,14 +17,14 @@ json link_stiffness_to_json(const std::string& mesh_file, double mesh_size, cons
                       {"elements", r.num_elements}, {"nodes_per_element", r.nodes_per_element}, {"dofs", r.num_dofs}}},
             {"from_cache", from_cache},
             {"reference_model", fea::reference_model_name(r.reference_model)},
-            {"reference_point_m", to_array(r.reference_point)},
-            {"stiffness", to_rows(r.stiffness)},
+            {"reference_point_m", to_array(r.cartesian.point)},
+            {"stiffness", to_rows(r.cartesian.stiffness)},
             {"stiffness_units", unit_matrix(false)},
-            {"compliance", to_rows(r.compliance)},
+            {"compliance", to_rows(r.cartesian.compliance)},
             {"compliance_units", unit_matrix(true)},
             {"symmetry_error", {{"compliance", r.compliance_symmetry_error}, {"stiffness", r.stiffness_symmetry_error}}},
             {"eigenvalues_SI_mixed_units",
-             {{"stiffness", to_array(r.stiffness_eigenvalues)}, {"compliance", to_array(r.compliance_eigenvalues)}}}};
+             {{"stiffness", r.cartesian.indices ? to_array(r.cartesian.indices->eigenvalues) : json::array()}, {"compliance", to_array(r.compliance_eigenvalues)}}}};
   encode_non_finite(j);
   return j;
 }

@@ -11,11 +11,11 @@ using nlohmann::json;
 
 json twists(const std::vector<Vec6>& directions) {
   json a = json::array();
-  for (const Vec6& d : directions) a.push_back({{"twist", to_array(d)}, {"description", vjm::describe_twist(d)}});
+  for (const Vec6& d : directions) a.push_back({{"twist", to_array(d)}, {"description", describe_twist(d)}});
   return a;
 }
 
-json stiffness_json(const vjm::CartesianStiffness& K) {
+json stiffness_json(const CartesianStiffness& K) {
   return {{"order", {"ux", "uy", "uz", "rx", "ry", "rz"}},
           {"stiffness", to_rows(K.stiffness)},
           {"stiffness_units", unit_matrix(false)},

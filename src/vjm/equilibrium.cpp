@@ -215,12 +215,6 @@ Vec6 assign_reactions(const std::vector<Chain>& chains, const Vec6& w, const Vec
   return R - B * a;
 }
 
-double platform_length_scale(const std::vector<Chain>& chains) {
-  double L = 0.0;
-  for (const Chain& c : chains) L = std::max(L, c.length_scale());
-  return L;
-}
-
 StatusOr<PlatformState> solve_chains(const std::vector<Chain>& chains, const Vec6& displacement,
                                      const EquilibriumOptions& opt, const PlatformState* start) {
   PlatformState P;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "kinestat/core/types.hpp"
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
@@ -17,9 +18,9 @@ struct VjmResults {
   std::string model_file, title;
   int num_chains = 0;
   Vec3 tool_point = Vec3::Zero();           // m
-  vjm::CartesianStiffness unloaded;
+  CartesianStiffness unloaded;
   std::optional<vjm::PlatformState> state;       // empty: no load given
-  std::optional<vjm::CartesianStiffness> loaded;  // empty: no load, or its stiffness failed
+  std::optional<CartesianStiffness> loaded;  // empty: no load, or its stiffness failed
 };
 
 nlohmann::json vjm_results_to_json(const VjmResults& r);
