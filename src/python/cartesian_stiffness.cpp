@@ -1,9 +1,6 @@
-// The Cartesian stiffness results of the methods: msa::CartesianStiffness and vjm::CartesianStiffness
-// (same dof order ux uy uz rx ry rz, global axes, SI units). Kept in this one file because the
-// library is merging them into one core type; the Python names stay msa.CartesianStiffness and
-// vjm.CartesianStiffness.
-#include "kinestat/msa/static_analysis.hpp"
-#include "kinestat/vjm/stiffness.hpp"
+// The one Cartesian stiffness type of the library (kinestat::CartesianStiffness: MSA, VJM and FEA;
+// dof order ux uy uz rx ry rz, SI units), bound once and named in msa and vjm too.
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "python/bindings.hpp"
 
 namespace kinestat::python {
@@ -16,24 +13,14 @@ constexpr const char* kComplianceUnits = "6x6, its inverse: m/N, m/(N m) | rad/N
 }  // namespace
 
 void bind_msa_cartesian_stiffness(py::module_& m) {
-  using msa::CartesianStiffness;
   py::class_<CartesianStiffness>(m, "CartesianStiffness",
-                                 "6x6 stiffness and compliance of one node (global axes, SI units).")
-      .def_readonly("node", &CartesianStiffness::node)
+                                 "6x6 stiffness and compliance of one point (SI units) and the directions lost at "
+                                 "a singular posture (unit twists as rows of (k, 6) arrays).")
+      .def_readonly("point", &CartesianStiffness::point, "the point (m)")
+      .def_readonly("frame", &CartesianStiffness::frame, "the axes' name")
       .def_readonly("compliance", &CartesianStiffness::compliance, kComplianceUnits)
       .def_readonly("stiffness", &CartesianStiffness::stiffness, kStiffnessUnits)
       .def_readonly("stiffness_defined", &CartesianStiffness::stiffness_defined)
-      .def_readonly("note", &CartesianStiffness::note, "why the stiffness is undefined")
-      .def_readonly("indices", &CartesianStiffness::indices, "StiffnessIndices of `stiffness` when defined");
-}
-
-void bind_vjm_cartesian_stiffness(py::module_& m) {
-  using vjm::CartesianStiffness;
-  py::class_<CartesianStiffness>(m, "CartesianStiffness",
-                                 "VJM 6x6 stiffness of the tool point (global axes, SI units) and the directions "
-                                 "lost at a singular posture (unit twists as rows of (k, 6) arrays).")
-      .def_readonly("stiffness", &CartesianStiffness::stiffness, kStiffnessUnits)
-      .def_readonly("compliance", &CartesianStiffness::compliance, kComplianceUnits)
       .def_readonly("compliance_defined", &CartesianStiffness::compliance_defined)
       .def_property_readonly(
           "free_directions", [](const CartesianStiffness& k) { return rows(k.free_directions); },
@@ -41,9 +28,14 @@ void bind_vjm_cartesian_stiffness(py::module_& m) {
       .def_property_readonly(
           "rigid_directions", [](const CartesianStiffness& k) { return rows(k.rigid_directions); },
           "(k, 6): unit twists with infinite stiffness")
-      .def_readonly("self_motions", &CartesianStiffness::self_motions,
-                    "passive-joint combinations that do not move the tool")
+      .def_readonly("note", &CartesianStiffness::note, "what else the method found, in words")
+      .def_readonly("indices", &CartesianStiffness::indices, "StiffnessIndices of `stiffness` when defined")
       .def_readonly("status", &CartesianStiffness::status, "OK, or SINGULAR with the lost directions in words");
+}
+
+void bind_vjm_cartesian_stiffness(py::module_& m) {
+  // The same type as msa.CartesianStiffness (bound first, in module.cpp's order).
+  m.attr("CartesianStiffness") = py::type::of<CartesianStiffness>();
 }
 
 }  // namespace kinestat::python

@@ -136,13 +136,15 @@ void bind_link_stiffness(py::module_& m) {
   py::class_<LinkStiffness>(m, "LinkStiffness",
                             "6x6 link stiffness from FEA (rows ux uy uz rx ry rz, link frame, SI units) and its "
                             "report; per unit load case (Fx Fy Fz Mx My Mz) the fields when kept.")
-      .def_readonly("reference_point", &LinkStiffness::reference_point, "m")
-      .def_readonly("compliance", &LinkStiffness::compliance, "m/N, m/(N m) | rad/N, rad/(N m)")
-      .def_readonly("stiffness", &LinkStiffness::stiffness, "N/m, N/rad | N m/m, N m/rad")
+      .def_readonly("cartesian", &LinkStiffness::cartesian, "the 6x6 (CartesianStiffness) at the reference point")
+      .def_property_readonly("reference_point", [](const LinkStiffness& r) { return r.cartesian.point; }, "m")
+      .def_property_readonly("compliance", [](const LinkStiffness& r) { return r.cartesian.compliance; },
+                             "m/N, m/(N m) | rad/N, rad/(N m)")
+      .def_property_readonly("stiffness", [](const LinkStiffness& r) { return r.cartesian.stiffness; },
+                             "N/m, N/rad | N m/m, N m/rad")
       .def_readonly("compliance_symmetry_error", &LinkStiffness::compliance_symmetry_error)
       .def_readonly("stiffness_symmetry_error", &LinkStiffness::stiffness_symmetry_error)
       .def_readonly("compliance_eigenvalues", &LinkStiffness::compliance_eigenvalues)
-      .def_readonly("stiffness_eigenvalues", &LinkStiffness::stiffness_eigenvalues)
       .def_readonly("num_nodes", &LinkStiffness::num_nodes)
       .def_readonly("num_elements", &LinkStiffness::num_elements)
       .def_readonly("nodes_per_element", &LinkStiffness::nodes_per_element)
@@ -171,7 +173,7 @@ void bind_link_stiffness(py::module_& m) {
       },
       py::arg("mesh"), py::arg("material"), py::arg("options"), "FEA 6x6 link stiffness. Releases the GIL.");
   m.def("link_stiffness_report", &link_stiffness_report, py::arg("result"));
-  m.def("set_compliance", &set_compliance, py::arg("result"), py::arg("compliance"));
+  m.def("set_compliance", &set_compliance, py::arg("result"), py::arg("compliance"), py::arg("point"));
   m.def("reference_model_name", &reference_model_name, py::arg("model"));
   m.def("scaled_symmetry_error", &scaled_symmetry_error, py::arg("A"));
 

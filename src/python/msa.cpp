@@ -269,7 +269,6 @@ void bind_solution(py::module_& m) {
   m.def("full_report", &full_report, py::arg("structure"), py::arg("solution"),
         "The human-readable report the CLI prints.");
   m.def("indices_report", &indices_report, py::arg("indices"));
-  m.def("matrix6_report", &matrix6_report, py::arg("M"), py::arg("title"), py::arg("units"));
 }
 
 }  // namespace

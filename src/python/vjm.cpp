@@ -4,6 +4,7 @@
 #include "kinestat/vjm/chain.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/link_spring.hpp"
+#include "kinestat/vjm/platform.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 #include "python/bindings.hpp"
 

@@ -16,6 +16,7 @@ def test_box_link_against_the_cantilever_formula():
     options = fea.LinkStiffnessOptions()
     options.clamp = fea.Region.plane([0, 0, 0], [1, 0, 0])
     options.reference = fea.Region.plane([0.2, 0, 0], [1, 0, 0])
+    options.keep_fields = True  # the six displacement fields (off by default)
     r = fea.link_stiffness(mesh, steel, options)
     assert r.compliance.shape == (6, 6) and len(r.displacement) == 6 and r.displacement[0].shape == (mesh.num_nodes, 3)
     I = 0.02**4 / 12
