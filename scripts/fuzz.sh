@@ -43,6 +43,6 @@ for name in structure_yaml vjm_yaml identification_yaml surface_mesh option_pars
     continue
   fi
   # The last status line: runs, coverage (edges) and features, corpus size, executions per second.
-  grep -a -E "^#[0-9]+ +DONE" "$log" | tail -1 | sed "s/^/fuzz: $name: /"
+  grep -a -E "^#[0-9]+[[:space:]]+DONE" "$log" | tail -1 | sed "s/^/fuzz: $name: /"
 done
 exit $status

@@ -16,7 +16,7 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-fr
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-16 \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DKINESTAT_BUILD_BENCHMARKS=OFF -DKINESTAT_BUILD_FUZZERS=ON >/dev/null
+  -DKINESTAT_BUILD_BENCHMARKS=OFF -DKINESTAT_BUILD_PYTHON=OFF -DKINESTAT_BUILD_FUZZERS=ON >/dev/null
 cmake --build build-sanitize -j"$jobs"
 if [ "${1:-}" = "--build" ]; then exit 0; fi
 export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:check_initialization_order=1"

@@ -84,10 +84,11 @@ StatusOr<Region> parse_region(const std::string& text, double scale, const std::
   return Region::box(*a, *b);
 }
 
-StatusOr<Material> parse_material(const std::string& text, const std::string& what) {
+StatusOr<Material> parse_material(const std::string& text, const std::string& what, double modulus_unit) {
   if (text == "steel") return Material::from_E_nu("steel", 210e9, 0.3);
   if (text == "aluminium" || text == "aluminum") return Material::from_E_nu("aluminium", 70e9, 0.33);
-  const std::string form = what + ": give steel, aluminium or E=PA,nu=V (E > 0 in Pa, -1 < nu < 0.5)";
+  const std::string unit = modulus_unit == 1e6 ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("x {:g} Pa", modulus_unit);
+  const std::string form = fmt::format("give steel, aluminium or E=VALUE,nu=V (E > 0 in {}, -1 < nu < 0.5)", unit);
   std::optional<double> E, nu;
   std::stringstream ss(text);
   std::string item;
@@ -95,18 +96,19 @@ StatusOr<Material> parse_material(const std::string& text, const std::string& wh
     const auto eq = item.find('=');
     const std::string key = item.substr(0, eq);
     if (eq == std::string::npos || (key != "E" && key != "nu"))
-      return Status::Invalid(fmt::format("{}: unknown item '{}'; {}", what, item, form.substr(what.size() + 2)));
+      return Status::Invalid(fmt::format("{}: unknown item '{}'; {}", what, item, form));
     std::optional<double>& slot = key == "E" ? E : nu;
     if (slot) return Status::Invalid(fmt::format("{}: '{}' is given twice; give it once", what, key));
     auto value = parse_numbers(item.substr(eq + 1), 1, fmt::format("{}: {}", what, key));
     if (!value.ok()) return value.status();
     slot = (*value)[0];
   }
-  if (!E || !nu || text.back() == ',') return Status::Invalid(form);
-  if (Status s = check_quantity(*E, Quantity::kModulus, what + ": E", {1.0, "Pa"}, Sign::kPositive); !s.ok()) return s;
+  if (!E || !nu || text.back() == ',') return Status::Invalid(fmt::format("{}: {}", what, form));
+  if (Status s = check_quantity(*E, Quantity::kModulus, what + ": E", {modulus_unit, unit}, Sign::kPositive); !s.ok())
+    return s;
   if (!(*nu > -1.0 && *nu < 0.5))
     return Status::Invalid(fmt::format("{}: nu = {:g} is not in (-1, 0.5); give Poisson's ratio", what, *nu));
-  return Material::from_E_nu(text, *E, *nu);
+  return Material::from_E_nu(text, *E * modulus_unit, *nu);
 }
 
 double default_mesh_size(const SurfaceInfo& surface, double unit_scale) {

@@ -21,8 +21,12 @@ std::string YamlFields::source(const YAML::Node& at) const {
   return line > 0 ? fmt::format("{}:{}", file_, line) : file_;
 }
 
+std::string YamlFields::where(const YAML::Node& at, const std::string& item) const {
+  return fmt::format("{}: {}", source(at), item);
+}
+
 void YamlFields::fail(const YAML::Node& at, const std::string& item, const std::string& what) const {
-  throw YamlInputError{fmt::format("{}: {}: {}", source(at), item, what)};
+  throw YamlInputError{fmt::format("{}: {}", where(at, item), what)};
 }
 
 void YamlFields::check_map(const YAML::Node& node, const std::string& item,

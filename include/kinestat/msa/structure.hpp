@@ -83,10 +83,11 @@ struct PrescribedDisplacement {
   std::string source{};
 };
 
+// (Every member has an initializer, so that designated initializers may leave any out warning-free.)
 struct LoadCase {
-  std::string name;
-  std::vector<NodalLoad> loads;
-  std::vector<PrescribedDisplacement> prescribed;
+  std::string name{};
+  std::vector<NodalLoad> loads{};
+  std::vector<PrescribedDisplacement> prescribed{};
   std::string source{};
 };
 
