@@ -25,6 +25,12 @@ struct OrthoglideKernelOptions {
 // Points outside the working-mode inverse kinematics are kUnreachable; a point where the stiffness
 // is not defined is kSingular; a loaded equilibrium that does not exist is kFailed.
 
+// The sweep kernel: the chains of orthoglide_chains written out with fixed-size matrices (the
+// springs' compliances computed once, the parallelogram's spring from its two bars per posture),
+// each chain's stiffness by eq. (10), their sum; no heap allocation. Singular when a pivot ratio of
+// the Cholesky factorization of the length-scaled sum is below 1e-10 (vjm's rank tolerance).
+std::unique_ptr<PostureKernel> make_orthoglide_kernel(const OrthoglideKernelOptions& options);
+
 // Today's single-posture path: orthoglide_chains + vjm platform stiffness. The reference of tests.
 std::unique_ptr<PostureKernel> make_reference_orthoglide_kernel(const OrthoglideKernelOptions& options);
 

@@ -1,0 +1,69 @@
+// Fixed-size pieces of the virtual joint method for the posture kernels (five_bar_kernel.cpp,
+// orthoglide_kernel.cpp): no heap allocation, no rank-revealing decompositions. They compute what
+// vjm::platform_unloaded_stiffness computes (Pashkevich et al. 2009, eq. 9-10 and section 3.3) for
+// chains whose springs are all regular, with the same twist scaling (vjm/bordered_system.hpp).
+#pragma once
+
+#include <Eigen/Dense>
+
+#include "kinestat/core/types.hpp"
+#include "kinestat/mechanisms/posture_kernel.hpp"
+
+namespace kinestat::mechanisms::fixed_vjm {
+
+// diag(R, R) G diag(R, R)^T: a 6x6 (ux uy uz rx ry rz) given in the axes R, in R's parent axes.
+Mat6 rotate6(const Mat6& G, const Mat3& R);
+
+// J G J^T with J = [I, -[r]x; 0, I]: the compliance G of a spring about point o seen at the tool
+// point o + r (the spring's 6 columns of J_theta, eq. 5, are J diag(R, R)), i.e. its term of
+// S = J_theta K_theta^-1 J_theta^T (eq. 9).
+Mat6 transfer_compliance(const Mat6& G, const Vec3& r);
+
+// Unit twist of the tool point t for a revolute joint of unit axis a through o: (a x (t - o), a).
+inline Vec6 revolute_twist(const Vec3& a, const Vec3& o, const Vec3& t) {
+  Vec6 c;
+  c << a.cross(t - o), a;
+  return c;
+}
+
+// Twist scaling of vjm::twist_scale: W = diag(I/L, I).
+inline Vec6 twist_scale(double length_scale) {
+  Vec6 w;
+  w << Vec3::Constant(1.0 / length_scale), Vec3::Ones();
+  return w;
+}
+
+// Eq. (10) as vjm's bordered system solves it: K = W N (N^T S~ N)^-1 N^T W, S~ = W S W, N a basis of
+// the scaled wrenches the passive joints transmit, null((W J_q)^T), here from a Householder QR of
+// W J_q (any basis gives the same K). J_q must have full column rank (no passive self-motion, true
+// away from the chain's own singularities). False when N^T S~ N is not positive definite (a rigid
+// direction, which a chain with a 6-dof spring cannot have).
+template <int NQ>
+bool chain_stiffness(const Eigen::Matrix<double, 6, NQ>& Jq, const Mat6& S, const Vec6& w, Mat6& K) {
+  constexpr int NF = 6 - NQ;
+  const Eigen::Matrix<double, 6, NQ> Jn = w.asDiagonal() * Jq;
+  const Eigen::HouseholderQR<Eigen::Matrix<double, 6, NQ>> qr(Jn);
+  const Mat6 Q = qr.householderQ();
+  const Eigen::Matrix<double, 6, NF> N = Q.template rightCols<NF>();
+  const Mat6 St = w.asDiagonal() * S * w.asDiagonal();
+  const Eigen::Matrix<double, NF, NF> C = N.transpose() * St * N;
+  const Eigen::LLT<Eigen::Matrix<double, NF, NF>> llt(C);
+  if (llt.info() != Eigen::Success) return false;
+  // N C^-1 N^T = Y^T Y with Y = L^-1 N^T: symmetric by construction.
+  const Eigen::Matrix<double, NF, 6> Y = llt.matrixL().solve(N.transpose());
+  K = w.asDiagonal() * (Y.transpose() * Y) * w.asDiagonal();
+  return true;
+}
+
+// Singularity test of the platform stiffness K (SI) in the scaled twists of W: the smallest pivot
+// ratio d_i / K~_ii of the Cholesky factorization of K~ = W^-1 K W^-1. A free motion of the
+// platform leaves a pivot at round-off level (~1e-16); vjm's aggregate calls a direction free
+// below 1e-10 of the largest singular value of K~, and this ratio is never below that one
+// (d_i >= lambda_min), so the kernels use the same 1e-10.
+inline constexpr double kPivotRatioTolerance = 1e-10;
+
+// Fills `r` from a platform stiffness K: kOk with the stiffness, the compliance (K^-1), the indices
+// and `deflection = C load` when K passes the pivot test above, else kSingular with no values.
+void set_platform_result(const Mat6& K, const Vec6& w, const Vec6& load, PostureResult& r);
+
+}  // namespace kinestat::mechanisms::fixed_vjm
