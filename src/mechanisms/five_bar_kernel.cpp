@@ -217,22 +217,28 @@ class FiveBarVjmKernel final : public PostureKernel {
     if (!q) return r;
     r.status = model_valid_ ? PostureStatus::kSingular : PostureStatus::kFailed;
     if (!model_valid_) return r;
-    const Vec3 P = at(q->P), z = Vec3::UnitZ();
+    const Vec3 P = at(q->P), x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
     Mat6 K1, K2;
     {
+      // Passive joints about z at B1 and P transmit any force along B1P or z and moments about x, y.
       const Mat3 R0 = link_axes(q->A1, q->B1), R1 = link_axes(q->B1, q->P);
       const Mat6 S = fixed_vjm::transfer_compliance(fixed_vjm::rotate6(proximal_ + joint_, R0), P - at(q->B1)) +
                      fixed_vjm::rotate6(distal_ + joint_, R1);
-      Eigen::Matrix<double, 6, 2> Jq;
-      Jq << fixed_vjm::revolute_twist(z, at(q->B1), P), fixed_vjm::revolute_twist(z, P, P);
-      if (!fixed_vjm::chain_stiffness<2>(Jq, S, w_, K1)) return r;
+      Eigen::Matrix<double, 6, 4> N;
+      N << fixed_vjm::line_force(R1.col(0), P, P), fixed_vjm::line_force(z, P, P), fixed_vjm::couple(x),
+          fixed_vjm::couple(y);
+      if (!fixed_vjm::chain_stiffness<4>(N, S, K1)) return r;
     }
     {
+      // The passive joint about z at B2 transmits forces along B2P and z, moments about x and y, and
+      // a force normal to B2P in the plane with the moment about z that balances it at B2.
       const Mat3 R0 = link_axes(q->A2, q->B2), R1 = link_axes(q->B2, q->P);
       const Mat6 S = fixed_vjm::transfer_compliance(fixed_vjm::rotate6(proximal_ + joint_, R0), P - at(q->B2)) +
                      fixed_vjm::rotate6(distal_, R1);
-      const Eigen::Matrix<double, 6, 1> Jq = fixed_vjm::revolute_twist(z, at(q->B2), P);
-      if (!fixed_vjm::chain_stiffness<1>(Jq, S, w_, K2)) return r;
+      Eigen::Matrix<double, 6, 5> N;
+      N << fixed_vjm::line_force(R1.col(0), P, P), fixed_vjm::line_force(z, P, P), fixed_vjm::couple(x),
+          fixed_vjm::couple(y), fixed_vjm::line_force(R1.col(1), at(q->B2), P);
+      if (!fixed_vjm::chain_stiffness<5>(N, S, K2)) return r;
     }
     fixed_vjm::set_platform_result(K1 + K2, w_, o_.load, r);
     return r;

@@ -19,11 +19,17 @@ Mat6 rotate6(const Mat6& G, const Mat3& R);
 // S = J_theta K_theta^-1 J_theta^T (eq. 9).
 Mat6 transfer_compliance(const Mat6& G, const Vec3& r);
 
-// Unit twist of the tool point t for a revolute joint of unit axis a through o: (a x (t - o), a).
-inline Vec6 revolute_twist(const Vec3& a, const Vec3& o, const Vec3& t) {
-  Vec6 c;
-  c << a.cross(t - o), a;
-  return c;
+// Wrench (force f along the line through point o, about the tool point t): (f, (o - t) x f).
+inline Vec6 line_force(const Vec3& f, const Vec3& o, const Vec3& t) {
+  Vec6 w;
+  w << f, (o - t).cross(f);
+  return w;
+}
+// Pure moment m: (0, m).
+inline Vec6 couple(const Vec3& m) {
+  Vec6 w;
+  w << Vec3::Zero(), m;
+  return w;
 }
 
 // Twist scaling of vjm::twist_scale: W = diag(I/L, I).
@@ -33,25 +39,20 @@ inline Vec6 twist_scale(double length_scale) {
   return w;
 }
 
-// Eq. (10) as vjm's bordered system solves it: K = W N (N^T S~ N)^-1 N^T W, S~ = W S W, N a basis of
-// the scaled wrenches the passive joints transmit, null((W J_q)^T), here from a Householder QR of
-// W J_q (any basis gives the same K). J_q must have full column rank (no passive self-motion, true
-// away from the chain's own singularities). False when N^T S~ N is not positive definite (a rigid
-// direction, which a chain with a 6-dof spring cannot have).
-template <int NQ>
-bool chain_stiffness(const Eigen::Matrix<double, 6, NQ>& Jq, const Mat6& S, const Vec6& w, Mat6& K) {
-  constexpr int NF = 6 - NQ;
-  const Eigen::Matrix<double, 6, NQ> Jn = w.asDiagonal() * Jq;
-  const Eigen::HouseholderQR<Eigen::Matrix<double, 6, NQ>> qr(Jn);
-  const Mat6 Q = qr.householderQ();
-  const Eigen::Matrix<double, 6, NF> N = Q.template rightCols<NF>();
-  const Mat6 St = w.asDiagonal() * S * w.asDiagonal();
-  const Eigen::Matrix<double, NF, NF> C = N.transpose() * St * N;
+// Eq. (10) as vjm's bordered system solves it, K = N (N^T S N)^-1 N^T with N a basis of the wrenches
+// the passive joints transmit (null(J_q^T), the reciprocal screws of the passive joints). vjm finds
+// N by an SVD of the length-scaled J_q; K does not depend on the basis (N -> N G for any regular G,
+// the scaling W included), so each kernel writes its chain's transmitted wrenches in closed form.
+// False when N^T S N is not positive definite (a rigid direction, which a chain with a 6-dof spring
+// cannot have).
+template <int NF>
+bool chain_stiffness(const Eigen::Matrix<double, 6, NF>& N, const Mat6& S, Mat6& K) {
+  const Eigen::Matrix<double, NF, NF> C = N.transpose() * S * N;
   const Eigen::LLT<Eigen::Matrix<double, NF, NF>> llt(C);
   if (llt.info() != Eigen::Success) return false;
   // N C^-1 N^T = Y^T Y with Y = L^-1 N^T: symmetric by construction.
   const Eigen::Matrix<double, NF, 6> Y = llt.matrixL().solve(N.transpose());
-  K = w.asDiagonal() * (Y.transpose() * Y) * w.asDiagonal();
+  K = Y.transpose() * Y;
   return true;
 }
 

@@ -15,7 +15,8 @@
 namespace kinestat::mechanisms {
 namespace {
 
-using fixed_vjm::revolute_twist;
+using fixed_vjm::couple;
+using fixed_vjm::line_force;
 using fixed_vjm::rotate6;
 using fixed_vjm::transfer_compliance;
 
@@ -66,7 +67,7 @@ class OrthoglideKernel final : public PostureKernel {
     if (!springs_valid_) return r;
     if (o_.wrench || o_.displacement) return loaded(p, r);
     Mat6 K = Mat6::Zero();
-    double length_scale = 0.0;
+    double length_scale = 0.0;  // of the platform: the largest chain's
     for (int i = 0; i < 3; ++i) {
       Mat6 Ki;
       if (!chain_stiffness(i, p, (*rho)[i], Ki)) return r;
@@ -123,14 +124,15 @@ class OrthoglideKernel final : public PostureKernel {
     const Vec3 of = (rho + d) * e, ol = of + L * u, t = ol - d * e;
     Mat6 S = transfer_compliance(foot_compliance_[i], t - of);
     S.topLeftCorner<3, 3>() += e * e.transpose() / o_.model.actuator_stiffness;
-    const Vec6 w = fixed_vjm::twist_scale(chain_length_scale(rho));
+    // Both legs transmit the force along the leg line; the U joints (axes z, y1) the moment about
+    // z x y1 = -x1, the parallelogram and R joint the moments about x1 and y1.
     if (o_.architecture == OrthoglideArchitecture::kPUU) {
       Mat3 R2;
       R2 << u, y1, u.cross(y1);
       S += transfer_compliance(rotate6(leg_compliance_, R2), t - ol);
-      Eigen::Matrix<double, 6, 4> Jq;
-      Jq << revolute_twist(z, of, t), revolute_twist(y1, of, t), revolute_twist(y1, ol, t), revolute_twist(z, ol, t);
-      return fixed_vjm::chain_stiffness<4>(Jq, S, w, K);
+      Eigen::Matrix<double, 6, 2> N;
+      N << line_force(u, ol, t), couple(x1);
+      return fixed_vjm::chain_stiffness<2>(N, S, K);
     }
     Mat3 R1;
     R1 << x1, y1, z;
@@ -138,11 +140,9 @@ class OrthoglideKernel final : public PostureKernel {
     Mat6 plg;
     if (!parallelogram_stiffness(h.norm(), -u.dot(z), plg)) return false;
     S += transfer_compliance(rotate6(inverse_spd(plg), R1), t - ol);
-    Eigen::Matrix<double, 6, 3> Jq;
-    Vec6 translation;
-    translation << y1.cross(ol - of), Vec3::Zero();
-    Jq << revolute_twist(z, of, t), translation, revolute_twist(z, ol, t);
-    return fixed_vjm::chain_stiffness<3>(Jq, S, w, K);
+    Eigen::Matrix<double, 6, 3> N;
+    N << line_force(u, ol, t), couple(x1), couple(y1);
+    return fixed_vjm::chain_stiffness<3>(N, S, K);
   }
 
   // parallelogram_spring(model, q) for cos q = c, sin q = s: its two pinned bars (proximal pin at
@@ -153,15 +153,16 @@ class OrthoglideKernel final : public PostureKernel {
     const double L = o_.model.link_length, width = o_.model.parallelogram_width;
     const Mat3 Ry = rotation_y(c, s);
     const Vec3 t = L * Ry.col(0), y = Vec3::UnitY();
-    const Vec6 w = fixed_vjm::twist_scale(L + width);
     const Mat6 bar = rotate6(bar_compliance_, Ry);
     K.setZero();
     for (double side : {0.5, -0.5}) {
-      const Vec3 o1 = side * width * Vec3::UnitZ(), o2 = o1 + t;
-      Eigen::Matrix<double, 6, 2> Jq;
-      Jq << revolute_twist(y, o1, t), revolute_twist(y, o2, t);
+      // A bar pinned about y at both ends transmits forces along itself and y and moments about x
+      // and z, all through its distal pin o2.
+      const Vec3 o2 = side * width * Vec3::UnitZ() + t;
+      Eigen::Matrix<double, 6, 4> N;
+      N << line_force(Ry.col(0), o2, t), line_force(y, o2, t), couple(Vec3::UnitX()), couple(Vec3::UnitZ());
       Mat6 Kb;
-      if (!fixed_vjm::chain_stiffness<2>(Jq, transfer_compliance(bar, t - o2), w, Kb)) return false;
+      if (!fixed_vjm::chain_stiffness<4>(N, transfer_compliance(bar, t - o2), Kb)) return false;
       K += Kb;
     }
     Vec6 u;
