@@ -10,6 +10,7 @@
 
 #include "kinestat/mechanisms/orthoglide_kinematics.hpp"
 #include "kinestat/vjm/link_spring.hpp"
+#include "mechanisms/fixed_chain.hpp"
 #include "mechanisms/fixed_size_vjm.hpp"
 
 namespace kinestat::mechanisms {
@@ -46,6 +47,8 @@ class OrthoglideKernel final : public PostureKernel {
              K.llt().info() == Eigen::Success;
     };
     springs_valid_ = spd(foot) && spd(bar);
+    foot_ = foot;
+    bar_ = bar;
     for (int i = 0; i < 3; ++i) {
       // Base frame of chain i: x = -e_i, y = -e_(i+1), z = e_(i+2).
       base_[i] << -Vec3::Unit(i), -Vec3::Unit((i + 1) % 3), Vec3::Unit((i + 2) % 3);
@@ -65,7 +68,7 @@ class OrthoglideKernel final : public PostureKernel {
     if (!model_valid_) return r;  // orthoglide_chains fails: kUnreachable
     r.status = springs_valid_ ? PostureStatus::kSingular : PostureStatus::kFailed;
     if (!springs_valid_) return r;
-    if (o_.wrench || o_.displacement) return loaded(p, r);
+    if (o_.wrench || o_.displacement) return loaded(p, *rho, r);
     Mat6 K = Mat6::Zero();
     double length_scale = 0.0;  // of the platform: the largest chain's
     for (int i = 0; i < 3; ++i) {
@@ -171,17 +174,50 @@ class OrthoglideKernel final : public PostureKernel {
     return true;
   }
 
-  PostureResult loaded(const Vec3& p, PostureResult& r) const;
+  PostureResult loaded(const Vec3& p, const Vec3& rho, PostureResult& r);
 
   OrthoglideKernelOptions o_;
   bool model_valid_ = false, springs_valid_ = false;
   std::array<Mat3, 3> base_;
   std::array<Mat6, 3> foot_compliance_;  // global axes, about the slider point
   Mat6 leg_compliance_, bar_compliance_;  // in their own axes
+  Mat6 foot_, bar_;                       // stiffness in their own axes
+  fixed_vjm::LoadedPlatform loaded_;      // the chains of the loaded mode, rebuilt per posture
 };
 
-PostureResult OrthoglideKernel::loaded(const Vec3&, PostureResult& r) const {
-  r.status = PostureStatus::kFailed;  // TODO
+// The chains of orthoglide_chains, factor by factor, for the loaded mode.
+PostureResult OrthoglideKernel::loaded(const Vec3& p, const Vec3& rho, PostureResult& r) {
+  const double L = o_.model.link_length, d = o_.model.platform_offset;
+  loaded_.num_chains = 3;
+  for (int i = 0; i < 3; ++i) {
+    fixed_vjm::FixedChain& c = loaded_.chains[i];
+    c.clear();
+    const Mat3& R = base_[i];
+    c.add_transform(R, Vec3::Zero());
+    c.add_prismatic_actuator(-Vec3::UnitX(), rho[i] + d, o_.model.actuator_stiffness);
+    c.add_spring(foot_);
+    const Vec3 v = R.transpose() * (p - rho[i] * Vec3::Unit(i)) / L;
+    const double q1 = std::atan2(v.y(), v.x()), q2 = std::atan2(-v.z(), std::hypot(v.x(), v.y()));
+    c.add_passive(Vec3::UnitZ(), q1);
+    if (o_.architecture == OrthoglideArchitecture::kPUU) {
+      c.add_passive(Vec3::UnitY(), q2);
+      c.add_transform(Mat3::Identity(), L * Vec3::UnitX());
+      c.add_spring(2.0 * bar_);
+      c.add_passive(Vec3::UnitY(), -q2);
+    } else {
+      Mat6 plg;
+      if (!parallelogram_stiffness(std::cos(q2), std::sin(q2), plg)) return r;
+      const int k = c.add_passive(Vec3::UnitY(), q2);
+      c.add_transform(Mat3::Identity(), L * Vec3::UnitX());
+      c.add_coupled(Vec3::UnitY(), k, -1.0);
+      c.add_spring(plg);
+    }
+    c.add_passive(Vec3::UnitZ(), -q1);
+    if (d > 0) c.add_transform(Mat3::Identity(), d * Vec3::UnitX());
+    c.add_transform(R.transpose(), Vec3::Zero());
+  }
+  // A wrench wins over a displacement, as in the reference.
+  loaded_.evaluate(o_.wrench ? nullptr : &*o_.displacement, o_.wrench ? &*o_.wrench : nullptr, r);
   return r;
 }
 

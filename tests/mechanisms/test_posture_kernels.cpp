@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <numbers>
 #include <random>
 #include <string>
@@ -16,6 +17,8 @@
 
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 // Heap allocations counted on the current thread (the no-allocation test): malloc is interposed
 // (glibc's own is __libc_malloc), which sees operator new and Eigen's dynamic matrices alike.
@@ -84,17 +87,26 @@ Difference difference(const PostureResult& f, const PostureResult& r) {
 }
 
 struct Tally {
-  int ok = 0, singular = 0, unreachable = 0, failed = 0;
+  int ok = 0, singular = 0, unreachable = 0, failed = 0, explained = 0;
   double worst = 0.0;  // the largest difference as a share of what is allowed there
 };
 
-// Compares both kernels at every point: same status; no values where not kOk; equal values where kOk
-// (unless `values` is false).
-Tally compare(PostureKernel& fast, PostureKernel& ref, const std::vector<Vec3>& points, bool values = true) {
+// Where the kernels' statuses differ, checks the kernel's answer another way and says whether that
+// explains the difference.
+using Explain = std::function<bool(const Vec3& point, const PostureResult& fast, const PostureResult& ref)>;
+
+// Compares both kernels at every point: same status (or explained); no values where not kOk; equal
+// values where kOk (unless `values` is false).
+Tally compare(PostureKernel& fast, PostureKernel& ref, const std::vector<Vec3>& points, bool values = true,
+              const Explain& explain = {}) {
   Tally t;
   for (const Vec3& p : points) {
     const PostureResult f = fast.evaluate(p), r = ref.evaluate(p);
     const std::string where = fmt::format("{} at ({:.9g}, {:.9g}, {:.9g}) m", fast.description(), p.x(), p.y(), p.z());
+    if (f.status != r.status && explain && explain(p, f, r)) {
+      ++t.explained;
+      continue;
+    }
     EXPECT_EQ(to_string(f.status), std::string(to_string(r.status))) << where;
     if (f.status != r.status) continue;
     switch (r.status) {
@@ -260,6 +272,58 @@ void check_orthoglide(OrthoglideArchitecture a) {
 TEST(PostureKernels, OrthoglidePuuEqualsTheReference) { check_orthoglide(OrthoglideArchitecture::kPUU); }
 TEST(PostureKernels, OrthoglidePrparEqualsTheReference) { check_orthoglide(OrthoglideArchitecture::kPRPaR); }
 
+// Loaded mode: under a wrench (a force, then a force and a moment, which makes K asymmetric) and
+// displaced (a translation, then with a rotation), at fewer points (the reference solves each
+// equilibrium with dynamic matrices): every 8th point above, Q0, and the diagonal on the flat
+// singularity and 1 cm from it. Not 1 mm from it: there 100 N pushes the platform 3-5 mm, through
+// the singularity, where the reference's chain iteration stalls and the kernel's Newton iteration
+// finds an equilibrium beyond it.
+//
+// Under a wrench 1 cm from the singularity the reference's outer iteration can stall at a relative
+// wrench residual of ~1e-10, just above its 1e-10 threshold (each chain is left where it was once
+// its own residual is below 1e-12), and says kFailed; the kernel takes one more chain step and
+// converges. There the kernel's equilibrium is checked by the reference's displacement mode: the
+// chains displaced by the kernel's deflection carry the applied wrench, with the kernel's stiffness.
+void check_loaded(OrthoglideArchitecture a) {
+  std::vector<Vec3> pts;
+  const std::vector<Vec3> all = orthoglide_points();
+  for (std::size_t i = 0; i + 7 < all.size(); i += 8) pts.push_back(all[i]);
+  const double s0 = 0.3106 / std::sqrt(6.0);
+  for (double s : {0.0, s0, s0 - 1e-2, s0 + 1e-2}) pts.push_back(Vec3::Constant(s));
+  for (int mode = 0; mode < 4; ++mode) {
+    OrthoglideKernelOptions o;
+    o.architecture = a;
+    if (mode == 0) o.wrench = (Vec6() << 100.0, -50.0, 80.0, 0.0, 0.0, 0.0).finished();
+    if (mode == 1) o.wrench = (Vec6() << -200.0, 60.0, 30.0, 5.0, 0.0, -3.0).finished();
+    if (mode == 2) o.displacement = (Vec6() << -5e-4, -5e-4, -5e-4, 0.0, 0.0, 0.0).finished();
+    if (mode == 3) o.displacement = (Vec6() << 2e-4, -3e-4, 1e-4, 1e-3, -2e-3, 0.0).finished();
+    const Explain stalled = [&](const Vec3& p, const PostureResult& f, const PostureResult& r) {
+      if (!o.wrench || f.status != PostureStatus::kOk || r.status != PostureStatus::kFailed) return false;
+      auto chains = orthoglide_chains(o.model, a, p);
+      if (!chains.ok()) return false;
+      auto state = vjm::platform_equilibrium(*chains, f.deflection);
+      if (!state.ok()) return false;
+      const double residual = (state->wrench - *o.wrench).norm() / o.wrench->norm();
+      EXPECT_LE(residual, 1e-9) << p.transpose();
+      auto k = vjm::platform_loaded_stiffness(*chains, *state);
+      if (!k.ok()) return false;
+      EXPECT_LE(rel(f.stiffness, k->stiffness), allowed(f)) << p.transpose();
+      return residual <= 1e-9;
+    };
+    auto fast = make_orthoglide_kernel(o);
+    auto ref = make_reference_orthoglide_kernel(o);
+    const Tally t = compare(*fast, *ref, pts, true, stalled);
+    EXPECT_GT(t.ok, 40);
+    EXPECT_GT(t.unreachable, 2);
+    fmt::print("{}: {} ok, {} singular, {} failed, {} unreachable, {} where the reference stalls; worst "
+               "difference {:.2f} of the bound\n",
+               fast->description(), t.ok, t.singular, t.failed, t.unreachable, t.explained, t.worst);
+  }
+}
+
+TEST(PostureKernels, OrthoglidePuuLoadedEqualsTheReference) { check_loaded(OrthoglideArchitecture::kPUU); }
+TEST(PostureKernels, OrthoglidePrparLoadedEqualsTheReference) { check_loaded(OrthoglideArchitecture::kPRPaR); }
+
 // ----------------------------------------------------------------------------------------------
 // Sweep contract
 
@@ -270,6 +334,8 @@ std::vector<std::unique_ptr<PostureKernel>> sweep_kernels() {
   for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR}) {
     OrthoglideKernelOptions o;
     o.architecture = a;
+    k.push_back(make_orthoglide_kernel(o));
+    o.wrench = (Vec6() << 100.0, -50.0, 80.0, 0.0, 0.0, 0.0).finished();
     k.push_back(make_orthoglide_kernel(o));
   }
   return k;
@@ -300,8 +366,9 @@ TEST(PostureKernels, EvaluateAllocatesNothing) {
 // One thread and two give the same results, bit for bit, in the points' order; progress ends at
 // the total.
 TEST(PostureKernels, EvaluatePosturesIsIndependentOfTheThreads) {
-  const std::vector<Vec3> pts = grid(Vec3(-0.1, -0.17, 0), Vec3(0.1, 0.17, 0), 60, 60, 1);
+  const std::vector<Vec3> pts = grid(Vec3(-0.1, -0.17, 0), Vec3(0.1, 0.17, 0), 40, 40, 1);
   for (const auto& kernel : sweep_kernels()) {
+    const std::unique_ptr<PostureKernel> serial = kernel->clone();
     std::vector<PostureResult> one, two;
     std::size_t last_done = 0, last_total = 0;
     evaluate_postures(*kernel, pts, one, 1);
@@ -321,10 +388,10 @@ TEST(PostureKernels, EvaluatePosturesIsIndependentOfTheThreads) {
                   one[i].singularity_measure == two[i].singularity_measure)
           << kernel->description() << " at point " << i;
       // And the same as one kernel evaluated serially.
-      EXPECT_TRUE(one[i].stiffness == kernel->clone()->evaluate(pts[i]).stiffness) << i;
+      EXPECT_TRUE(one[i].stiffness == serial->evaluate(pts[i]).stiffness) << i;
       ok += one[i].status == PostureStatus::kOk;
     }
-    EXPECT_GT(ok, 100) << kernel->description();
+    EXPECT_GT(ok, 50) << kernel->description();
   }
 }
 
