@@ -110,7 +110,7 @@ class FiveBarMsaKernel final : public PostureKernel {
       const Mat3 L44 = llt_.matrixLLT().bottomRightCorner<3, 3>().triangularView<Eigen::Lower>();
       const Mat3 S = L44 * L44.transpose();
       if (!regular(S, D)) return r;
-      const Mat3 Linv = L44.triangularView<Eigen::Lower>().solve(Mat3::Identity());
+      const Mat3 Linv = fixed_vjm::lower_solve<3, 3>(L44, Mat3::Identity());
       const Mat3 Cp = Linv.transpose() * Linv;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
@@ -201,7 +201,7 @@ class FiveBarVjmKernel final : public PostureKernel {
         model_valid_(link_properties_valid(o.params) && o.params.joint_stiffness.head<5>().allFinite() &&
                      (o.params.joint_stiffness.head<5>().array() > 0.0).all()) {
     const FiveBarParams& p = o.params;
-    const auto compliance = [](const Mat6& K) { return Mat6(K.llt().solve(Mat6::Identity())); };
+    const auto compliance = [](const Mat6& K) { return fixed_vjm::spd_inverse<6>(K.llt()); };
     proximal_ = compliance(vjm::cantilever_spring(p.link_material, p.link_section, p.r1, BeamTheory::kEulerBernoulli));
     distal_ = compliance(vjm::cantilever_spring(p.link_material, p.link_section, p.r2, BeamTheory::kEulerBernoulli));
     // The joint spring of five_bar_vjm.cpp: kr_z set to kr_x (the passive joint makes it irrelevant).

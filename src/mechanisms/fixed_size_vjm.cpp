@@ -36,8 +36,7 @@ void set_platform_result(const Mat6& K, const Vec6& w, const Vec6& load, Posture
   if (!(pivots.cwiseQuotient(Kt.diagonal()).minCoeff() >= kPivotRatioTolerance)) return;
   r.status = PostureStatus::kOk;
   r.stiffness = K;
-  r.compliance = wi.asDiagonal() * llt.solve(Mat6::Identity()) * wi.asDiagonal();
-  r.compliance = 0.5 * (r.compliance + r.compliance.transpose());
+  r.compliance = wi.asDiagonal() * spd_inverse<6>(llt) * wi.asDiagonal();
   r.indices = cartesian_indices(K);
   r.deflection = r.compliance * load;
 }

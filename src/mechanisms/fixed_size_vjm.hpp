@@ -39,6 +39,25 @@ inline Vec6 twist_scale(double length_scale) {
   return w;
 }
 
+// L^-1 B for the lower triangle L of `factor` (e.g. LLT::matrixLLT()), by forward substitution in
+// plain loops: Eigen's triangular solve takes its blocked matrix path, slow at these sizes.
+template <int N, int M>
+Eigen::Matrix<double, N, M> lower_solve(const Eigen::Matrix<double, N, N>& factor, Eigen::Matrix<double, N, M> B) {
+  for (int i = 0; i < N; ++i) {
+    for (int k = 0; k < i; ++k) B.row(i) -= factor(i, k) * B.row(k);
+    B.row(i) /= factor(i, i);
+  }
+  return B;
+}
+
+// The inverse L^-T L^-1 of a symmetric positive definite matrix from its Cholesky factorization:
+// symmetric by construction.
+template <int N>
+Eigen::Matrix<double, N, N> spd_inverse(const Eigen::LLT<Eigen::Matrix<double, N, N>>& llt) {
+  const Eigen::Matrix<double, N, N> Li = lower_solve<N, N>(llt.matrixLLT(), Eigen::Matrix<double, N, N>::Identity());
+  return Li.transpose() * Li;
+}
+
 // Eq. (10) as vjm's bordered system solves it, K = N (N^T S N)^-1 N^T with N a basis of the wrenches
 // the passive joints transmit (null(J_q^T), the reciprocal screws of the passive joints). vjm finds
 // N by an SVD of the length-scaled J_q; K does not depend on the basis (N -> N G for any regular G,
@@ -51,7 +70,7 @@ bool chain_stiffness(const Eigen::Matrix<double, 6, NF>& N, const Mat6& S, Mat6&
   const Eigen::LLT<Eigen::Matrix<double, NF, NF>> llt(C);
   if (llt.info() != Eigen::Success) return false;
   // N C^-1 N^T = Y^T Y with Y = L^-1 N^T: symmetric by construction.
-  const Eigen::Matrix<double, NF, 6> Y = llt.matrixL().solve(N.transpose());
+  const Eigen::Matrix<double, NF, 6> Y = lower_solve<NF, 6>(llt.matrixLLT(), N.transpose());
   K = Y.transpose() * Y;
   return true;
 }

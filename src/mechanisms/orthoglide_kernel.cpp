@@ -21,7 +21,7 @@ using fixed_vjm::line_force;
 using fixed_vjm::rotate6;
 using fixed_vjm::transfer_compliance;
 
-Mat6 inverse_spd(const Mat6& K) { return K.llt().solve(Mat6::Identity()); }
+Mat6 inverse_spd(const Mat6& K) { return fixed_vjm::spd_inverse<6>(Eigen::LLT<Mat6>(K)); }
 
 Mat3 rotation_y(double c, double s) {
   Mat3 R;
