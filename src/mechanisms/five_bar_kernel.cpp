@@ -93,6 +93,7 @@ class FiveBarMsaKernel final : public PostureKernel {
           proximal_[plane](i, j) = k1(kPlaneBeamDofs[plane][i], kPlaneBeamDofs[plane][j]);
           distal_[plane](i, j) = k2(kPlaneBeamDofs[plane][i], kPlaneBeamDofs[plane][j]);
         }
+    for (int plane = 0; plane < 2; ++plane) build_plane(plane);
   }
 
   PostureResult evaluate(const Vec3& point) override {
@@ -141,40 +142,60 @@ class FiveBarMsaKernel final : public PostureKernel {
     return Eigen::SelfAdjointEigenSolver<Mat3>(Ss, Eigen::EigenvaluesOnly).eigenvalues()(0) >= kMsaSingularRatio;
   }
 
+  // What assembly needs of each plane, from the joints alone: the joint springs on the diagonal of
+  // the deformations (a dropped rigid component: a unit pad), where each beam end dof goes (the
+  // unknown blocks summing to its node, dropped components left out), and node 4's nodal diagonal
+  // from the joint 3-4.
+  void build_plane(int plane) {
+    const auto component = [&](int k) { return o_.params.joint_stiffness(kPlaneComponents[plane][k]); };
+    PlaneMatrix& K = constant_[plane];
+    K.setZero();
+    for (int block : {kD12, kD34, kD65})
+      for (int k = 0; k < 3; ++k) K(3 * block + k, 3 * block + k) = std::isinf(component(k)) ? 1.0 : component(k);
+    for (int k = 0; k < 3; ++k) node4_joint_[plane](k) = std::isinf(component(k)) ? 0.0 : component(k);
+    for (std::size_t b = 0; b < kBeams.size(); ++b)
+      for (int end = 0; end < 2; ++end)
+        for (int k = 0; k < 3; ++k) {
+          std::array<int, 2>& t = targets_[plane][b][3 * end + k];
+          t = {-1, -1};
+          int used = 0;
+          for (int block : kNodeBlocks[kBeams[b][end]])
+            if (block >= kU1 || (block >= 0 && !std::isinf(component(k)))) t[used++] = 3 * block + k;
+        }
+  }
+
   // K_ of one plane at the posture whose joint centres (node positions) are x; returns the
   // diagonal of the nodal stiffness matrix at node 4 (joint 3-4's spring and beam 4-5).
   Vec3 assemble(int plane, const std::array<Vec2, 8>& x) {
-    K_.setZero();
-    const auto component = [&](int k) { return o_.params.joint_stiffness(kPlaneComponents[plane][k]); };
-    // Joint deformations: the spring alone, or dropped for a rigid component.
-    for (int block : {kD12, kD34, kD65})
-      for (int k = 0; k < 3; ++k) K_(3 * block + k, 3 * block + k) = std::isinf(component(k)) ? 1.0 : component(k);
-    const auto used = [&](int block, int k) { return block >= 0 && (block >= kU1 || !std::isinf(component(k))); };
-    Vec3 D = Vec3::Zero();
-    for (int k = 0; k < 3; ++k) D(k) = std::isinf(component(k)) ? 0.0 : component(k);
+    K_ = constant_[plane];
+    Vec3 D = node4_joint_[plane];
     for (std::size_t b = 0; b < kBeams.size(); ++b) {
       const auto [n1, n2] = kBeams[b];
       const Vec2 e = (x[n2] - x[n1]).normalized();
-      // u_local = T u_global per node: in plane (ux, uy, rz), out of plane (uz, rx, ry).
-      Mat3 T = Mat3::Identity();
+      // Ke = T^T K_local T with u_local = T u_global per node: a rotation by the link's direction of
+      // the components (c, c + 1) of each node, (ux, uy) in plane and (rx, ry) out of plane.
+      Mat6 Ke = (b == 0 || b == 3 ? proximal_ : distal_)[plane];
       const int c = plane == 0 ? 0 : 1;
-      T(c, c) = e.x();
-      T(c, c + 1) = e.y();
-      T(c + 1, c) = -e.y();
-      T(c + 1, c + 1) = e.x();
-      Mat6 T6 = Mat6::Zero();
-      T6.topLeftCorner<3, 3>() = T;
-      T6.bottomRightCorner<3, 3>() = T;
-      const Mat6 Ke = T6.transpose() * (b == 0 || b == 3 ? proximal_ : distal_)[plane] * T6;
+      for (int end = 0; end < 2; ++end) {
+        const int i = 3 * end + c;
+        const Eigen::Matrix<double, 6, 1> col = Ke.col(i);
+        Ke.col(i) = e.x() * col - e.y() * Ke.col(i + 1);
+        Ke.col(i + 1) = e.y() * col + e.x() * Ke.col(i + 1);
+      }
+      for (int end = 0; end < 2; ++end) {
+        const int i = 3 * end + c;
+        const Eigen::Matrix<double, 1, 6> row = Ke.row(i);
+        Ke.row(i) = e.x() * row - e.y() * Ke.row(i + 1);
+        Ke.row(i + 1) = e.y() * row + e.x() * Ke.row(i + 1);
+      }
       if (n1 == kFiveBarPlatformNode) D += Ke.diagonal().head<3>();
-      const int nodes[2] = {n1, n2};
-      for (int a = 0; a < 2; ++a)
-        for (int ba : kNodeBlocks[nodes[a]])
-          for (int bb2 = 0; bb2 < 2; ++bb2)
-            for (int bb : kNodeBlocks[nodes[bb2]])
-              for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j)
-                  if (used(ba, i) && used(bb, j)) K_(3 * ba + i, 3 * bb + j) += Ke(3 * a + i, 3 * bb2 + j);
+      const auto& t = targets_[plane][b];
+      for (int i = 0; i < 6; ++i)
+        for (int row : t[i])
+          if (row >= 0)
+            for (int j = 0; j < 6; ++j)
+              for (int col : t[j])
+                if (col >= 0) K_(row, col) += Ke(i, j);
     }
     return D;
   }
@@ -182,6 +203,9 @@ class FiveBarMsaKernel final : public PostureKernel {
   FiveBarKernelOptions o_;
   bool params_valid_, model_valid_;
   std::array<Mat6, 2> proximal_, distal_;  // local beam stiffness of each plane (r1, r2)
+  std::array<PlaneMatrix, 2> constant_;
+  std::array<std::array<std::array<std::array<int, 2>, 6>, 4>, 2> targets_;  // plane, beam, end dof: rows
+  std::array<Vec3, 2> node4_joint_;
   PlaneMatrix K_;
   Eigen::LLT<PlaneMatrix> llt_;
 };
