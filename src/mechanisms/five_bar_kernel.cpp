@@ -17,18 +17,6 @@ namespace {
 
 Vec3 at(const Vec2& v) { return {v.x(), v.y(), 0.0}; }
 
-// The posture at `point` in the kernel's working and assembly modes, with its singularity measure
-// in r; nullopt (r stays kUnreachable) where the reference kernel finds none.
-std::optional<FiveBarPosture> reach(const FiveBarKernelOptions& o, bool params_valid, const Vec3& point,
-                                    PostureResult& r) {
-  if (!params_valid) return std::nullopt;
-  std::optional<FiveBarPosture> q = try_inverse_kinematics(o.params, Vec2(point.x(), point.y()), o.mode);
-  if (!q || q->assembly != o.assembly) return std::nullopt;
-  const FiveBarJacobians jac = five_bar_jacobians(*q);
-  r.singularity_measure = std::min(jac.parallel_measure, jac.serial_measure);
-  return q;
-}
-
 // What the reference's model validation (msa::Structure::validate, vjm::Chain::validate) rejects
 // whatever the posture: such a model gives kFailed at every reachable point, as there.
 bool link_properties_valid(const FiveBarParams& p) {
@@ -37,6 +25,37 @@ bool link_properties_valid(const FiveBarParams& p) {
   return m.E > 0 && m.G > 0 && std::isfinite(m.E) && std::isfinite(m.G) && s.A > 0 && s.Iy > 0 && s.Iz > 0 &&
          s.J > 0 && s.Asy >= 0 && s.Asz >= 0;
 }
+
+// What both five-bar kernels share: the options, the validity of the model, the inverse
+// kinematics and the singularity measure.
+class FiveBarKernelBase : public PostureKernel {
+ public:
+  FiveBarKernelBase(const FiveBarKernelOptions& o, bool model_valid)
+      : o_(o), params_valid_(validate(o.params).ok()), model_valid_(model_valid) {}
+  std::string description() const override {
+    return fmt::format("five-bar {} {} ({})", to_string(o_.mode), to_string(o_.assembly), to_string(o_.method));
+  }
+
+ protected:
+  // The posture at `point` in the kernel's working and assembly modes, with its singularity measure
+  // in r and r.status = kSingular (the kernel sets kOk when it finds a stiffness); nullopt where the
+  // reference kernel finds none (r kUnreachable) or refuses the model (kFailed).
+  std::optional<FiveBarPosture> reach(const Vec3& point, PostureResult& r) const {
+    if (!params_valid_) return std::nullopt;
+    std::optional<FiveBarPosture> q = try_inverse_kinematics(o_.params, Vec2(point.x(), point.y()), o_.mode);
+    if (!q || q->assembly != o_.assembly) return std::nullopt;
+    const FiveBarJacobians jac = five_bar_jacobians(*q);
+    r.singularity_measure = std::min(jac.parallel_measure, jac.serial_measure);
+    r.status = model_valid_ ? PostureStatus::kSingular : PostureStatus::kFailed;
+    if (!model_valid_) return std::nullopt;
+    return q;
+  }
+
+  FiveBarKernelOptions o_;
+
+ private:
+  bool params_valid_, model_valid_;
+};
 
 // Rotation about z whose x axis is the direction from `a` to `b`.
 Mat3 link_axes(const Vec2& a, const Vec2& b) {
@@ -78,12 +97,10 @@ constexpr std::array<std::array<int, 2>, 8> kNodeBlocks = {
 // Singularity test of the MSA kernel (five_bar_kernel.hpp).
 constexpr double kMsaSingularRatio = 2e-13;
 
-class FiveBarMsaKernel final : public PostureKernel {
+class FiveBarMsaKernel final : public FiveBarKernelBase {
  public:
   explicit FiveBarMsaKernel(const FiveBarKernelOptions& o)
-      : o_(o),
-        params_valid_(validate(o.params).ok()),
-        model_valid_(link_properties_valid(o.params) && (o.params.joint_stiffness.array() >= 0.0).all()) {
+      : FiveBarKernelBase(o, link_properties_valid(o.params) && (o.params.joint_stiffness.array() >= 0.0).all()) {
     const FiveBarParams& p = o.params;
     const Mat12 k1 = beam_local_stiffness(p.link_material, p.link_section, p.r1, BeamTheory::kEulerBernoulli);
     const Mat12 k2 = beam_local_stiffness(p.link_material, p.link_section, p.r2, BeamTheory::kEulerBernoulli);
@@ -98,10 +115,8 @@ class FiveBarMsaKernel final : public PostureKernel {
 
   PostureResult evaluate(const Vec3& point) override {
     PostureResult r;
-    const std::optional<FiveBarPosture> q = reach(o_, params_valid_, point, r);
+    const std::optional<FiveBarPosture> q = reach(point, r);
     if (!q) return r;
-    r.status = model_valid_ ? PostureStatus::kSingular : PostureStatus::kFailed;
-    if (!model_valid_) return r;
     const std::array<Vec2, 8> x = {q->A1, q->B1, q->B1, q->P, q->P, q->B2, q->B2, q->A2};
     Mat6 K = Mat6::Zero(), C = Mat6::Zero();
     for (int plane = 0; plane < 2; ++plane) {
@@ -128,9 +143,6 @@ class FiveBarMsaKernel final : public PostureKernel {
   }
 
   std::unique_ptr<PostureKernel> clone() const override { return std::make_unique<FiveBarMsaKernel>(*this); }
-  std::string description() const override {
-    return fmt::format("five-bar {} {} (MSA)", to_string(o_.mode), to_string(o_.assembly));
-  }
 
  private:
   // The singularity test (five_bar_kernel.hpp): the condensed stiffness S at node 4, scaled by the
@@ -200,8 +212,6 @@ class FiveBarMsaKernel final : public PostureKernel {
     return D;
   }
 
-  FiveBarKernelOptions o_;
-  bool params_valid_, model_valid_;
   std::array<Mat6, 2> proximal_, distal_;  // local beam stiffness of each plane (r1, r2)
   std::array<PlaneMatrix, 2> constant_;
   std::array<std::array<std::array<std::array<int, 2>, 6>, 4>, 2> targets_;  // plane, beam, end dof: rows
@@ -216,14 +226,12 @@ class FiveBarMsaKernel final : public PostureKernel {
 // link spring at B2, joint spring and passive joint at B2, link spring at P. Springs in the link's
 // axes; passive joints about z. Per posture: each leg's S (eq. 9) from the springs' constant
 // compliances moved to P, its stiffness (eq. 10), their sum (section 3.3).
-class FiveBarVjmKernel final : public PostureKernel {
+class FiveBarVjmKernel final : public FiveBarKernelBase {
  public:
+  // The joint spring (kr_z replaced by kr_x) must be finite and positive definite.
   explicit FiveBarVjmKernel(const FiveBarKernelOptions& o)
-      : o_(o),
-        params_valid_(validate(o.params).ok()),
-        // The joint spring (kr_z replaced by kr_x) must be finite and positive definite.
-        model_valid_(link_properties_valid(o.params) && o.params.joint_stiffness.head<5>().allFinite() &&
-                     (o.params.joint_stiffness.head<5>().array() > 0.0).all()) {
+      : FiveBarKernelBase(o, link_properties_valid(o.params) && o.params.joint_stiffness.head<5>().allFinite() &&
+                                 (o.params.joint_stiffness.head<5>().array() > 0.0).all()) {
     const FiveBarParams& p = o.params;
     const auto compliance = [](const Mat6& K) { return fixed_vjm::spd_inverse<6>(K.llt()); };
     proximal_ = compliance(vjm::cantilever_spring(p.link_material, p.link_section, p.r1, BeamTheory::kEulerBernoulli));
@@ -237,10 +245,8 @@ class FiveBarVjmKernel final : public PostureKernel {
 
   PostureResult evaluate(const Vec3& point) override {
     PostureResult r;
-    const std::optional<FiveBarPosture> q = reach(o_, params_valid_, point, r);
+    const std::optional<FiveBarPosture> q = reach(point, r);
     if (!q) return r;
-    r.status = model_valid_ ? PostureStatus::kSingular : PostureStatus::kFailed;
-    if (!model_valid_) return r;
     const Vec3 P = at(q->P), x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
     Mat6 K1, K2;
     {
@@ -269,13 +275,8 @@ class FiveBarVjmKernel final : public PostureKernel {
   }
 
   std::unique_ptr<PostureKernel> clone() const override { return std::make_unique<FiveBarVjmKernel>(*this); }
-  std::string description() const override {
-    return fmt::format("five-bar {} {} (VJM)", to_string(o_.mode), to_string(o_.assembly));
-  }
 
  private:
-  FiveBarKernelOptions o_;
-  bool params_valid_, model_valid_;
   Mat6 proximal_, distal_, joint_;  // spring compliances in their own axes
   Vec6 w_;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kinestat/vjm/chain.hpp"
 #include "mechanisms/fixed_size_vjm.hpp"
 
 namespace kinestat::mechanisms::fixed_vjm {
@@ -131,21 +132,9 @@ Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const V
     J.col(tw[a].slot).tail<3>() += tw[a].w;
   }
   if (F && H) {
-    // vjm::hessians: column b's change with the coordinate of a (Lie bracket for a before b) and
-    // the tool point's motion, dotted with the wrench.
-    const Vec3 force = F->head<3>(), moment = F->tail<3>();
     H->setZero(n_ + m_, n_ + m_);
-    for (int b = 0; b < nt; ++b)
-      for (int a = 0; a < nt; ++a) {
-        Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
-        if (a < b) {
-          dv = tw[a].w.cross(tw[b].v) - tw[b].w.cross(tw[a].v);
-          dw = tw[a].w.cross(tw[b].w);
-        }
-        const Vec3 dp = tw[a].v + tw[a].w.cross(p);
-        const Vec3 dcol_p = dv + dw.cross(p) + tw[b].w.cross(dp);
-        (*H)(tw[b].slot, tw[a].slot) += force.dot(dcol_p) + moment.dot(dw);
-      }
+    vjm::for_each_hessian_term(tw.data(), nt, p, *F,
+                               [&](int b, int a, double value) { (*H)(tw[b].slot, tw[a].slot) += value; });
   }
   return T;
 }
