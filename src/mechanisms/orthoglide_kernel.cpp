@@ -33,6 +33,7 @@ class OrthoglideKernel final : public PostureKernel {
  public:
   explicit OrthoglideKernel(const OrthoglideKernelOptions& o) : o_(o) {
     const OrthoglideStiffnessModel& m = o.model;
+    geometry_valid_ = validate(OrthoglideGeometry{m.link_length}).ok();
     model_valid_ = validate_stiffness_model(m).ok();
     // orthoglide_chains' springs; the chains' validation (vjm::Chain::validate) refuses a spring that
     // is not symmetric positive definite, which only the overrides can be.
@@ -60,9 +61,8 @@ class OrthoglideKernel final : public PostureKernel {
 
   PostureResult evaluate(const Vec3& p) override {
     PostureResult r;
-    const OrthoglideGeometry g{o_.model.link_length};
-    if (!validate(g).ok()) return r;
-    const std::optional<Vec3> rho = try_inverse_kinematics(g, p);
+    if (!geometry_valid_) return r;
+    const std::optional<Vec3> rho = try_inverse_kinematics(OrthoglideGeometry{o_.model.link_length}, p);
     if (!rho || serial_singular(p, *rho)) return r;  // kUnreachable, as velocity_transmission_at fails
     r.singularity_measure = singularity_measure(p, *rho);
     if (!model_valid_) return r;  // orthoglide_chains fails: kUnreachable
@@ -177,7 +177,7 @@ class OrthoglideKernel final : public PostureKernel {
   PostureResult loaded(const Vec3& p, const Vec3& rho, PostureResult& r);
 
   OrthoglideKernelOptions o_;
-  bool model_valid_ = false, springs_valid_ = false;
+  bool geometry_valid_ = false, model_valid_ = false, springs_valid_ = false;
   std::array<Mat3, 3> base_;
   std::array<Mat6, 3> foot_compliance_;  // global axes, about the slider point
   Mat6 leg_compliance_, bar_compliance_;  // in their own axes

@@ -324,6 +324,31 @@ void check_loaded(OrthoglideArchitecture a) {
 TEST(PostureKernels, OrthoglidePuuLoadedEqualsTheReference) { check_loaded(OrthoglideArchitecture::kPUU); }
 TEST(PostureKernels, OrthoglidePrparLoadedEqualsTheReference) { check_loaded(OrthoglideArchitecture::kPRPaR); }
 
+// A model the reference refuses is refused the same way at every point: non-positive lengths
+// (unreachable), properties the model's validation rejects (failed where reachable).
+TEST(PostureKernels, InvalidModelsAsTheReference) {
+  const std::vector<Vec3> pts = grid(Vec3(-0.15, -0.1, 0), Vec3(0.15, 0.2, 0), 7, 7, 1);
+  for (StiffnessMethod m : {StiffnessMethod::kMsa, StiffnessMethod::kVjm}) {
+    for (int bad = 0; bad < 3; ++bad) {
+      FiveBarKernelOptions o = five_bar_options(m, {1, 1}, Assembly::kUp);
+      if (bad == 0) o.params.r1 = -0.1;
+      if (bad == 1) o.params.link_material.E = 0.0;
+      if (bad == 2) o.params.joint_stiffness(0) = -1.0;
+      const Tally t = compare(*make_five_bar_kernel(o), *make_reference_five_bar_kernel(o), pts, false);
+      EXPECT_EQ(t.ok, 0);
+      EXPECT_GT(bad == 0 ? t.unreachable : t.failed, 5);
+    }
+  }
+  for (int bad = 0; bad < 2; ++bad) {
+    OrthoglideKernelOptions o;
+    if (bad == 0) o.model.actuator_stiffness = 0.0;
+    if (bad == 1) o.model.bar_spring = -Mat6::Identity();
+    const Tally t = compare(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), orthoglide_points(), false);
+    EXPECT_EQ(t.ok, 0);
+    EXPECT_GT(bad == 0 ? t.unreachable : t.failed, 300);
+  }
+}
+
 // ----------------------------------------------------------------------------------------------
 // Sweep contract
 
