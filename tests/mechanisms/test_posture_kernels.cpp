@@ -1,7 +1,7 @@
 // The sweep kernels (make_five_bar_kernel, make_orthoglide_kernel) against the reference kernels
 // (today's single-posture library paths: msa::cartesian_stiffness, vjm platform stiffness) at many
-// points: regular, near and on singularities, unreachable. Also cartesian_indices against
-// stiffness_indices, evaluate_postures on one and two threads, and no heap allocation per posture.
+// points: regular, near and on singularities, unreachable; unloaded and loaded; invalid models.
+// Also evaluate_postures on one and two threads, and no heap allocation per posture.
 #include <gtest/gtest.h>
 
 #include <array>
