@@ -18,6 +18,8 @@ PACKAGES=(
   nlohmann-json3-dev       # JSON results
   libfmt-dev               # formatting
   libtbb-dev               # threads (FEA assembly)
+  libplplot-dev            # PNG maps (kinestat map/design --png) ...
+  plplot-driver-cairo      # ... through PLplot's pngcairo device
 )
 
 missing=()

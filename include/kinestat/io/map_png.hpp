@@ -24,7 +24,7 @@ struct PlotField2D {
 struct PlotCurve {
   std::vector<std::array<double, 2>> points;
   std::string label;  // legend entry ("workspace boundary", "parallel singularity")
-  int style = 0;      // 0: solid black, 1: dashed red, 2: dotted white (distinct on any colour map)
+  int style = 0;      // 0: solid black, 1: dashed red, 2: short-dashed magenta (none is in viridis)
 };
 
 struct PlotOptions {
