@@ -1,0 +1,218 @@
+#include "kinestat/mechanisms/workspace_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace kinestat::mechanisms {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Indexed by MapField.
+constexpr std::array<MapFieldInfo, kNumMapFields> kFields = {{
+    {"k_t_min", "N/m", "stiffness against a force in the weakest direction: smallest eigenvalue of C_tt^-1"},
+    {"k_t_max", "N/m", "stiffness against a force in the stiffest direction: largest eigenvalue of C_tt^-1"},
+    {"k_r_min", "N m/rad", "stiffness against a moment about the weakest axis: smallest eigenvalue of C_rr^-1"},
+    {"k_r_max", "N m/rad", "stiffness against a moment about the stiffest axis: largest eigenvalue of C_rr^-1"},
+    {"trace", "SI (mixed)", "trace of the 6x6 K (Goncalves et al. 2010 eq. 8)"},
+    {"norm_1", "SI (mixed)", "1-norm of K: max column sum of |k_ij| (eq. 9)"},
+    {"norm_2", "SI (mixed)", "2-norm of K: largest |eigenvalue| (eq. 10)"},
+    {"norm_frobenius", "SI (mixed)", "Frobenius norm of K (eq. 11)"},
+    {"norm_inf", "SI (mixed)", "infinity-norm of K: max row sum of |k_ij|, the paper's Chebyshev norm"},
+    {"condition_number", "1 (of mixed units)", "condition number of K: max|eig| / min|eig| (eq. 13)"},
+    {"log10_det", "log10 of SI (mixed)", "log10 of det K (eq. 7)"},
+    {"deflection_t", "m", "tool-point translation under the load: |(C w)_xyz|"},
+    {"deflection_r", "rad", "tool-point rotation under the load: |(C w)_rx,ry,rz|"},
+    {"singularity_measure", "1", "distance to a singularity in [0, 1], 0 at a singularity (the kernel's measure)"},
+}};
+
+void summarize(FieldValues& f, const MapGrid& grid) {
+  FieldSummary& s = f.summary;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < f.values.size(); ++i) {
+    const double v = f.values[i];
+    if (std::isnan(v)) continue;
+    if (s.count == 0 || v < s.min) {
+      s.min = v;
+      s.argmin = grid.point(i);
+    }
+    if (s.count == 0 || v > s.max) s.max = v;
+    sum += v;
+    ++s.count;
+  }
+  if (s.count > 0) s.mean = sum / static_cast<double>(s.count);
+}
+
+}  // namespace
+
+std::size_t MapGrid::num_points() const {
+  return static_cast<std::size_t>(dimensions[0]) * static_cast<std::size_t>(dimensions[1]) *
+         static_cast<std::size_t>(dimensions[2]);
+}
+
+int MapGrid::num_varying_axes() const {
+  return static_cast<int>(std::count_if(dimensions.begin(), dimensions.end(), [](int n) { return n > 1; }));
+}
+
+Vec3 MapGrid::point(std::size_t index) const {
+  const std::size_t nx = dimensions[0], ny = dimensions[1];
+  const Vec3 ijk(static_cast<double>(index % nx), static_cast<double>((index / nx) % ny),
+                 static_cast<double>(index / (nx * ny)));
+  return origin + spacing.cwiseProduct(ijk);
+}
+
+double MapGrid::cell_measure() const {
+  double m = 1.0;
+  for (int a = 0; a < 3; ++a)
+    if (dimensions[a] > 1) m *= spacing(a);
+  return m;
+}
+
+double map_axis_points(const MapRange& r, double step) {
+  if (!(step > 0.0) || !std::isfinite(step) || !(r.lo <= r.hi)) return 0.0;
+  return std::floor((r.hi - r.lo) / step + 1e-9) + 1.0;
+}
+
+StatusOr<MapGrid> make_map_grid(const std::array<MapRange, 3>& ranges, double step, std::size_t max_points) {
+  if (!(step > 0.0) || !std::isfinite(step))
+    return Status::Invalid(fmt::format("grid step {:g} m: it must be positive and finite", step));
+  static constexpr const char* kAxis[3] = {"x", "y", "z"};
+  double count = 1.0;
+  MapGrid grid;
+  for (int a = 0; a < 3; ++a) {
+    const MapRange& r = ranges[a];
+    if (!std::isfinite(r.lo) || !std::isfinite(r.hi))
+      return Status::Invalid(fmt::format("the {} range has a non-finite bound", kAxis[a]));
+    if (r.lo > r.hi)
+      return Status::Invalid(fmt::format("the {} range {:g}:{:g} m is reversed; write the smaller bound first",
+                                         kAxis[a], r.lo, r.hi));
+    const double n = map_axis_points(r, step);
+    count *= n;
+    grid.origin(a) = r.lo;
+    grid.spacing(a) = step;
+    grid.dimensions[a] = static_cast<int>(std::min(n, 2e9));
+  }
+  if (grid.num_varying_axes() < 2)
+    return Status::Invalid(fmt::format("a map needs two ranges longer than the step {:g} m (a plane or a box); "
+                                       "got {} x {} x {} points",
+                                       step, grid.dimensions[0], grid.dimensions[1], grid.dimensions[2]));
+  if (count > static_cast<double>(max_points))
+    return Status::Invalid(fmt::format("the grid has {:.3g} points, more than the limit of {}", count, max_points));
+  return grid;
+}
+
+const char* to_string(MapPointStatus s) {
+  switch (s) {
+    case MapPointStatus::kOk: return "ok";
+    case MapPointStatus::kUnreachable: return "unreachable";
+    case MapPointStatus::kSingular: return "singular";
+    case MapPointStatus::kFailed: return "failed";
+    case MapPointStatus::kNearSingular: return "near-singular";
+  }
+  return "unknown";
+}
+
+const MapFieldInfo& field_info(MapField f) { return kFields[static_cast<int>(f)]; }
+
+std::optional<MapField> field_from_name(const std::string& name) {
+  for (int i = 0; i < kNumMapFields; ++i)
+    if (name == kFields[i].name) return static_cast<MapField>(i);
+  return std::nullopt;
+}
+
+std::array<double, kNumMapFields> point_fields(const PostureResult& r) {
+  // Stiffness under a pure force (moment): the inverse of the compliance block, i.e. the Schur
+  // complement K_tt - K_tr K_rr^-1 K_rt; judged by its symmetric part like every index here.
+  const auto block_eigenvalues = [](const Mat3& compliance_block) -> Vec3 {
+    const Mat3 k = compliance_block.inverse();
+    return Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (k + k.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
+  };
+  const Vec3 t = block_eigenvalues(r.compliance.topLeftCorner<3, 3>());
+  const Vec3 rot = block_eigenvalues(r.compliance.bottomRightCorner<3, 3>());
+  const CartesianIndices& ix = r.indices;
+  return {t(0),
+          t(2),
+          rot(0),
+          rot(2),
+          ix.trace,
+          ix.norm_1,
+          ix.norm_2,
+          ix.norm_frobenius,
+          ix.norm_inf,
+          ix.condition_number,
+          ix.log10_abs_det,
+          r.deflection.head<3>().norm(),
+          r.deflection.tail<3>().norm(),
+          r.singularity_measure};
+}
+
+const FieldValues* WorkspaceMap::find(MapField f) const {
+  for (const FieldValues& v : fields)
+    if (v.field == f) return &v;
+  return nullptr;
+}
+
+StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const MapGrid& grid,
+                                             const MapOptions& options) {
+  const std::size_t n = grid.num_points();
+  if (n == 0) return Status::Invalid("the map grid has no points");
+  if (n > options.max_points)
+    return Status::Invalid(fmt::format("the grid has {} points, more than the limit of {}", n, options.max_points));
+
+  WorkspaceMap map;
+  map.grid = grid;
+  map.description = kernel.description();
+  map.near_singular_threshold = options.near_singular_threshold;
+  map.min_stiffness = options.min_stiffness;
+  map.status.assign(n, MapPointStatus::kUnreachable);
+  static_assert(static_cast<int>(MapField::kSingularityMeasure) == kNumMapFields - 1);
+  for (int i = 0; i < kNumMapFields; ++i) {
+    const auto f = static_cast<MapField>(i);
+    const bool deflection = f == MapField::kDeflectionTranslation || f == MapField::kDeflectionRotation;
+    if (deflection && !options.with_deflection) continue;
+    map.fields.push_back({f, std::vector<double>(n, kNaN), {}});
+  }
+
+  // Chunks bound the memory of the posture results (~0.7 kB each) whatever the grid size.
+  constexpr std::size_t kChunk = std::size_t{1} << 16;
+  std::vector<Vec3> points;
+  std::vector<PostureResult> results;
+  for (std::size_t begin = 0; begin < n; begin += kChunk) {
+    const std::size_t end = std::min(n, begin + kChunk);
+    points.resize(end - begin);
+    for (std::size_t i = begin; i < end; ++i) points[i - begin] = grid.point(i);
+    std::function<void(std::size_t, std::size_t)> progress;
+    if (options.progress)
+      progress = [&, begin](std::size_t done, std::size_t) { options.progress(begin + done, n); };
+    evaluate_postures(kernel, points, results, options.threads, progress);
+    for (std::size_t i = begin; i < end; ++i) {
+      const PostureResult& r = results[i - begin];
+      if (r.status == PostureStatus::kUnreachable) continue;
+      MapPointStatus s = static_cast<MapPointStatus>(r.status);
+      if (s == MapPointStatus::kOk && !(r.singularity_measure >= options.near_singular_threshold))
+        s = MapPointStatus::kNearSingular;
+      map.status[i] = s;
+      if (has_values(s)) {
+        const std::array<double, kNumMapFields> v = point_fields(r);
+        for (FieldValues& f : map.fields) f.values[i] = v[static_cast<int>(f.field)];
+      } else {
+        map.fields.back().values[i] = r.singularity_measure;  // the last field (checked below)
+      }
+    }
+  }
+
+  for (MapPointStatus s : map.status) ++map.status_counts[static_cast<int>(s)];
+  for (FieldValues& f : map.fields) summarize(f, grid);
+  const std::size_t reachable = n - map.status_counts[static_cast<int>(MapPointStatus::kUnreachable)];
+  map.reachable_measure = static_cast<double>(reachable) * grid.cell_measure();
+  if (options.min_stiffness) {
+    const std::vector<double>& kt = map.find(MapField::kTranslationalMin)->values;
+    const auto stiff = std::count_if(kt.begin(), kt.end(), [&](double k) { return k >= *options.min_stiffness; });
+    map.stiff_measure = static_cast<double>(stiff) * grid.cell_measure();
+  }
+  return map;
+}
+
+}  // namespace kinestat::mechanisms
