@@ -267,10 +267,29 @@ void draw(const std::vector<PlotField2D>& fields, const PlotOptions& o, const Ma
   draw_colorbar(layout.colorbar, o.colorbar_label, o.log_scale, range);
   if (!o.curves.empty()) draw_legend(layout.legend, o.curves, line_width);
   if (!o.title.empty()) {
+    // One plmtex per line, in a font shrunk until the longest line fits the page width (estimated:
+    // a character of the sans-serif font is at most ~0.72 of its height wide).
+    std::vector<std::string> lines;
+    std::size_t longest = 0;
+    for (std::size_t begin = 0, end = 0; end != std::string::npos; begin = end + 1) {
+      end = o.title.find('\n', begin);
+      const std::string line = o.title.substr(begin, end == std::string::npos ? end : end - begin);
+      longest = std::max<std::size_t>(longest, std::count_if(line.begin(), line.end(), [](char c) {
+                                        return (static_cast<unsigned char>(c) & 0xc0) != 0x80;  // UTF-8 starts
+                                      }));
+      lines.push_back(escape_text(line));
+    }
     plvpor(0.0, 1.0, 0.0, 1.0);
-    plschr(0.0, 1.25 * text_scale);
     plcol0(kBlack);
-    plmtex("t", -1.6, 0.5, 0.5, escape_text(o.title).c_str());
+    double scale = 1.25 * text_scale;
+    const double width_px = 0.72 * 1.25 * layout.char_px * static_cast<double>(longest);
+    if (const double room = 0.96 * o.width; width_px > room) scale *= room / width_px;
+    plschr(0.0, scale);
+    // plmtex's displacement is in character heights of the current font; the lines keep the
+    // layout's spacing (1.6 line heights of 1.25 f).
+    const double spacing = 1.6 * 1.25 * text_scale / scale;
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      plmtex("t", -spacing * (static_cast<double>(i) + 1.0), 0.5, 0.5, lines[i].c_str());
   }
 }
 

@@ -21,7 +21,9 @@ MapPngLayout map_png_layout(const std::vector<PlotField2D>& fields, const PlotOp
   if (n == 0) return out;
 
   // Bands: title on top, colour bar and its labels on the right, legend at the bottom.
-  const double top = options.title.empty() ? f : 3.0 * f;
+  // The title's lines are 1.25 f high, 1.6 line heights apart.
+  const auto title_lines = options.title.empty() ? 0 : 1 + std::count(options.title.begin(), options.title.end(), '\n');
+  const double top = f + 2.0 * f * static_cast<double>(title_lines);
   const double right = 11.0 * f;
   const double legend = options.curves.empty() ? 0.0 : 2.8 * f;
   // Inside a cell: y tick labels and axis label on the left, x ones below, the panel title above.

@@ -28,7 +28,7 @@ struct PlotCurve {
 };
 
 struct PlotOptions {
-  std::string title;           // robot and mode, e.g. "five-bar ++ up: min translational stiffness"
+  std::string title;           // robot and mode, e.g. "five-bar ++ up: min translational stiffness"; '\n' breaks lines
   std::string x_label = "x (mm)";
   std::string y_label = "y (mm)";
   std::string colorbar_label;  // quantity and unit, e.g. "k_t,min (N/mm)"
