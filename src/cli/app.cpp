@@ -33,6 +33,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
            register_vjm_command,
            register_link_stiffness_command,
            register_identify_command,
+           register_map_command,
        })
     r(app, ctx);
   std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector

@@ -241,13 +241,13 @@ json solution_to_json(const msa::Structure& s, const msa::Solution& sol) {
   return j;
 }
 
-Status write_json(const std::string& path, const json& j) {
+Status write_json(const std::string& path, const json& j, int indent) {
   std::ofstream out(path);
   if (!out)
     return Status::Invalid(
         fmt::format("{}: cannot open for writing; check that the directory exists and is writable", path));
   // `replace`: a title with invalid UTF-8 must not abort the whole report.
-  out << j.dump(2, ' ', false, json::error_handler_t::replace) << '\n';
+  out << j.dump(indent, ' ', false, json::error_handler_t::replace) << '\n';
   out.close();
   if (!out) return Status::Invalid(fmt::format("{}: writing failed (disk full?)", path));
   return Status::Ok();

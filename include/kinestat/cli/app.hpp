@@ -44,6 +44,7 @@ void register_design_command(CLI::App& app, Context& ctx);
 void register_vjm_command(CLI::App& app, Context& ctx);
 void register_link_stiffness_command(CLI::App& app, Context& ctx);
 void register_identify_command(CLI::App& app, Context& ctx);
+void register_map_command(CLI::App& app, Context& ctx);
 
 // Runs `kinestat ARGS...` (args excludes the program name).
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

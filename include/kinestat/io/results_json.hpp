@@ -29,7 +29,8 @@ nlohmann::json stiffness_indices_to_json(const StiffnessIndices& ind);
 // JSON has no such numbers and a bare null would not say which one it was.
 void encode_non_finite(nlohmann::json& j);
 
-// Writes `j` indented; kInvalidInput naming the path when it cannot be written.
-Status write_json(const std::string& path, const nlohmann::json& j);
+// Writes `j` indented by `indent` spaces (-1: compact, on one line); kInvalidInput naming the path
+// when it cannot be written.
+Status write_json(const std::string& path, const nlohmann::json& j, int indent = 2);
 
 }  // namespace kinestat::io

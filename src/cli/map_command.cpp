@@ -1,0 +1,462 @@
+// kinestat map fivebar [--mode ++] [--assembly up] [--method msa] [--region x0:x1,y0:y1] [--step MM] [--load W]
+// kinestat map MODEL.yaml --box x0:x1,y0:y1,z0:z1 --step MM [--load D | --wrench W]
+// A workspace stiffness map (mechanisms/workspace_map.hpp; docs/maps.md): every point of a grid,
+// written as VTI (ParaView), JSON and PNG, with a short summary on stdout.
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "kinestat/cli/app.hpp"
+#include "kinestat/io/map_json.hpp"
+#include "kinestat/io/map_png.hpp"
+#include "kinestat/io/map_vti.hpp"
+#include "kinestat/io/results_json.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/mechanisms/five_bar_kernel.hpp"
+#include "kinestat/mechanisms/five_bar_loci.hpp"
+#include "kinestat/mechanisms/orthoglide_kernel.hpp"
+#include "kinestat/mechanisms/workspace_map.hpp"
+
+namespace kinestat::cli {
+namespace {
+
+using namespace kinestat::mechanisms;
+
+constexpr double kMm = 1e-3;  // m per mm
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr const char* kCommand = "map";
+
+struct MapArgs {
+  std::string target;  // "fivebar" or a VJM model file
+  std::string mode = "++", assembly = "up", method = "msa";
+  std::vector<std::string> region, box;  // "lo:hi" per axis, mm
+  std::optional<double> step;            // mm
+  std::vector<double> load, wrench;
+  std::optional<double> min_stiffness;   // N/mm
+  double near_singular = MapOptions{}.near_singular_threshold;
+  std::size_t max_points = MapOptions{}.max_points;
+  int threads = 0;
+  std::string vti, json, png, field = "k_t_min";
+  bool quiet = false;
+  // Options given on the command line, to refuse those that do not apply to the target.
+  CLI::Option *mode_opt = nullptr, *assembly_opt = nullptr, *method_opt = nullptr, *region_opt = nullptr,
+              *box_opt = nullptr, *wrench_opt = nullptr;
+};
+
+// How a field is shown on the command line and in the PNG (mm-N-s units): SI value * scale.
+struct Display {
+  const char* unit;
+  double scale;
+};
+Display display(MapField f) {
+  switch (f) {
+    case MapField::kTranslationalMin:
+    case MapField::kTranslationalMax: return {"N/mm", kMm};
+    case MapField::kRotationalMin:
+    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kMm};
+    case MapField::kDeflectionTranslation: return {"mm", 1.0 / kMm};
+    case MapField::kDeflectionRotation: return {"deg", 1.0 / kDeg};
+    default: return {field_info(f).unit, 1.0};
+  }
+}
+
+std::optional<double> parse_number(const std::string& s) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+// "lo:hi" or "value" per axis (mm) -> ranges (m); `count` axes.
+StatusOr<std::vector<MapRange>> parse_ranges(const std::vector<std::string>& parts, std::size_t count,
+                                             const char* option, const char* form) {
+  if (parts.size() != count)
+    return Status::Invalid(fmt::format("{} takes {} ranges, {} (mm); got {}", option, count, form, parts.size()));
+  std::vector<MapRange> ranges;
+  for (std::size_t a = 0; a < count; ++a) {
+    const std::string& p = parts[a];
+    const std::size_t colon = p.find(':', 1);  // not the sign of a leading negative bound
+    const auto lo = parse_number(p.substr(0, colon));
+    const auto hi = colon == std::string::npos ? lo : parse_number(p.substr(colon + 1));
+    const char axis = "xyz"[a];
+    if (!lo || !hi)
+      return Status::Invalid(fmt::format("{}: '{}' is not a range of {} in mm; write lo:hi or a single value (form {})",
+                                         option, p, axis, form));
+    if (*lo > *hi)
+      return Status::Invalid(
+          fmt::format("{}: the {} range {} is reversed; write the smaller bound first", option, axis, p));
+    ranges.push_back({*lo * kMm, *hi * kMm});
+  }
+  return ranges;
+}
+
+StatusOr<Vec6> six_numbers(const std::vector<double>& v, const char* option, const char* form) {
+  if (v.size() != 6) return Status::Invalid(fmt::format("{} takes 6 numbers: {}", option, form));
+  return Vec6(v.data());
+}
+
+// A wrench given as Fx,Fy,Fz (N), Mx,My,Mz (N mm) -> N, N m.
+Vec6 wrench_si(Vec6 w) {
+  w.tail<3>() *= kMm;
+  return w;
+}
+
+// What the target needs before the grid: the kernel, the ranges, the curves, words for messages.
+struct MapSetup {
+  std::unique_ptr<PostureKernel> kernel;
+  std::array<MapRange, 3> ranges{};
+  const char* range_option = "";
+  bool with_load = false;
+  std::vector<MapCurve> curves;
+  std::string workspace_hint;  // where the reachable region is, for an empty map
+};
+
+Status refuse_if_given(const CLI::Option* o, const std::string& why) {
+  if (o != nullptr && o->count() > 0) return Status::Invalid(fmt::format("{} {}", o->get_name(), why));
+  return Status::Ok();
+}
+
+StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
+  for (const CLI::Option* o : {a.box_opt, a.wrench_opt})
+    if (Status s = refuse_if_given(o, "applies to model files; the five-bar takes --region x0:x1,y0:y1 (mm) and "
+                                      "--load Fx,Fy,Fz,Mx,My,Mz (N, N mm)");
+        !s.ok())
+      return s;
+  FiveBarKernelOptions o;
+  const std::string& m = a.mode;
+  if (m.size() != 2 || (m[0] != '+' && m[0] != '-') || (m[1] != '+' && m[1] != '-'))
+    return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or --", m));
+  o.mode = {m[0] == '+' ? 1 : -1, m[1] == '+' ? 1 : -1};
+  if (a.assembly != "up" && a.assembly != "down")
+    return Status::Invalid(fmt::format("--assembly '{}' must be up or down", a.assembly));
+  o.assembly = a.assembly == "up" ? Assembly::kUp : Assembly::kDown;
+  if (a.method != "msa" && a.method != "vjm")
+    return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", a.method));
+  o.method = a.method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
+  MapSetup s;
+  if (!a.load.empty()) {
+    auto w = six_numbers(a.load, "--load", "Fx,Fy,Fz (N), Mx,My,Mz (N mm) at P");
+    if (!w.ok()) return w.status();
+    o.load = wrench_si(*w);
+    s.with_load = true;
+  }
+  auto box = five_bar_workspace_box(o.params, o.mode, o.assembly);
+  if (!box.ok()) return box.status();
+  s.workspace_hint = fmt::format("the workspace of this mode spans x {:.1f}:{:.1f}, y {:.1f}:{:.1f} mm",
+                                 box->min.x() / kMm, box->max.x() / kMm, box->min.y() / kMm, box->max.y() / kMm);
+  s.range_option = "--region";
+  if (!a.region.empty()) {
+    auto r = parse_ranges(a.region, 2, "--region", "x0:x1,y0:y1");
+    if (!r.ok()) return r.status();
+    s.ranges = {(*r)[0], (*r)[1], MapRange{}};
+  } else {
+    // The workspace's bounding box widened to multiples of the step: a symmetric robot gets a
+    // symmetric grid, and the grid lines fall on round numbers.
+    const double step = *a.step;
+    for (int i = 0; i < 2; ++i)
+      s.ranges[i] = {std::floor(box->min(i) / kMm / step + 1e-9) * step * kMm,
+                     std::ceil(box->max(i) / kMm / step - 1e-9) * step * kMm};
+  }
+  s.curves = five_bar_singular_loci(o.params, o.mode, o.assembly);
+  s.kernel = make_reference_five_bar_kernel(o);
+  return s;
+}
+
+StatusOr<MapSetup> model_setup(const MapArgs& a) {
+  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt})
+    if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a model file takes --box, --step, "
+                                      "--load or --wrench");
+        !s.ok())
+      return s;
+  if (a.box.empty()) return Status::Invalid("--box x0:x1,y0:y1,z0:z1 (mm) is required with a model file");
+  if (!a.step) return Status::Invalid("--step MM is required with a model file");
+  MapSetup s;
+  s.range_option = "--box";
+  auto r = parse_ranges(a.box, 3, "--box", "x0:x1,y0:y1,z0:z1");
+  if (!r.ok()) return r.status();
+  s.ranges = {(*r)[0], (*r)[1], (*r)[2]};
+  OrthoglideKernelOptions o;
+  if (!a.load.empty()) {
+    auto d = six_numbers(a.load, "--load", "dx,dy,dz (mm), rx,ry,rz (deg)");
+    if (!d.ok()) return d.status();
+    Vec6 disp = *d;
+    disp.head<3>() *= kMm;
+    disp.tail<3>() *= kDeg;
+    o.displacement = disp;
+  } else if (!a.wrench.empty()) {
+    auto w = six_numbers(a.wrench, "--wrench", "Fx,Fy,Fz (N), Mx,My,Mz (N mm)");
+    if (!w.ok()) return w.status();
+    o.wrench = wrench_si(*w);
+  }
+  s.with_load = o.displacement || o.wrench;
+  // Read last: a model with fea: springs may mesh and solve its links.
+  auto model = io::read_vjm_model_yaml(a.target);
+  if (!model.ok()) return model.status();
+  if (!model->orthoglide)
+    return Status::Invalid(fmt::format("{}: a `chains:` model fixes one posture, so it has no workspace to map; use "
+                                       "a model with `mechanism: orthoglide` (models/orthoglide_puu.yaml)",
+                                       a.target));
+  o.model = *model->orthoglide;
+  o.architecture = model->architecture;
+  s.workspace_hint = fmt::format("every point is outside a leg's reach (L = {:.1f} mm about the slider axes)",
+                                 o.model.link_length / kMm);
+  s.kernel = make_reference_orthoglide_kernel(o);
+  return s;
+}
+
+// Percentage and rate on stderr, once the run has taken a second (shorter runs stay silent).
+class Progress {
+ public:
+  explicit Progress(std::ostream& err) : err_(err) {}
+  void operator()(std::size_t done, std::size_t total) {
+    const double t = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (t < 1.0 || (done < total && t - last_ < 0.5)) return;
+    last_ = t;
+    shown_ = true;
+    err_ << fmt::format("\rkinestat map: {:3.0f}% ({} of {} points, {:.3g} points/s)", 100.0 * done / total, done,
+                        total, done / t)
+         << std::flush;
+  }
+  ~Progress() {
+    if (shown_) err_ << "\n";
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::ostream& err_;
+  Clock::time_point start_ = Clock::now();
+  double last_ = 0.0;
+  bool shown_ = false;
+};
+
+// "x -100:100 mm, y 0:50 mm, z = 0 mm"
+std::string ranges_text(const std::array<MapRange, 3>& ranges) {
+  std::string out;
+  for (int i = 0; i < 3; ++i) {
+    const MapRange& r = ranges[i];
+    out += r.lo == r.hi ? fmt::format("{}{} = {:g} mm", i ? ", " : "", "xyz"[i], r.lo / kMm)
+                        : fmt::format("{}{} {:g}:{:g} mm", i ? ", " : "", "xyz"[i], r.lo / kMm, r.hi / kMm);
+  }
+  return out;
+}
+
+std::string summary_text(const WorkspaceMap& map, double step_mm) {
+  const MapGrid& g = map.grid;
+  std::array<MapRange, 3> extent;
+  for (int i = 0; i < 3; ++i) extent[i] = {g.origin(i), g.origin(i) + (g.dimensions[i] - 1) * g.spacing(i)};
+  std::string out = fmt::format("{}\n  grid {} x {} x {} = {} points, step {:g} mm: {}\n", map.description,
+                                g.dimensions[0], g.dimensions[1], g.dimensions[2], g.num_points(), step_mm,
+                                ranges_text(extent));
+  out += "  points:";
+  for (int s = 0; s < kNumMapPointStatuses; ++s)
+    out += fmt::format("{} {} {}", s ? "," : "", map.status_counts[s], to_string(static_cast<MapPointStatus>(s)));
+  out += fmt::format(" (near-singular: singularity measure < {:g})\n", map.near_singular_threshold);
+  const bool volume = g.num_varying_axes() == 3;
+  const double unit = volume ? 1e-9 : 1e-6;  // m^3 or m^2 per mm^3 or mm^2
+  const char* unit_name = volume ? "mm^3" : "mm^2";
+  out += fmt::format("  reachable {} {:.6g} {}", volume ? "volume" : "area", map.reachable_measure / unit, unit_name);
+  if (map.min_stiffness)
+    out += fmt::format("; k_t_min >= {:g} N/mm on {:.6g} {} ({:.1f}% of the reachable)", *map.min_stiffness * kMm,
+                       map.stiff_measure / unit, unit_name,
+                       map.reachable_measure > 0 ? 100.0 * map.stiff_measure / map.reachable_measure : 0.0);
+  out += fmt::format("\n  {:<20} {:<20} {:>12} {:>12} {:>12}  {}\n", "field", "unit", "min", "max", "mean",
+                     "min at (mm)");
+  for (const FieldValues& f : map.fields) {
+    const Display d = display(f.field);
+    const FieldSummary& s = f.summary;
+    const Vec3 at = s.argmin / kMm;
+    out += fmt::format("  {:<20} {:<20} {:>12.5g} {:>12.5g} {:>12.5g}  ({:g}, {:g}, {:g})\n", field_info(f.field).name,
+                       d.unit, s.min * d.scale, s.max * d.scale, s.mean * d.scale, at.x(), at.y(), at.z());
+  }
+  return out;
+}
+
+// The PNG: one panel for a plane, a sheet of z slices for a box; axes in mm, values in display units.
+Status write_png(const std::string& path, const WorkspaceMap& map, MapField field) {
+  const MapGrid& g = map.grid;
+  // The plane's two axes (a, b) and the slicing axis c.
+  int a = 0, b = 1, c = 2;
+  if (g.num_varying_axes() == 2) {
+    if (g.dimensions[0] == 1) a = 1, b = 2, c = 0;
+    else if (g.dimensions[1] == 1) a = 0, b = 2, c = 1;
+  }
+  const Display d = display(field);
+  const std::vector<double>& values = map.find(field)->values;
+  std::vector<int> slices;
+  const int nc = g.dimensions[c];
+  constexpr int kMaxPanels = 9;
+  for (int k = 0; k < std::min(nc, kMaxPanels); ++k)
+    slices.push_back(nc <= kMaxPanels ? k : static_cast<int>(std::lround(k * (nc - 1.0) / (kMaxPanels - 1))));
+  const std::size_t stride[3] = {1, static_cast<std::size_t>(g.dimensions[0]),
+                                 static_cast<std::size_t>(g.dimensions[0]) * g.dimensions[1]};
+  std::vector<io::PlotField2D> panels;
+  for (int k : slices) {
+    io::PlotField2D p;
+    p.nx = g.dimensions[a];
+    p.ny = g.dimensions[b];
+    p.x0 = g.origin(a) / kMm;
+    p.y0 = g.origin(b) / kMm;
+    p.dx = g.spacing(a) / kMm;
+    p.dy = g.spacing(b) / kMm;
+    p.values.resize(static_cast<std::size_t>(p.nx) * p.ny);
+    for (int j = 0; j < p.ny; ++j)
+      for (int i = 0; i < p.nx; ++i)
+        p.values[i + static_cast<std::size_t>(p.nx) * j] = values[i * stride[a] + j * stride[b] + k * stride[c]] * d.scale;
+    if (nc > 1) p.title = fmt::format("{} = {:g} mm", "xyz"[c], (g.origin(c) + k * g.spacing(c)) / kMm);
+    panels.push_back(std::move(p));
+  }
+  io::PlotOptions o;
+  const char* name = field_info(field).name;
+  o.title = fmt::format("{}: {}", map.description, name);
+  o.x_label = fmt::format("{} (mm)", "xyz"[a]);
+  o.y_label = fmt::format("{} (mm)", "xyz"[b]);
+  o.colorbar_label = fmt::format("{} ({})", name, d.unit);
+  o.log_scale = field == MapField::kConditionNumber;
+  for (std::size_t i = 0; i < map.curves.size(); ++i) {
+    io::PlotCurve curve;
+    curve.label = map.curves[i].label;
+    curve.style = static_cast<int>(i % 3);
+    for (const std::vector<Vec3>& line : map.curves[i].lines) {
+      constexpr double kBreak = std::numeric_limits<double>::quiet_NaN();  // between polylines
+      if (!curve.points.empty()) curve.points.push_back({kBreak, kBreak});
+      for (const Vec3& q : line) curve.points.push_back({q(a) / kMm, q(b) / kMm});
+    }
+    o.curves.push_back(std::move(curve));
+  }
+  if (panels.size() == 1) return io::write_png_map(path, panels.front(), o);
+  return io::write_png_sheet(path, panels, o);
+}
+
+int run_map(MapArgs& a, Context& ctx) {
+  auto fail = [&](const Status& s) { return report_failure(ctx, kCommand, s); };
+  const bool five_bar = a.target == "fivebar";
+  if (five_bar && !a.step) a.step = 5.0;
+  if (a.step && !(*a.step > 0.0 && std::isfinite(*a.step)))
+    return fail(Status::Invalid(fmt::format("--step {:g} mm: the grid step must be positive", *a.step)));
+  if (a.min_stiffness && !(*a.min_stiffness >= 0.0 && std::isfinite(*a.min_stiffness)))
+    return fail(Status::Invalid(fmt::format("--min-stiffness {:g} N/mm: give a stiffness >= 0", *a.min_stiffness)));
+  if (!(a.near_singular >= 0.0 && a.near_singular <= 1.0))
+    return fail(Status::Invalid(fmt::format("--near-singular {:g}: the threshold is in [0, 1]", a.near_singular)));
+  if (a.threads < 0) return fail(Status::Invalid("--threads must be 0 (all cores) or a positive count"));
+  const std::optional<MapField> field = field_from_name(a.field);
+  if (!field) {
+    std::string names;
+    for (int i = 0; i < kNumMapFields; ++i) names += fmt::format("{}{}", i ? ", " : "", field_info(static_cast<MapField>(i)).name);
+    return fail(Status::Invalid(fmt::format("--field '{}' is not a map field; use one of {}", a.field, names)));
+  }
+
+  StatusOr<MapSetup> setup = five_bar ? five_bar_setup(a) : model_setup(a);
+  if (!setup.ok()) return fail(setup.status());
+  if ((*field == MapField::kDeflectionTranslation || *field == MapField::kDeflectionRotation) && !setup->with_load)
+    return fail(Status::Invalid(fmt::format("--field {} needs a load (--load{})", a.field, five_bar ? "" : " or --wrench")));
+
+  // The point count is estimated before anything is allocated.
+  double points = 1.0;
+  for (const MapRange& r : setup->ranges) points *= map_axis_points(r, *a.step * kMm);
+  const std::string region = ranges_text(setup->ranges);
+  if (points > static_cast<double>(a.max_points))
+    return fail(Status::Invalid(fmt::format("--step {:g} mm over {} gives {:.3g} points, more than --max-points {}; "
+                                            "use a larger --step or a smaller {}",
+                                            *a.step, region, points, a.max_points, setup->range_option)));
+  auto grid = make_map_grid(setup->ranges, *a.step * kMm, a.max_points);
+  if (!grid.ok())
+    return fail(Status::Invalid(fmt::format("{} with --step {:g} mm: {}", setup->range_option, *a.step,
+                                            grid.status().message())));
+
+  MapOptions options;
+  options.near_singular_threshold = a.near_singular;
+  if (a.min_stiffness) options.min_stiffness = *a.min_stiffness / kMm;
+  options.with_deflection = setup->with_load;
+  options.max_points = a.max_points;
+  options.threads = a.threads;
+  StatusOr<WorkspaceMap> map = Status::Ok();
+  {
+    Progress progress(ctx.err);
+    if (!a.quiet) options.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+    map = compute_workspace_map(*setup->kernel, *grid, options);
+  }
+  if (!map.ok()) return fail(map.status());
+  if (map->status_counts[static_cast<int>(MapPointStatus::kUnreachable)] == grid->num_points())
+    return fail(Status::Invalid(fmt::format("no reachable point in {} ({}) for {}: {}; nothing written",
+                                            setup->range_option, region, map->description, setup->workspace_hint)));
+  map->curves = std::move(setup->curves);
+
+  std::vector<std::string> written;
+  if (!a.vti.empty()) {
+    if (Status s = io::write_map_vti(a.vti, *map); !s.ok()) return fail(s);
+    written.push_back(a.vti);
+  }
+  if (!a.png.empty()) {
+    if (Status s = write_png(a.png, *map, *field); !s.ok()) return fail(s);
+    written.push_back(a.png);
+  }
+  const bool json_to_stdout = a.json == "-";
+  if (!a.json.empty()) {
+    const nlohmann::json j = io::workspace_map_to_json(*map);
+    if (json_to_stdout) {
+      ctx.out << j.dump() << "\n";
+    } else {
+      // Compact: a map holds ~15 numbers per point.
+      if (Status s = io::write_json(a.json, j, -1); !s.ok()) return fail(s);
+      written.push_back(a.json);
+    }
+  }
+  if (!a.quiet && !json_to_stdout) {
+    ctx.out << summary_text(*map, *a.step);
+    for (const std::string& w : written) ctx.out << "  wrote " << w << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void register_map_command(CLI::App& app, Context& ctx) {
+  auto a = std::make_shared<MapArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "map", "workspace stiffness map (docs/maps.md): the tool-point stiffness at every point of a grid, as VTI "
+             "(ParaView), JSON and PNG. Targets: `fivebar` (the 5R five-bar of Goncalves et al. 2010, the plane "
+             "of P) or a VJM model file with `mechanism: orthoglide` (a 3D box or a slice)");
+  cmd->add_option("target", a->target, "`fivebar` or a VJM model file (YAML, mechanism: orthoglide)")->required();
+  a->mode_opt = cmd->add_option("--mode", a->mode, "fivebar: working mode ++ (default), +-, -+ or --");
+  a->assembly_opt = cmd->add_option("--assembly", a->assembly, "fivebar: assembly mode up (default) or down");
+  a->method_opt = cmd->add_option("--method", a->method, "fivebar: stiffness by msa (default) or vjm");
+  a->region_opt = cmd->add_option("--region", a->region,
+                                  "fivebar: x0:x1,y0:y1 in mm (default: the bounding box of the mode's workspace)")
+                      ->delimiter(',');
+  a->box_opt = cmd->add_option("--box", a->box,
+                               "model: x0:x1,y0:y1,z0:z1 in mm (a single value for one axis: a 2D slice)")
+                   ->delimiter(',');
+  cmd->add_option("--step", a->step, "grid step in mm (fivebar default 5)");
+  CLI::Option* load = cmd->add_option("--load", a->load,
+                                      "fivebar: wrench at P Fx,Fy,Fz (N), Mx,My,Mz (N mm) for the deflection fields; "
+                                      "model: prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg), loaded mode")
+                          ->delimiter(',');
+  a->wrench_opt = cmd->add_option("--wrench", a->wrench,
+                                  "model: external wrench Fx,Fy,Fz (N), Mx,My,Mz (N mm) at the tool point, loaded mode")
+                      ->delimiter(',')
+                      ->excludes(load);
+  cmd->add_option("--min-stiffness", a->min_stiffness,
+                  "stiffness threshold K in N/mm: the summary gives the area/volume where k_t_min >= K");
+  cmd->add_option("--near-singular", a->near_singular,
+                  "points whose singularity measure (0..1) is below this are near-singular (default 0.01)");
+  cmd->add_option("--max-points", a->max_points, "refuse grids with more points than this (default 2000000)");
+  cmd->add_option("--threads", a->threads, "threads (default 0: all cores)");
+  cmd->add_option("--vti", a->vti, "write the map as VTK ImageData (.vti) for ParaView");
+  cmd->add_option("--json", a->json, "write the map as JSON ('-': to stdout, nothing else on stdout)");
+  cmd->add_option("--png", a->png, "write a PNG of --field (a box: a sheet of z slices)");
+  cmd->add_option("--field", a->field, "field of the PNG (default k_t_min; docs/maps.md lists them)");
+  cmd->add_flag("--quiet", a->quiet, "no progress on stderr, no summary on stdout (errors still go to stderr)");
+  cmd->callback([a, &ctx] { ctx.exit_code = run_map(*a, ctx); });
+}
+
+}  // namespace kinestat::cli

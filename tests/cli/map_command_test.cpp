@@ -1,0 +1,122 @@
+// kinestat map: JSON on stdout alone, the summary, the Orthoglide slice, refusals naming the option,
+// and an empty region refused without writing a file.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_run.hpp"
+
+namespace kinestat::cli {
+namespace {
+
+const std::string kSource = KINESTAT_SOURCE_DIR;
+const std::string kPuu = kSource + "/models/orthoglide_puu.yaml";
+
+TEST(MapCommand, FiveBarJsonToStdoutIsTheOnlyOutput) {
+  const CliRun r = run_cli({"map", "fivebar", "--step", "25", "--mode=+-", "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);  // throws if anything else is on stdout
+  EXPECT_EQ(j["schema"], "kinestat-workspace-map");
+  const auto& dims = j["grid"]["dimensions"];
+  EXPECT_EQ(j["fields"]["k_t_min"].size(), dims[0].get<std::size_t>() * dims[1].get<std::size_t>());
+  EXPECT_EQ(dims[2], 1);
+  EXPECT_FALSE(j["fields"].contains("deflection_t"));  // no --load
+  EXPECT_GT(j["summary"]["status_counts"]["ok"].get<int>(), 0);
+  EXPECT_NE(j["description"].get<std::string>().find("+-"), std::string::npos);
+  // The default region is the workspace box widened to the step: its corners are multiples of 25 mm.
+  const double x0 = j["grid"]["origin"][0].get<double>() * 1e3;
+  EXPECT_NEAR(x0, 25 * std::round(x0 / 25), 1e-9);
+}
+
+TEST(MapCommand, FiveBarSummaryInMillimetres) {
+  const CliRun r = run_cli({"map", "fivebar", "--region", "-100:100,50:150", "--step", "50", "--load", "10,0,0,0,0,0",
+                            "--min-stiffness", "1"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("grid 5 x 3 x 1 = 15 points, step 50 mm: x -100:100 mm, y 50:150 mm"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("reachable area"), std::string::npos);
+  EXPECT_NE(r.out.find("k_t_min >= 1 N/mm"), std::string::npos);
+  EXPECT_NE(r.out.find("deflection_t         mm"), std::string::npos) << r.out;
+  EXPECT_TRUE(r.err.empty()) << r.err;  // a short run prints no progress
+}
+
+TEST(MapCommand, OrthoglideSliceUnderAWrench) {
+  const CliRun r = run_cli({"map", kPuu, "--box", "-40:40,-40:40,10", "--step", "40", "--wrench", "100,0,0,0,0,500",
+                            "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["grid"]["dimensions"], nlohmann::json::array({3, 3, 1}));
+  EXPECT_DOUBLE_EQ(j["grid"]["origin"][2].get<double>(), 0.01);
+  ASSERT_EQ(j["fields"]["deflection_t"].size(), 9u);
+  for (const auto& v : j["fields"]["deflection_t"]) {
+    ASSERT_TRUE(v.is_number());
+    EXPECT_GT(v.get<double>(), 0.0);
+  }
+  EXPECT_EQ(j["summary"]["status_counts"]["unreachable"], 0);
+}
+
+struct BadCase {
+  std::vector<std::string> args;
+  std::string option;  // the message must name it
+};
+
+TEST(MapCommand, BadOptionsExitTwoNamingTheOption) {
+  const std::vector<BadCase> cases = {
+      {{"map", "fivebar", "--step", "0"}, "--step"},
+      {{"map", "fivebar", "--step", "-5"}, "--step"},
+      {{"map", "fivebar", "--region", "100:0,0:200"}, "--region"},
+      {{"map", "fivebar", "--region", "a:b,0:200"}, "--region"},
+      {{"map", "fivebar", "--region", "0:100"}, "--region"},
+      {{"map", "fivebar", "--mode", "+x"}, "--mode"},
+      {{"map", "fivebar", "--assembly", "left"}, "--assembly"},
+      {{"map", "fivebar", "--method", "fem"}, "--method"},
+      {{"map", "fivebar", "--field", "stiffness"}, "--field"},
+      {{"map", "fivebar", "--field", "deflection_t"}, "--field"},
+      {{"map", "fivebar", "--load", "1,2"}, "--load"},
+      {{"map", "fivebar", "--min-stiffness", "-1"}, "--min-stiffness"},
+      {{"map", "fivebar", "--step", "0.01"}, "--max-points"},
+      {{"map", "fivebar", "--box", "0:1,0:1,0:1"}, "--box"},
+      {{"map", "fivebar", "--wrench", "1,0,0,0,0,0"}, "--wrench"},
+      {{"map", kPuu, "--step", "10"}, "--box"},
+      {{"map", kPuu, "--box", "0:10,0:10,0"}, "--step"},
+      {{"map", kPuu, "--box", "0:10,0:10", "--step", "5"}, "--box"},
+      {{"map", kPuu, "--box", "0:10,0,0", "--step", "5"}, "--box"},
+      {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--region", "0:1,0:1"}, "--region"},
+      {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--mode", "+-"}, "--mode"},
+      {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--load", "1,1"}, "--load"},
+  };
+  for (const BadCase& c : cases) {
+    const CliRun r = run_cli(c.args);
+    std::string line;
+    for (const std::string& a : c.args) line += a + " ";
+    EXPECT_EQ(r.code, kExitBadInput) << line << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.option), std::string::npos) << line << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << line;
+  }
+}
+
+TEST(MapCommand, ChainsModelIsRefused) {
+  const CliRun r = run_cli({"map", kSource + "/tests/io/data/vjm_puu_q0.yaml", "--box", "0:10,0:10,0", "--step", "5"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("mechanism: orthoglide"), std::string::npos) << r.err;
+}
+
+TEST(MapCommand, EmptyRegionExitsTwoAndWritesNothing) {
+  const auto dir = std::filesystem::temp_directory_path() / "kinestat_map_empty";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string json = (dir / "m.json").string(), vti = (dir / "m.vti").string();
+  const CliRun r = run_cli({"map", "fivebar", "--region", "500:600,500:600", "--step", "20", "--json", json, "--vti", vti});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("no reachable point"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--region"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(json));
+  EXPECT_FALSE(std::filesystem::exists(vti));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace kinestat::cli
