@@ -1,11 +1,11 @@
 #include "kinestat/io/five_bar_design_output.hpp"
 
-#include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "io/vti_image.hpp"
+#include "kinestat/io/map_json.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -13,15 +13,6 @@ namespace {
 using json = nlohmann::json;
 using mechanisms::FiveBarDesignSweep;
 using mechanisms::kDesignShares;
-
-json grid_json(const mechanisms::MapGrid& g) {
-  return {{"origin", {g.origin.x(), g.origin.y(), g.origin.z()}},
-          {"spacing", {g.spacing.x(), g.spacing.y(), g.spacing.z()}},
-          {"dimensions", g.dimensions},
-          {"num_points", g.num_points()},
-          {"units", "m"},
-          {"order", "x fastest: point i + nx (j + ny k) is origin + (i dx, j dy, k dz)"}};
-}
 
 std::vector<double> shares(const FiveBarDesignSweep& s, std::size_t mechanisms::FiveBarDesignResult::*count) {
   std::vector<double> out;
@@ -36,9 +27,9 @@ json design_sweep_to_json(const FiveBarDesignSweep& s) {
   j["schema"] = "kinestat-five-bar-design-sweep";
   j["version"] = 1;
   j["description"] = s.description;
-  j["designs"] = grid_json(s.designs);
+  j["designs"] = map_grid_to_json(s.designs);
   j["designs"]["axes"] = {{"x", "r1 (proximal link length A_iB_i)"}, {"y", "r2 (distal link length B_iP)"}};
-  j["region"] = grid_json(s.region);
+  j["region"] = map_grid_to_json(s.region);
   j["criteria"] = {{"near_singular_threshold", s.near_singular_threshold},
                    {"min_stiffness", s.min_stiffness ? json(*s.min_stiffness) : json(nullptr)},
                    {"min_stiffness_unit", "N/m"},
