@@ -246,22 +246,23 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   out << fmt::format("  {} postures in {:.2f} s: {:.3g} postures/s on {} thread{}\n", postures, seconds,
                      postures / seconds, cores, cores == 1 ? "" : "s");
   auto line = [&](const FiveBarDesignResult& r) {
-    return fmt::format("{:9.4g} {:9.4g} {:8.1f}% {:10.1f}% {:17.1f}%", r.r1 / kMm, r.r2 / kMm,
+    return fmt::format("{:9.4g} {:9.4g} {:8.1f}% {:10.1f}% {:17.1f}% {:17.4g}", r.r1 / kMm, r.r2 / kMm,
                        100.0 * sweep->share(r.stiff), 100.0 * sweep->share(r.reachable),
-                       100.0 * sweep->share(r.singularity_free));
+                       100.0 * sweep->share(r.singularity_free), r.k_t_min_worst * kMm);
   };
   if (best.stiff == 0)
     out << "  no design serves any point of the region with these criteria (see the reachable and singularity-free "
            "shares)\n";
-  out << fmt::format("  best design: r1 = {:.4g} mm, r2 = {:.4g} mm: {:.1f}% of the region\n", best.r1 / kMm,
-                     best.r2 / kMm, 100.0 * sweep->share(best.stiff));
-  // The leading designs (ties in grid order), so that near-equal alternatives are visible.
+  out << fmt::format("  best design: r1 = {:.4g} mm, r2 = {:.4g} mm: {:.1f}% of the region, k_t_min >= {:.4g} N/mm "
+                     "on its singularity-free part\n",
+                     best.r1 / kMm, best.r2 / kMm, 100.0 * sweep->share(best.stiff), best.k_t_min_worst * kMm);
+  // The leading designs in the order of the choice, so that near-equal alternatives are visible.
   std::vector<std::size_t> order(sweep->results.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t i, std::size_t j) { return sweep->results[i].stiff > sweep->results[j].stiff; });
-  out << fmt::format("  {:>9} {:>9} {:>9} {:>11} {:>18}\n", "r1 (mm)", "r2 (mm)", "share", "reachable",
-                     "singularity-free");
+                   [&](std::size_t i, std::size_t j) { return better_design(sweep->results[i], sweep->results[j]); });
+  out << fmt::format("  {:>9} {:>9} {:>9} {:>11} {:>18} {:>17}\n", "r1 (mm)", "r2 (mm)", "share", "reachable",
+                     "singularity-free", "k_t_min (N/mm) >=");
   for (std::size_t i = 0; i < std::min<std::size_t>(order.size(), 10); ++i)
     out << "  " << line(sweep->results[order[i]]) << "\n";
   for (const std::string& w : written) out << "  wrote " << w << "\n";

@@ -1,5 +1,6 @@
 #include "kinestat/io/five_bar_design_output.hpp"
 
+#include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
@@ -45,11 +46,19 @@ json design_sweep_to_json(const FiveBarDesignSweep& s) {
     units[info.name] = "1";
     meaning[info.name] = info.meaning;
   }
+  json worst = json::array();
+  for (const auto& r : s.results) worst.push_back(std::isnan(r.k_t_min_worst) ? json(nullptr) : json(r.k_t_min_worst));
+  fields["k_t_min_worst"] = std::move(worst);
+  units["k_t_min_worst"] = "N/m";
+  meaning["k_t_min_worst"] = "smallest k_t_min over the singularity-free points (null: none); breaks ties of the share";
   j["fields"] = std::move(fields);
   j["units"] = std::move(units);
   j["meaning"] = std::move(meaning);
   const auto& b = s.results.at(s.best);
-  json best = {{"index", s.best}, {"r1", b.r1}, {"r2", b.r2}};
+  json best = {{"index", s.best},
+               {"r1", b.r1},
+               {"r2", b.r2},
+               {"k_t_min_worst", std::isnan(b.k_t_min_worst) ? json(nullptr) : json(b.k_t_min_worst)}};
   for (const auto& info : kDesignShares) best[info.name] = s.share(b.*info.count);
   j["best"] = std::move(best);
   return j;
@@ -58,6 +67,9 @@ json design_sweep_to_json(const FiveBarDesignSweep& s) {
 Status write_design_sweep_vti(const std::string& path, const FiveBarDesignSweep& s) {
   auto image = make_vti_image(s.designs);
   for (const auto& info : kDesignShares) add_vti_point_array(image, fmt::format("{} (1)", info.name), shares(s, info.count));
+  std::vector<double> worst;
+  for (const auto& r : s.results) worst.push_back(r.k_t_min_worst);
+  add_vti_point_array(image, "k_t_min_worst (N/m)", worst);
   add_vti_string(image, "length_unit", "m");
   add_vti_string(image, "axes", "x: r1, y: r2 (m)");
   add_vti_string(image, "description", s.description);

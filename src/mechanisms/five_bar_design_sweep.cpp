@@ -23,6 +23,12 @@ Status check_range(const MapRange& r, const char* name) {
 
 }  // namespace
 
+bool better_design(const FiveBarDesignResult& a, const FiveBarDesignResult& b) {
+  if (a.stiff != b.stiff) return a.stiff > b.stiff;
+  const auto key = [](double w) { return std::isnan(w) ? -std::numeric_limits<double>::infinity() : w; };
+  return key(a.k_t_min_worst) > key(b.k_t_min_worst);
+}
+
 StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOptions& o) {
   if (Status s = check_range(o.r1, "r1"); !s.ok()) return s;
   if (Status s = check_range(o.r2, "r2"); !s.ok()) return s;
@@ -68,16 +74,19 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
     if (!map.ok()) return map.status();
     FiveBarDesignResult r{design.params.r1, design.params.r2};
     const std::vector<double>& k_t_min = map->find(MapField::kTranslationalMin)->values;
+    double worst = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n_region; ++i) {
       const MapPointStatus s = map->status[i];
       if (s == MapPointStatus::kUnreachable) continue;
       ++r.reachable;
       if (s != MapPointStatus::kOk) continue;
       ++r.singularity_free;
+      worst = std::min(worst, k_t_min[i]);
       if (!o.min_stiffness || k_t_min[i] >= *o.min_stiffness) ++r.stiff;
     }
+    if (r.singularity_free > 0) r.k_t_min_worst = worst;
+    if (!out.results.empty() && better_design(r, out.results[out.best])) out.best = k;
     out.results.push_back(r);
-    if (r.stiff > out.results[out.best].stiff) out.best = k;
   }
   return out;
 }

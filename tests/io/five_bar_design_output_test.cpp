@@ -9,6 +9,7 @@
 #include <vtkPointData.h>
 #include <vtkXMLImageDataReader.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -32,6 +33,7 @@ FiveBarDesignSweep sample_sweep() {
   for (std::size_t k = 0; k < 6; ++k) {
     const Vec3 p = s.designs.point(k);
     s.results.push_back({p.x(), p.y(), 10 - k % 3, 8 - k % 3, k});
+    if (k != 2) s.results.back().k_t_min_worst = 1000.0 * static_cast<double>(k + 1);  // design 2: none
   }
   s.results[5].stiff = 2;
   s.best = 4;
@@ -65,6 +67,10 @@ TEST(FiveBarDesignOutput, VtiReadBackHasTheDesignGridAndShares) {
     EXPECT_DOUBLE_EQ(share->GetTuple1(k), static_cast<double>(s.results[k].stiff) / 10.0);
     EXPECT_DOUBLE_EQ(reachable->GetTuple1(k), static_cast<double>(s.results[k].reachable) / 10.0);
   }
+  vtkDataArray* worst = image->GetPointData()->GetArray("k_t_min_worst (N/m)");
+  ASSERT_NE(worst, nullptr);
+  EXPECT_DOUBLE_EQ(worst->GetTuple1(0), 1000.0);
+  EXPECT_TRUE(std::isnan(worst->GetTuple1(2)));  // no value stays NaN, never a filler
   std::filesystem::remove(path);
 }
 
@@ -87,6 +93,10 @@ TEST(FiveBarDesignOutput, JsonHasGridsSharesAndTheBestDesign) {
   EXPECT_DOUBLE_EQ(j["best"]["r2"].get<double>(), 0.10);
   EXPECT_DOUBLE_EQ(j["best"]["share"].get<double>(), 0.4);
   EXPECT_EQ(j["units"]["share"], "1");
+  EXPECT_DOUBLE_EQ(j["fields"]["k_t_min_worst"][5].get<double>(), 6000.0);
+  EXPECT_TRUE(j["fields"]["k_t_min_worst"][2].is_null());
+  EXPECT_EQ(j["units"]["k_t_min_worst"], "N/m");
+  EXPECT_DOUBLE_EQ(j["best"]["k_t_min_worst"].get<double>(), 5000.0);
 }
 
 TEST(FiveBarDesignOutput, UnwritableVtiPathIsNamed) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 namespace kinestat::mechanisms {
@@ -65,21 +66,50 @@ TEST(FiveBarDesignSweep, CountsEqualThoseOfASeparateMapOfEachDesign) {
   EXPECT_TRUE(some_stiff);
 }
 
-TEST(FiveBarDesignSweep, BestDesignHasTheLargestShareFirstOnATie) {
+TEST(FiveBarDesignSweep, BestDesignHasTheLargestShareThenTheStiffestWeakestPoint) {
   auto sweep = sweep_five_bar_designs(small_sweep());
   ASSERT_TRUE(sweep.ok()) << sweep.status().message();
-  const std::size_t best = sweep->best;
-  std::size_t worst = sweep->results[0].stiff;
+  const FiveBarDesignResult& best = sweep->results[sweep->best];
+  std::size_t smallest = best.stiff;
   for (std::size_t k = 0; k < sweep->results.size(); ++k) {
-    const std::size_t stiff = sweep->results[k].stiff;
-    worst = std::min(worst, stiff);
-    EXPECT_LE(stiff, sweep->results[best].stiff) << "design " << k;
-    if (k < best) {
-      EXPECT_LT(stiff, sweep->results[best].stiff) << "design " << k;
+    const FiveBarDesignResult& r = sweep->results[k];
+    smallest = std::min(smallest, r.stiff);
+    EXPECT_LE(r.stiff, best.stiff) << "design " << k;
+    if (r.stiff == best.stiff && k != sweep->best) {
+      EXPECT_LE(r.k_t_min_worst, best.k_t_min_worst) << "design " << k;
     }
   }
   // The designs differ, so the choice means something.
-  EXPECT_LT(worst, sweep->results[best].stiff);
+  EXPECT_LT(smallest, best.stiff);
+}
+
+TEST(FiveBarDesignSweep, WeakestPointIsTheMinimumOverTheSingularityFreePoints) {
+  FiveBarDesignSweepOptions o = small_sweep();
+  o.r1 = {0.1, 0.1};
+  o.r2 = {0.1, 0.1};
+  auto sweep = sweep_five_bar_designs(o);
+  ASSERT_TRUE(sweep.ok()) << sweep.status().message();
+  ASSERT_EQ(sweep->results.size(), 1u);
+  auto map = compute_workspace_map(*make_reference_five_bar_kernel(o.base), o.region);
+  ASSERT_TRUE(map.ok());
+  double worst = std::numeric_limits<double>::infinity();
+  const std::vector<double>& kt = map->find(MapField::kTranslationalMin)->values;
+  for (std::size_t i = 0; i < kt.size(); ++i)
+    if (map->status[i] == MapPointStatus::kOk) worst = std::min(worst, kt[i]);
+  EXPECT_NEAR(sweep->results[0].k_t_min_worst, worst, 1e-9 * worst);
+  // Ranking: more stiff points first; on equal counts the stiffer weakest point; none ranks last.
+  FiveBarDesignResult a, b;
+  a.stiff = b.stiff = 3;
+  a.k_t_min_worst = 2.0;
+  b.k_t_min_worst = 1.0;
+  EXPECT_TRUE(better_design(a, b));
+  EXPECT_FALSE(better_design(b, a));
+  b.stiff = 4;
+  EXPECT_TRUE(better_design(b, a));
+  FiveBarDesignResult none;
+  none.stiff = a.stiff;
+  EXPECT_TRUE(better_design(a, none));
+  EXPECT_FALSE(better_design(none, a));
 }
 
 TEST(FiveBarDesignSweep, WithoutThresholdTheShareIsTheSingularityFreeShare) {

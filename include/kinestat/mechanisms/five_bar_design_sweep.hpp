@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,7 +40,14 @@ struct FiveBarDesignSweepOptions {
 struct FiveBarDesignResult {
   double r1 = 0.0, r2 = 0.0;  // m
   std::size_t reachable = 0, singularity_free = 0, stiff = 0;
+  // The smallest k_t_min over the singularity-free points (N/m): the design's weakest point in the
+  // region, which breaks ties of the share. NaN without singularity-free points.
+  double k_t_min_worst = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The order of the choice: the larger stiff count, then the larger k_t_min_worst (none ranks below
+// any value). A strict weak order, for sorting.
+bool better_design(const FiveBarDesignResult& a, const FiveBarDesignResult& b);
 
 // The three counts as shares of the region, by the names files give them.
 struct DesignShareInfo {
@@ -62,7 +70,8 @@ struct FiveBarDesignSweep {
   double near_singular_threshold = 0.0;
   std::optional<double> min_stiffness;  // N/m
   std::vector<FiveBarDesignResult> results;  // in design grid order (r1 fastest)
-  std::size_t best = 0;  // the largest stiff share; on a tie the first in grid order
+  // The best design by better_design; of equal ones the first in grid order.
+  std::size_t best = 0;
   // Shares of the region's points, in [0, 1].
   double share(std::size_t count) const { return static_cast<double>(count) / static_cast<double>(region.num_points()); }
 };
