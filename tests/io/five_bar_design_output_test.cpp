@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace kinestat::io {
 namespace {
@@ -48,16 +49,11 @@ TEST(FiveBarDesignOutput, VtiReadBackHasTheDesignGridAndShares) {
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkImageData* image = reader->GetOutput();
-  int dims[3];
-  image->GetDimensions(dims);
-  EXPECT_EQ(dims[0], 3);
-  EXPECT_EQ(dims[1], 2);
-  EXPECT_EQ(dims[2], 1);
-  double origin[3], spacing[3];
-  image->GetOrigin(origin);
-  image->GetSpacing(spacing);
-  EXPECT_DOUBLE_EQ(origin[0], 0.05);
-  EXPECT_DOUBLE_EQ(spacing[1], 0.02);
+  // x: r1, y: r2 (m).
+  const int* dims = image->GetDimensions();
+  EXPECT_EQ(std::vector<int>(dims, dims + 3), (std::vector<int>{3, 2, 1}));
+  EXPECT_DOUBLE_EQ(image->GetOrigin()[0], 0.05);
+  EXPECT_DOUBLE_EQ(image->GetSpacing()[1], 0.02);
   vtkDataArray* share = image->GetPointData()->GetArray("share (1)");
   vtkDataArray* reachable = image->GetPointData()->GetArray("reachable_share (1)");
   ASSERT_NE(share, nullptr);
