@@ -115,6 +115,7 @@ Status write_design_png(const std::string& path, const mechanisms::FiveBarDesign
   o.x_label = "r1 (mm)";
   o.y_label = "r2 (mm)";
   o.colorbar_label = "share of the region (%)";
+  o.colour_range = {0.0, 100.0};  // shares of different runs compare
   const auto& b = s.results[s.best];
   const double x = b.r1 / kMm, y = b.r2 / kMm, nan = std::numeric_limits<double>::quiet_NaN();
   o.curves.push_back({{{x - 0.4 * f.dx, y}, {x + 0.4 * f.dx, y}, {nan, nan}, {x, y - 0.4 * f.dy}, {x, y + 0.4 * f.dy}},

@@ -103,6 +103,12 @@ Status check_input(const std::string& path, const std::vector<PlotField2D>& fiel
     }
   }
   if (!any_value) return Status::Invalid(path + ": the field has no value to draw (all NaN)");
+  if (o.colour_range) {
+    const auto [lo, hi] = *o.colour_range;
+    if (!(std::isfinite(lo) && std::isfinite(hi) && lo < hi && (!o.log_scale || lo > 0.0)))
+      return Status::Invalid(fmt::format("{}: colour range [{}, {}] must be finite and increasing{}", path, lo, hi,
+                                         o.log_scale ? ", positive on a log scale" : ""));
+  }
   for (const PlotCurve& c : o.curves)
     for (const auto& p : c.points)
       if (std::isinf(p[0]) || std::isinf(p[1]))
@@ -112,7 +118,12 @@ Status check_input(const std::string& path, const std::vector<PlotField2D>& fiel
 
 // The colour scale: the range of the finite values of all fields (log10 of them on a log scale),
 // widened when the field is constant so that the colour bar has an extent.
-std::array<double, 2> colour_range(const std::vector<PlotField2D>& fields, bool log_scale) {
+std::array<double, 2> colour_range(const std::vector<PlotField2D>& fields, const PlotOptions& o) {
+  const bool log_scale = o.log_scale;
+  if (o.colour_range) {
+    const auto [lo, hi] = *o.colour_range;
+    return log_scale ? std::array<double, 2>{std::log10(lo), std::log10(hi)} : *o.colour_range;
+  }
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const PlotField2D& f : fields)
     for (double v : f.values)
@@ -155,7 +166,8 @@ void draw_field(const PlotField2D& f, const PlotWindow& w, bool log_scale, const
   // (xmax - xmin) / (nx - 1), not / nx.
   PlotWindow cell_corners = w;  // x0, y0: corner of cell (0, 0); x1, y1: the cell size
   cell_corners.x1 = f.dx, cell_corners.y1 = f.dy;
-  plimagefr(columns.data(), f.nx, f.ny, w.x0, w.x1, w.y0, w.y1, range[0], range[1], range[0], range[1],
+  constexpr double kAll = std::numeric_limits<double>::max();  // every finite value is drawn, clamped to the range
+  plimagefr(columns.data(), f.nx, f.ny, w.x0, w.x1, w.y0, w.y1, -kAll, kAll, range[0], range[1],
             cell_corner_transform, &cell_corners);
 }
 
@@ -247,7 +259,7 @@ void draw(const std::vector<PlotField2D>& fields, const PlotOptions& o, const Ma
   const double text_scale = layout.char_px / (height_mm * px_per_mm);
   plschr(0.0, text_scale);
   const double line_width = std::max(1.0, layout.char_px / 7.0);
-  const std::array<double, 2> range = colour_range(fields, o.log_scale);
+  const std::array<double, 2> range = colour_range(fields, o);
 
   for (std::size_t k = 0; k < fields.size(); ++k) {
     const PageBox& b = layout.panels[k];

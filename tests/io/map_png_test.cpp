@@ -286,5 +286,26 @@ TEST_F(MapPng, LogScaleColoursByDecade) {
   }
 }
 
+TEST_F(MapPng, FixedColourRangeMapsAndClampsValues) {
+  // 25 and 75 on a 0..100 scale: a quarter and three quarters; 150 beyond the end takes its colour.
+  PlotField2D f;
+  f.nx = 3, f.ny = 1, f.dx = 10.0, f.dy = 10.0, f.values = {25.0, 75.0, 150.0};
+  PlotOptions o;
+  o.colour_range = std::array<double, 2>{0.0, 100.0};
+  const std::string path = dir_ + "/range.png";
+  const Status st = write_png_map(path, f, o);
+  ASSERT_TRUE(st.ok()) << st.message();
+  const Image im = read_png(path);
+  const MapPngLayout layout = map_png_layout({f}, o);
+  for (int i = 0; i < 3; ++i) {
+    const PixelPoint p = plot_to_pixel(layout, 0, 10.0 * i - 2.0, 2.0, o);
+    const Rgb c = im.at(static_cast<int>(p.col), static_cast<int>(p.row));
+    EXPECT_TRUE(near(c, viridis(std::min(f.values[i] / 100.0, 1.0)), 8))
+        << "value " << f.values[i] << ": " << c[0] << "," << c[1] << "," << c[2];
+  }
+  o.colour_range = std::array<double, 2>{1.0, 1.0};
+  EXPECT_NE(write_png_map(path, f, o).message().find("colour range [1, 1]"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace kinestat::io

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct PlotOptions {
   std::string colorbar_label;  // quantity and unit, e.g. "k_t,min (N/mm)"
   int width = 1000, height = 800;  // pixels of the whole image
   bool log_scale = false;      // colour scale in log10 (positive fields)
+  // Fixed ends of the colour scale (plot units; values beyond take the end colours); default: the
+  // range of the values.
+  std::optional<std::array<double, 2>> colour_range;
   std::vector<PlotCurve> curves;
 };
 
