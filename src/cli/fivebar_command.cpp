@@ -26,16 +26,14 @@ struct FiveBarArgs {
 StatusOr<mechanisms::FiveBarPosture> posture_from(const FiveBarArgs& a, const mechanisms::FiveBarParams& p) {
   if (!a.point.empty()) {
     if (a.point.size() != 2) return Status::Invalid("--point takes two numbers: x,y in m");
-    if (a.mode.size() != 2 || (a.mode[0] != '+' && a.mode[0] != '-') || (a.mode[1] != '+' && a.mode[1] != '-'))
-      return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or --", a.mode));
-    const mechanisms::WorkingMode m{a.mode[0] == '+' ? 1 : -1, a.mode[1] == '+' ? 1 : -1};
-    return mechanisms::inverse_kinematics(p, mechanisms::Vec2(a.point[0], a.point[1]), m);
+    const auto mode = mechanisms::working_mode_from_name(a.mode);
+    if (!mode) return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or --", a.mode));
+    return mechanisms::inverse_kinematics(p, mechanisms::Vec2(a.point[0], a.point[1]), *mode);
   }
   if (!a.theta1 || !a.theta2) return Status::Invalid("give the posture as --theta1 DEG --theta2 DEG, or --point X,Y");
-  if (a.assembly != "up" && a.assembly != "down")
-    return Status::Invalid(fmt::format("--assembly '{}' must be up or down", a.assembly));
-  return mechanisms::direct_kinematics(p, *a.theta1 * kDeg, *a.theta2 * kDeg,
-                                       a.assembly == "up" ? mechanisms::Assembly::kUp : mechanisms::Assembly::kDown);
+  const auto assembly = mechanisms::assembly_from_name(a.assembly);
+  if (!assembly) return Status::Invalid(fmt::format("--assembly '{}' must be up or down", a.assembly));
+  return mechanisms::direct_kinematics(p, *a.theta1 * kDeg, *a.theta2 * kDeg, *assembly);
 }
 
 }  // namespace

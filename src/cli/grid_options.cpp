@@ -45,15 +45,15 @@ StatusOr<std::vector<MapRange>> parse_ranges_mm(const std::vector<std::string>& 
   return ranges;
 }
 
-Status parse_five_bar_modes(const std::string& m, const std::string& assembly, const std::string& method,
+Status parse_five_bar_modes(const std::string& mode, const std::string& assembly, const std::string& method,
                             mechanisms::FiveBarKernelOptions& o) {
   using namespace mechanisms;
-  if (m.size() != 2 || (m[0] != '+' && m[0] != '-') || (m[1] != '+' && m[1] != '-'))
-    return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or -- (as --mode=--)", m));
-  o.mode = {m[0] == '+' ? 1 : -1, m[1] == '+' ? 1 : -1};
-  if (assembly != "up" && assembly != "down")
-    return Status::Invalid(fmt::format("--assembly '{}' must be up or down", assembly));
-  o.assembly = assembly == "up" ? Assembly::kUp : Assembly::kDown;
+  const auto m = working_mode_from_name(mode);
+  if (!m) return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or -- (as --mode=--)", mode));
+  o.mode = *m;
+  const auto a = assembly_from_name(assembly);
+  if (!a) return Status::Invalid(fmt::format("--assembly '{}' must be up or down", assembly));
+  o.assembly = *a;
   if (method != "msa" && method != "vjm") return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", method));
   o.method = method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
   return Status::Ok();

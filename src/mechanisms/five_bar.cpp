@@ -68,7 +68,19 @@ std::string to_string(WorkingMode m) {
   return std::string(1, m.sign1 > 0 ? '+' : '-') + (m.sign2 > 0 ? '+' : '-');
 }
 
+std::optional<WorkingMode> working_mode_from_name(const std::string& name) {
+  const auto sign = [](char c) { return c == '+' ? 1 : c == '-' ? -1 : 0; };
+  if (name.size() != 2 || sign(name[0]) == 0 || sign(name[1]) == 0) return std::nullopt;
+  return WorkingMode{sign(name[0]), sign(name[1])};
+}
+
 const char* to_string(Assembly a) { return a == Assembly::kUp ? "up" : "down"; }
+
+std::optional<Assembly> assembly_from_name(const std::string& name) {
+  if (name == "up") return Assembly::kUp;
+  if (name == "down") return Assembly::kDown;
+  return std::nullopt;
+}
 
 Status validate(const FiveBarParams& p) {
   const std::array<std::pair<const char*, double>, 3> lengths = {{{"r1", p.r1}, {"r2", p.r2}, {"r3", p.r3}}};

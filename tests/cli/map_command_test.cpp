@@ -8,6 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/mechanisms/five_bar.hpp"
+#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -56,6 +60,56 @@ TEST(MapCommand, OrthoglideSliceUnderAWrench) {
     EXPECT_GT(v.get<double>(), 0.0);
   }
   EXPECT_EQ(j["summary"]["status_counts"]["unreachable"], 0);
+}
+
+// Weakest and stiffest direction under a force, from a compliance: 1 / eigenvalues of C_tt.
+std::pair<double, double> force_stiffness_range(const Mat6& C) {
+  const Vec3 c = Eigen::SelfAdjointEigenSolver<Mat3>(C.topLeftCorner<3, 3>()).eigenvalues();
+  return {1 / c(2), 1 / c(0)};
+}
+
+// The map's values equal what the single-posture paths give (`kinestat fivebar`: msa::solve of the
+// posture; `kinestat vjm`: the model file's chains at the point), whichever kernel the command uses.
+TEST(MapCommand, ValuesEqualTheSinglePostureCommands) {
+  const Vec6 load = (Vec6() << 3.0, -2.0, 0.0, 0.0, 0.0, 0.0).finished();
+  const CliRun r = run_cli({"map", "fivebar", "--region", "-100:100,0:150", "--step", "25", "--load", "3,-2,0,0,0,0",
+                            "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const mechanisms::FiveBarParams params;
+  int compared = 0;
+  for (std::size_t i = 0; i < j["status"].size(); ++i) {
+    if (j["status"][i] != 0) continue;  // ok points: the others may sit on a threshold
+    const double x = -0.1 + 0.025 * static_cast<double>(i % 9), y = 0.025 * static_cast<double>(i / 9);
+    auto q = mechanisms::inverse_kinematics(params, mechanisms::Vec2(x, y), mechanisms::WorkingMode{1, 1});
+    ASSERT_TRUE(q.ok());
+    const msa::Solution sol = msa::solve(mechanisms::make_five_bar_structure(params, *q));
+    ASSERT_TRUE(sol.cartesian && sol.cartesian->stiffness_defined);
+    const Mat6& C = sol.cartesian->compliance;
+    const auto [k_min, k_max] = force_stiffness_range(C);
+    EXPECT_NEAR(j["fields"]["k_t_min"][i].get<double>(), k_min, 1e-9 * k_min) << i;
+    EXPECT_NEAR(j["fields"]["k_t_max"][i].get<double>(), k_max, 1e-9 * k_max) << i;
+    const double d = (C * load).head<3>().norm();
+    EXPECT_NEAR(j["fields"]["deflection_t"][i].get<double>(), d, 1e-9 * d) << i;
+    ++compared;
+  }
+  EXPECT_GT(compared, 20);
+
+  const CliRun o = run_cli({"map", kPuu, "--box", "-40:40,-40:40,10", "--step", "40", "--json", "-"});
+  ASSERT_EQ(o.code, kExitOk) << o.err;
+  const nlohmann::json m = nlohmann::json::parse(o.out);
+  auto model = io::read_vjm_model_yaml(kPuu);
+  ASSERT_TRUE(model.ok());
+  for (std::size_t i = 0; i < 9; ++i) {
+    const Vec3 p(-0.04 + 0.04 * static_cast<double>(i % 3), -0.04 + 0.04 * static_cast<double>(i / 3), 0.01);
+    auto chains = io::vjm_model_chains(*model, p);
+    ASSERT_TRUE(chains.ok());
+    auto K = vjm::platform_unloaded_stiffness(*chains);
+    ASSERT_TRUE(K.ok() && K->compliance_defined);
+    const auto [k_min, k_max] = force_stiffness_range(K->compliance);
+    EXPECT_NEAR(m["fields"]["k_t_min"][i].get<double>(), k_min, 1e-9 * k_min) << i;
+    EXPECT_NEAR(m["fields"]["k_t_max"][i].get<double>(), k_max, 1e-9 * k_max) << i;
+  }
 }
 
 struct BadCase {

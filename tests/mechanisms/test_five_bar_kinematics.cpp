@@ -235,5 +235,13 @@ TEST(FiveBarKinematics, StretchedLegIsSerialSingular) {
   EXPECT_LT(angle_gap(q->theta1, other->theta1), 1e-6);
 }
 
+TEST(FiveBarModes, NamesRoundTrip) {
+  for (const WorkingMode m : {WorkingMode{1, 1}, WorkingMode{1, -1}, WorkingMode{-1, 1}, WorkingMode{-1, -1}})
+    EXPECT_EQ(working_mode_from_name(to_string(m)), m);
+  for (const Assembly a : {Assembly::kUp, Assembly::kDown}) EXPECT_EQ(assembly_from_name(to_string(a)), a);
+  for (const char* bad : {"", "+", "+x", "+++", "0+"}) EXPECT_FALSE(working_mode_from_name(bad)) << bad;
+  EXPECT_FALSE(assembly_from_name("Up"));
+}
+
 }  // namespace
 }  // namespace kinestat::mechanisms

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include <Eigen/Dense>
@@ -46,6 +47,7 @@ struct WorkingMode {
   bool operator==(const WorkingMode&) const = default;
 };
 std::string to_string(WorkingMode m);  // "+-" etc.
+std::optional<WorkingMode> working_mode_from_name(const std::string& name);  // "++", "+-", "-+", "--"
 
 // Assembly mode of the direct kinematics (eq. (26)): kUp has P to the left of B1->B2,
 // (B2 - B1) x (P - B1) > 0, which is the solution of larger y whenever x_B1 < x_B2 (always for
@@ -54,6 +56,7 @@ std::string to_string(WorkingMode m);  // "+-" etc.
 // singularity, as an assembly mode should.
 enum class Assembly { kUp, kDown };
 const char* to_string(Assembly a);
+std::optional<Assembly> assembly_from_name(const std::string& name);  // "up", "down"
 
 // One configuration: input angles, joint centres, and its labels.
 struct FiveBarPosture {
