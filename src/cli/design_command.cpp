@@ -409,6 +409,7 @@ void register_design_command(CLI::App& app, Context& ctx) {
       ->delimiter(',');
   add_output_options(*cmd, args->out, "kinestat-orthoglide-design");
   cmd->callback([args, &ctx] { ctx.exit_code = run_design(*args, ctx); });
+  add_five_bar_design(design, ctx);
 }
 
 }  // namespace kinestat::cli
