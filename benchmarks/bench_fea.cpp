@@ -19,6 +19,7 @@
 #include "kinestat/fea/surface_mesher.hpp"
 #include "kinestat/fea/tet_element.hpp"
 #include "kinestat/fea/tet_mesh.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace {
 
@@ -94,7 +95,7 @@ void BM_FactorizeAndSolve(benchmark::State& state) {
   std::string backend;
   double solve_seconds = 0.0;
   for (auto _ : state) {
-    auto chol = solver::SparseCholesky::Create();
+    auto chol = solver::make_sparse_cholesky();
     backend = chol->backend_description();
     if (!chol->Factorize(*K, &report).ok()) state.SkipWithError("factorization failed");
     const auto t0 = std::chrono::steady_clock::now();

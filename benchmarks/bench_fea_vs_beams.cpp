@@ -160,9 +160,10 @@ bool compare_link(const LinkCase& c) {
       std::printf("%s: %s\n", c.file.c_str(), s.message().c_str());
       return false;
     }
-  const Mat6& K = fine->stiffness;
+  const Mat6& K = fine->cartesian.stiffness;
   double mesh_change = 0.0;
-  for (int i = 0; i < 6; ++i) mesh_change = std::max(mesh_change, std::abs(coarse->stiffness(i, i) / K(i, i) - 1.0));
+  for (int i = 0; i < 6; ++i)
+    mesh_change = std::max(mesh_change, std::abs(coarse->cartesian.stiffness(i, i) / K(i, i) - 1.0));
   std::printf("\n== %s  (FEA: quadratic tets, size %.1f mm, %d dofs; largest diagonal change from size %.1f mm "
               "(%d dofs): %.1f %%)\n   beam sections: %s\n",
               c.file.c_str(), c.fine_size * 1e3, fine->num_dofs, c.coarse_size * 1e3, coarse->num_dofs,
@@ -212,8 +213,8 @@ StatusOr<OrthoglideLinks> mesh_links(const mechanisms::OrthoglideStiffnessModel&
     StatusOr<fea::LinkStiffness> b = fea_link(bar, bar.fine_size, m.bar_material);
     if (!f.ok()) return f.status();
     if (!b.ok()) return b.status();
-    Kf = f->stiffness;
-    Kb = b->stiffness;
+    Kf = f->cartesian.stiffness;
+    Kb = b->cartesian.stiffness;
   } else {
     const bool one = source == LinkSource::kOneBeam;
     Kf = beam_link_spring(one ? foot.one_beam : foot.four_beams, foot.reference_point, m.foot_material);

@@ -19,7 +19,7 @@
 #include "kinestat/fea/region.hpp"
 #include "kinestat/fea/tet_element.hpp"
 #include "kinestat/fea/tet_mesh.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace {
 
@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
 
   const Material steel = Material::from_E_nu("steel", kE, kNu);
   auto K = fea::assemble_stiffness(mesh, {fea::elasticity_matrix(steel)}, {}, map);
-  auto chol = solver::SparseCholesky::Create();
+  auto chol = solver::make_sparse_cholesky();
   solver::FactorizationReport report;
   if (!K.ok() || !chol->Factorize(*K, &report).ok()) {
     std::fprintf(stderr, "kinestat assembly or factorization failed\n");

@@ -7,8 +7,11 @@
    of its own layer or of layers below it only, and internal headers ("M/x.hpp" under src/M/) of
    its own layer only. Tests (tests/L/) and benchmarks may include internals: they are not checked
    for that, but tests/L may not include layers above L.
+   A public header includes no internal header at all (it is installed; they are not).
 2. A layer's CMakeLists.txt links exactly the kinestat layers its files include (no more: a layer
    links only the layers it includes).
+3. The examples (examples/) and the install test's consumer (tests/install/) include public headers
+   only: they use kinestat as an outside project does.
 
 Usage: scripts/check_layers.py [ROOT]        exit 0 when clean, 1 with one line per violation
        scripts/check_layers.py --self-test   plants an upward include in a copy of the tree and
@@ -67,6 +70,9 @@ def check(root):
                     if parts[0] != layer:
                         errors.append(f"{rel}:{line}: layer '{layer}' includes '{inc}', an internal header "
                                       f"of layer '{parts[0]}' (use a public header under include/kinestat/)")
+                    elif rel.parts[0] == "include":
+                        errors.append(f"{rel}:{line}: the public header includes the internal header '{inc}', "
+                                      f"which is not installed (move what it needs to a public header)")
         cmake = root / "src" / layer / "CMakeLists.txt"
         if cmake.is_file():
             text = cmake.read_text()
@@ -93,16 +99,27 @@ def check(root):
                     line = text.count("\n", 0, m.start()) + 1
                     errors.append(f"{path.relative_to(root)}:{line}: tests of '{layer}' include the higher "
                                   f"layer '{target}' (move the test up to tests/{target}/)")
+    for folder in (root / "examples", root / "tests" / "install"):
+        for path in sorted(p for p in folder.rglob("*") if p.suffix in (".hpp", ".cpp")) if folder.is_dir() else []:
+            text = path.read_text(errors="replace")
+            for m in INCLUDE.finditer(text):
+                parts = m.group(1).split("/")
+                if len(parts) >= 2 and parts[0] in BELOW:
+                    line = text.count("\n", 0, m.start()) + 1
+                    errors.append(f"{path.relative_to(root)}:{line}: includes the internal header '{m.group(1)}'; "
+                                  f"examples use public headers (kinestat/...) only")
     return errors
 
 
 def self_test(root):
-    """Plants an upward and a cross-layer internal include in a copy; both must be reported."""
+    """Plants an upward include, a cross-layer internal include and an internal include in a public
+    header of the same layer in a copy; all three must be reported."""
     root = pathlib.Path(root)
     with tempfile.TemporaryDirectory() as tmp:
         copy = pathlib.Path(tmp) / "tree"
-        for part in ("include", "src", "tests"):
-            shutil.copytree(root / part, copy / part)
+        for part in ("include", "src", "tests", "examples"):
+            if (root / part).is_dir():
+                shutil.copytree(root / part, copy / part)
         if check(copy):
             print("self-test: the unmodified tree already fails; fix that first")
             return 1
@@ -110,11 +127,14 @@ def self_test(root):
         target.write_text('#include "kinestat/io/results_json.hpp"\n' + target.read_text())
         header = copy / "include" / "kinestat" / "mechanisms" / "five_bar.hpp"
         header.write_text(header.read_text().replace("#pragma once", '#pragma once\n#include "vjm/bordered_system.hpp"', 1))
+        public = copy / "include" / "kinestat" / "msa" / "structure.hpp"
+        public.write_text(public.read_text().replace("#pragma once", '#pragma once\n#include "msa/dof_map.hpp"', 1))
         errors = check(copy)
         upward = [e for e in errors if "src/msa/assembly.cpp:1:" in e and "higher" in e]
         internal = [e for e in errors if "five_bar.hpp" in e and "internal header" in e]
-        if upward and internal and len(errors) == 2:
-            print("self-test: both planted includes caught:")
+        installed = [e for e in errors if "msa/structure.hpp" in e and "not installed" in e]
+        if upward and internal and installed and len(errors) == 3:
+            print("self-test: the three planted includes caught:")
             for e in errors:
                 print("  " + e)
             return 0

@@ -18,6 +18,10 @@ PACKAGES=(
   nlohmann-json3-dev       # JSON results
   libfmt-dev               # formatting
   libtbb-dev               # threads (FEA assembly)
+  python3-dev pybind11-dev python3-pybind11  # the Python module kinestat (python/, docs/python.md)
+  python3-numpy            # its arrays
+  python3-pytest           # its tests (tests/python)
+  python3-matplotlib       # the Python examples' pictures (examples/python)
 )
 
 missing=()

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything (Release) and runs every test with ctest.
+# Installs what is missing, builds everything (Release), runs every test with ctest, then proves the
+# installed package with an outside project (scripts/check_install.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
 jobs=$(nproc 2>/dev/null || echo 2)
-cd build
-ctest --output-on-failure -j"$jobs" --timeout 600
+(cd build && ctest --output-on-failure -j"$jobs" --timeout 600)
+scripts/check_install.sh

@@ -3,8 +3,36 @@
 #include <ostream>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "kinestat/core/types.hpp"
+#include "kinestat/core/version.hpp"
+#include "kinestat/solver/library_versions.hpp"
 
 namespace kinestat::cli {
+namespace {
+
+// `kinestat --version`: ours, then the libraries the numbers depend on. CHOLMOD and the BLAS as
+// loaded at run time (the BLAS is a Debian alternative, chosen at run time); the header-only and
+// the VTK libraries as built against (KINESTAT_*_VERSION from src/cli/CMakeLists.txt).
+std::string version_text() {
+  const solver::LibraryVersions v = solver::library_versions();
+  return fmt::format("kinestat {}\n  sparse Cholesky: {}\n  BLAS: {}\n  built with Eigen {}.{}.{}, VTK {}, CGAL {}",
+                     kVersion, v.cholmod, v.blas, EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION,
+                     KINESTAT_VTK_VERSION, KINESTAT_CGAL_VERSION);
+}
+
+// "solve", "design orthoglide", ...: the subcommands selected so far, for messages.
+std::string selected_command(const CLI::App& app) {
+  std::string name;
+  for (const CLI::App* a = &app; !a->get_subcommands().empty();) {
+    a = a->get_subcommands().front();
+    name += (name.empty() ? "" : " ") + a->get_name();
+  }
+  return name;
+}
+
+}  // namespace
 
 int exit_code_for(const Status& status) {
   switch (status.code()) {
@@ -16,14 +44,16 @@ int exit_code_for(const Status& status) {
 }
 
 int report_failure(Context& ctx, const std::string& command, const Status& status) {
-  ctx.err << "kinestat " << command << ": " << status.message() << "\n";
+  ctx.err << "kinestat" << (command.empty() ? "" : " " + command) << ": " << status.message() << "\n";
   return exit_code_for(status);
 }
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). SI units unless a file says otherwise.",
+  CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). Options are in mm, deg, N, N mm, MPa "
+               "(each option says its unit); files declare their own units; JSON and VTK are SI.",
                "kinestat"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", version_text, "print the version of kinestat and of the libraries it uses");
   Context ctx{out, err};
   // Every subcommand is listed here once.
   for (const CommandRegistrar& r : std::initializer_list<CommandRegistrar>{
@@ -40,8 +70,11 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   try {
     app.parse(reversed);
   } catch (const CLI::ParseError& e) {
-    // --help prints and returns 0; a bad option prints CLI11's message and is bad input.
-    return app.exit(e, out, err) == 0 ? kExitOk : kExitBadInput;
+    if (e.get_exit_code() == 0) return app.exit(e, out, err), kExitOk;  // --help, --version
+    const std::string command = selected_command(app);
+    return report_failure(ctx, command,
+                          Status::Invalid(fmt::format("{}; see kinestat {}--help", e.what(),
+                                                      command.empty() ? "" : command + " ")));
   }
   return ctx.exit_code;
 }

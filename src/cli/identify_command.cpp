@@ -1,17 +1,17 @@
-// kinestat identify MODEL TARGETS
+// kinestat identify MODEL TARGETS [--tolerance T] [--json FILE|-] [--quiet]
 // Identifies an Orthoglide model's unknown inputs from measured (or published) compliance terms
 // (mechanisms/orthoglide_identification.hpp; formats in docs/vjm.md, "Identifying inputs"):
 // the start values come from the model file, the terms and the inputs to adjust from TARGETS.
 // Sample run (the paper's declared calibration; the bundled models hold its result):
 //   kinestat identify models/orthoglide_puu.yaml models/orthoglide_paper_targets.yaml
-#include <cmath>
 #include <memory>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "kinestat/cli/app.hpp"
+#include "cli/command_output.hpp"
 #include "kinestat/io/identification_yaml.hpp"
+#include "kinestat/io/orthoglide_results_json.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 
 namespace kinestat::cli {
@@ -20,30 +20,30 @@ namespace {
 struct IdentifyArgs {
   std::string model, targets;
   double tolerance = 1e-8;
+  OutputOptions out;
 };
 
 // The identified inputs in the bundled model files' units (mm-N-s), ready to paste.
-std::string model_file_lines(const mechanisms::OrthoglideStiffnessModel& start,
-                             const mechanisms::OrthoglideStiffnessModel& m,
-                             const std::vector<mechanisms::OrthoglideInput>& inputs) {
+std::string model_file_lines(const std::vector<mechanisms::OrthoglideInput>& inputs,
+                             const mechanisms::OrthoglideIdentification& id) {
   std::string out = "identified inputs as model-file values (mm-N-s):\n";
-  for (mechanisms::OrthoglideInput i : inputs) {
-    switch (i) {
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    const double v = id.values[k];
+    switch (inputs[k]) {
       case mechanisms::OrthoglideInput::kActuatorStiffness:
-        out += fmt::format("  actuator_stiffness: {:.5g}   # N/mm\n", m.actuator_stiffness * 1e-3);
+        out += fmt::format("  actuator_stiffness: {:.5g}   # N/mm\n", v * 1e-3);
         break;
       case mechanisms::OrthoglideInput::kBarScale:
-        out += fmt::format("  bar section: every dimension of the model file's times {:.5g}\n",
-                           std::sqrt(m.bar_section.A / start.bar_section.A));
+        out += fmt::format("  bar section: every dimension of the model file's times {:.5g}\n", v);
         break;
       case mechanisms::OrthoglideInput::kParallelogramWidth:
-        out += fmt::format("  parallelogram_width: {:.5g}   # mm\n", m.parallelogram_width * 1e3);
+        out += fmt::format("  parallelogram_width: {:.5g}   # mm\n", v * 1e3);
         break;
       case mechanisms::OrthoglideInput::kPlatformOffset:
-        out += fmt::format("  platform_offset: {:.5g}   # mm\n", m.platform_offset * 1e3);
+        out += fmt::format("  platform_offset: {:.5g}   # mm\n", v * 1e3);
         break;
       case mechanisms::OrthoglideInput::kFootLength:
-        out += fmt::format("  foot length: {:.5g}   # mm\n", m.foot_length * 1e3);
+        out += fmt::format("  foot length: {:.5g}   # mm\n", v * 1e3);
         break;
     }
   }
@@ -61,8 +61,10 @@ int run_identify(const IdentifyArgs& a, Context& ctx) {
   StatusOr<mechanisms::OrthoglideIdentification> id =
       mechanisms::identify_orthoglide_inputs(*model->orthoglide, t->inputs, t->targets, a.tolerance);
   if (!id.ok()) return bad(id.status());
-  ctx.out << fmt::format("kinestat identification: start {}, targets {}\n", a.model, a.targets) << id->report
-          << model_file_lines(*model->orthoglide, id->model, t->inputs);
+  Output out(ctx, a.out);
+  out.report() << fmt::format("kinestat identification: start {}, targets {}\n", a.model, a.targets) << id->report
+               << model_file_lines(t->inputs, *id);
+  if (Status s = out.write_json(io::identification_to_json(t->inputs, t->targets, *id)); !s.ok()) return bad(s);
   return kExitOk;
 }
 
@@ -72,11 +74,12 @@ void register_identify_command(CLI::App& app, Context& ctx) {
   auto args = std::make_shared<IdentifyArgs>();
   CLI::App* cmd = app.add_subcommand(
       "identify", "identify an Orthoglide model's unknown inputs from compliance targets (docs/vjm.md): "
-                  "Levenberg-Marquardt from the model file's values");
+                  "Levenberg-Marquardt from the model file's values (both files in their own 'units:')");
   cmd->add_option("model", args->model, "start model (VJM model file with 'mechanism: orthoglide')")->required();
   cmd->add_option("targets", args->targets, "targets file (YAML: inputs and compliance terms)")->required();
-  cmd->add_option("--tolerance", args->tolerance, "largest relative residual accepted (default 1e-8)")
+  cmd->add_option("--tolerance", args->tolerance, "largest relative residual accepted (dimensionless, default 1e-8)")
       ->check(CLI::PositiveNumber);
+  add_output_options(*cmd, args->out, "kinestat-identification");
   cmd->callback([args, &ctx] { ctx.exit_code = run_identify(*args, ctx); });
 }
 

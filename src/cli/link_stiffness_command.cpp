@@ -1,103 +1,109 @@
-// kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE]
+// kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE|-]
+//     [--convergence] [--quiet]
 // The 6x6 stiffness of one link by FEA (fea/link_stiffness.hpp; docs/fea.md).
-#include <cmath>
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
-#include "kinestat/cli/app.hpp"
+#include "cli/command_output.hpp"
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/mesh_convergence.hpp"
-#include "kinestat/fea/result_cache.hpp"
-#include "kinestat/fea/surface_mesher.hpp"
+#include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/io/fea_vtk.hpp"
+#include "kinestat/io/link_stiffness_json.hpp"
 
 namespace kinestat::cli {
-
 namespace {
 
-// Meshes with more nodes than this print their progress (assembly and factorization take seconds).
-constexpr int kProgressNodes = 20000;
+constexpr double kMm = 1e-3;
+constexpr double kMPa = 1e6;
 
-nlohmann::json matrix_json(const Mat6& A) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (int i = 0; i < 6; ++i) rows.push_back({A(i, 0), A(i, 1), A(i, 2), A(i, 3), A(i, 4), A(i, 5)});
-  return rows;
-}
+// The convergence study's meshes: the coarsest has at least kElementsAcross elements across the
+// part's thinnest extent, each next one is kRefinement times finer (dofs ~3.4 times more). Measured
+// on meshes/bar.off (20 x 30 x 200 mm, steel; the earlier 2h, 1.41h, h from the default 10 mm gave
+// 4 473, 4 578 and 5 289 dofs, about one element across the 20 mm, and no estimate): from 10 mm
+// (two elements across) the differences between meshes still grow (pre-asymptotic: n/a), from
+// 6.67 mm (three) every term converges with an observed order 1.5-3.6 and the limits agree to 1e-4
+// with those of 5, 3.33 and 2.5 mm.
+constexpr double kElementsAcross = 3.0;
+constexpr double kRefinement = 1.5;
 
-nlohmann::json result_json(const std::string& mesh_file, const fea::LinkStiffness& r, bool from_cache) {
-  auto vec = [](const auto& v) { return std::vector<double>(v.data(), v.data() + v.size()); };
-  return {{"schema", "kinestat-link-stiffness"},
-          {"version", 1},
-          {"mesh", {{"file", mesh_file}, {"nodes", r.num_nodes}, {"elements", r.num_elements},
-                    {"nodes_per_element", r.nodes_per_element}, {"dofs", r.num_dofs}}},
-          {"from_cache", from_cache},
-          {"reference_model", fea::reference_model_name(r.reference_model)},
-          {"reference_point_m", vec(r.reference_point)},
-          {"units", {{"dofs", "ux uy uz rx ry rz in the mesh (link) frame"},
-                     {"stiffness", "N/m | N/rad (rows ux uy uz), N | N m/rad (rows rx ry rz)"},
-                     {"compliance", "m/N | m/(N m) (rows ux uy uz), rad/N | rad/(N m) (rows rx ry rz)"}}},
-          {"stiffness", matrix_json(r.stiffness)},
-          {"compliance", matrix_json(r.compliance)},
-          {"symmetry_error", {{"compliance", r.compliance_symmetry_error}, {"stiffness", r.stiffness_symmetry_error}}},
-          {"eigenvalues_SI_mixed_units", {{"stiffness", vec(r.stiffness_eigenvalues)},
-                                          {"compliance", vec(r.compliance_eigenvalues)}}}};
+// The estimated relative error of each diagonal compliance term of `C` (the result printed above,
+// on a mesh of the study or not) against the study's Richardson limit.
+std::string result_error_line(const fea::ConvergenceStudy& study, const Mat6& C, double size) {
+  std::string out = fmt::format("  {:>20}", fmt::format("rel. error at {:g} m", size));
+  for (int k = 0; k < 6; ++k) {
+    const auto& e = study.diagonal[k];
+    out += e.ok() ? fmt::format(" {:12.3e}", (C(k, k) - e->extrapolated) / e->extrapolated) : fmt::format(" {:>12}", "n/a");
+  }
+  return out + "  (the 6x6 printed above)\n";
 }
 
 }  // namespace
 
 void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   struct Args {
-    std::string mesh, material = "steel", clamp, reference, unit = "mm", model = "rigid", vtk_dir, json_file, cache_dir;
+    std::string mesh, material = "steel", clamp, reference, unit = "mm", model = "rigid", vtk_dir, cache_dir;
     std::string reference_point;
-    double size = 0.0, stiff_ratio = 1e4;
+    double size_mm = 0.0, stiff_ratio = 1e4;
     bool linear = false;
     bool convergence = false;
+    OutputOptions out;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
       "link-stiffness", "6x6 stiffness of one link by FEA: clamped at --clamp, loaded through a reference body at "
-                        "--reference (docs/fea.md)");
-  cmd->add_option("mesh", args->mesh, "closed triangle surface of the link (STL, OFF, OBJ, PLY)")->required();
-  cmd->add_option("--material", args->material, "steel, aluminium, or E=PA,nu=V")->capture_default_str();
-  cmd->add_option("--clamp", args->clamp, "fixed region: x=V | plane:PX,PY,PZ,NX,NY,NZ | box:X0,Y0,Z0,X1,Y1,Z1 (mesh units)")
+                        "--reference (docs/fea.md); the report, JSON and VTK are in SI units");
+  cmd->add_option("mesh", args->mesh, "closed triangle surface of the link (STL, OFF, OBJ, PLY), in --unit")->required();
+  cmd->add_option("--material", args->material, "steel, aluminium, or E=MPA,nu=V (Young's modulus in MPa)")
+      ->capture_default_str();
+  cmd->add_option("--clamp", args->clamp,
+                  "fixed region: x=V | plane:PX,PY,PZ,NX,NY,NZ | box:X0,Y0,Z0,X1,Y1,Z1 (coordinates of the mesh "
+                  "file, in --unit)")
       ->required();
-  cmd->add_option("--reference", args->reference, "reference-end region, same syntax as --clamp")->required();
-  cmd->add_option("--unit", args->unit, "length unit of the mesh file and the regions: mm or m")
+  cmd->add_option("--reference", args->reference, "reference-end region, same syntax and unit as --clamp")->required();
+  cmd->add_option("--unit", args->unit, "length unit of the mesh file and so of --clamp, --reference, "
+                                        "--reference-point: mm or m")
       ->check(CLI::IsMember({"mm", "m"}))
       ->capture_default_str();
-  cmd->add_option("--size", args->size, "tetrahedron size in mesh units (default: 1/20 of the part's largest extent)");
+  cmd->add_option("--size", args->size_mm, "tetrahedron size (mm; default: 1/20 of the part's largest extent)");
   cmd->add_flag("--linear", args->linear, "4-node tetrahedra (default 10-node; linear ones lock in bending)");
   cmd->add_flag("--convergence", args->convergence,
-                "also solve meshes of size 2h and 1.41h and print a Richardson estimate of each compliance term: "
-                "how many digits of the 6x6 to trust");
+                "also solve three meshes of size h, h/1.5, h/2.25 (h: --size, at most 1/3 of the part's thinnest "
+                "extent) and print a Richardson estimate of each compliance term and the error of the result: how "
+                "many digits of the 6x6 to trust");
   cmd->add_option("--model", args->model, "reference body: rigid (exact coupling) or stiff-body (the paper's)")
       ->check(CLI::IsMember({"rigid", "stiff-body"}))
       ->capture_default_str();
-  cmd->add_option("--stiff-ratio", args->stiff_ratio, "E of the stiff body / E of the link")->capture_default_str();
+  cmd->add_option("--stiff-ratio", args->stiff_ratio, "E of the stiff body / E of the link (dimensionless)")
+      ->capture_default_str();
   cmd->add_option("--reference-point", args->reference_point,
-                  "X,Y,Z (mesh units): the point whose motion is reported (default: centre of the reference nodes' box)");
-  cmd->add_option("--vtk", args->vtk_dir, "write the six deformed-link .vtu files (ParaView) to this directory");
-  cmd->add_option("--json", args->json_file, "write the matrices (SI units) as JSON to this file");
+                  "X,Y,Z in --unit: the point whose motion is reported (default: centre of the reference nodes' box)");
+  cmd->add_option("--vtk", args->vtk_dir,
+                  "write the six deformed-link .vtu files and a .pvd that groups them (ParaView, SI units) to DIR");
   cmd->add_option("--cache", args->cache_dir, "reuse / store results in this directory (keyed by mesh, material, options)");
+  add_output_options(*cmd, args->out, "kinestat-link-stiffness");
   cmd->callback([args, &ctx] {
     auto fail = [&ctx](const Status& s) { ctx.exit_code = report_failure(ctx, "link-stiffness", s); };
-    auto write_json = [&](const fea::LinkStiffness& r, bool from_cache) {
-      if (args->json_file.empty()) return;
-      std::ofstream out(args->json_file);
-      out << result_json(args->mesh, r, from_cache).dump(2) << "\n";
-      if (!out) fail(Status::Invalid(args->json_file + ": cannot write the JSON file"));
-    };
+    Output out(ctx, args->out);
     const double scale = args->unit == "mm" ? 1e-3 : 1.0;
-    auto material = fea::parse_material(args->material, "--material " + args->material);
+    fea::LinkStiffnessRequest request;
+    request.mesh_file = args->mesh;
+    request.unit_scale = scale;
+    request.mesh_size = args->size_mm * kMm;  // 0: the default size
+    request.quadratic = !args->linear;
+    request.cache_dir = args->cache_dir;
+    auto material = fea::parse_material(args->material, "--material " + args->material, kMPa);
     if (!material.ok()) return fail(material.status());
-    fea::LinkStiffnessOptions options;
+    request.material = *material;
+    fea::LinkStiffnessOptions& options = request.options;
     auto clamp = fea::parse_region(args->clamp, scale, "--clamp " + args->clamp);
     if (!clamp.ok()) return fail(clamp.status());
     auto reference = fea::parse_region(args->reference, scale, "--reference " + args->reference);
@@ -112,60 +118,37 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       options.reference_point = Vec3((*p)[0], (*p)[1], (*p)[2]) * scale;
     }
     options.keep_fields = !args->vtk_dir.empty();
+    options.progress = [&out](const std::string& stage) { out.progress() << "link-stiffness: " << stage << " ...\n"; };
 
-    auto surface = fea::check_surface_file(args->mesh);
-    if (!surface.ok()) return fail(surface.status());
-    fea::MeshingOptions meshing;
-    meshing.unit_scale = scale;
-    meshing.quadratic = !args->linear;
-    meshing.size = args->size * scale;
-    if (!(meshing.size > 0.0)) meshing.size = fea::default_mesh_size(*surface, scale);
-    std::string cache_key;
-    if (!args->cache_dir.empty()) {
-      auto identity = fea::surface_mesh_identity(args->mesh, meshing);
-      if (!identity.ok()) return fail(identity.status());
-      cache_key = fea::link_stiffness_cache_key(*identity, *material, options);
-      if (args->vtk_dir.empty()) {
-        if (auto cached = fea::load_cached_link_stiffness(args->cache_dir, cache_key)) {
-          ctx.out << "(from cache " << args->cache_dir << "/" << cache_key << ".txt)\n"
-                  << fea::link_stiffness_report(*cached);
-          return write_json(*cached, true);
-        }
-      }
-    }
-    auto mesh = fea::mesh_surface_file(args->mesh, meshing);
-    if (!mesh.ok()) return fail(mesh.status());
-    if (mesh->num_nodes() > kProgressNodes)
-      options.progress = [&ctx](const std::string& stage) { ctx.err << "link-stiffness: " << stage << " ...\n"; };
-    auto result = fea::link_stiffness(*mesh, *material, options);
-    if (!result.ok()) return fail(result.status());
-    ctx.out << fmt::format("{}: {} triangles, meshed with size {:g} m; material {} (E = {:g} Pa, nu = {:g})\n",
-                           args->mesh, surface->triangles, meshing.size, material->id, material->E, material->nu())
-            << fea::link_stiffness_report(*result);
-    if (!cache_key.empty())
-      if (Status s = fea::store_cached_link_stiffness(args->cache_dir, cache_key, *result); !s.ok()) return fail(s);
-    if (!args->vtk_dir.empty()) {
+    auto run = fea::compute_link_stiffness(request);
+    if (!run.ok()) return fail(run.status());
+    out.report() << fmt::format("material {} (E = {:g} MPa, nu = {:g})\n", material->id, material->E / kMPa,
+                                material->nu())
+                 << run->report;
+    if (run->mesh) {
       std::vector<std::string> written;
       const std::string stem = std::filesystem::path(args->mesh).stem().string();
-      if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *mesh, *result, &written); !s.ok()) return fail(s);
-      for (const auto& w : written) ctx.out << "wrote " << w << "\n";
+      if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *run->mesh, run->result, &written); !s.ok())
+        return fail(s);
+      for (const auto& w : written) out.report() << "wrote " << w << "\n";
     }
+    std::optional<fea::ConvergenceStudy> study;
     if (args->convergence) {
-      // The finest mesh is the one just solved; two coarser ones give the three points Richardson needs.
-      auto make = [&](double h) {
-        fea::MeshingOptions m = meshing;
-        m.size = h;
-        return fea::mesh_surface_file(args->mesh, m);
-      };
-      fea::LinkStiffnessOptions study_options = options;
-      study_options.keep_fields = false;
-      study_options.progress = nullptr;
-      const double h = meshing.size;
-      auto study = fea::mesh_convergence_study(make, {2.0 * h, std::sqrt(2.0) * h, h}, *material, study_options);
-      if (!study.ok()) return fail(study.status());
-      ctx.out << "\n" << fea::convergence_report(*study);
+      const double thinnest = (run->surface.hi - run->surface.lo).minCoeff() * scale;
+      const double h = std::min(run->mesh_size, thinnest / kElementsAcross);
+      auto s = fea::link_stiffness_convergence(request, {h, h / kRefinement, h / (kRefinement * kRefinement)});
+      if (!s.ok()) return fail(s.status());
+      study = *s;
+      out.report() << "\n"
+                   << fea::convergence_report(*study)
+                   << result_error_line(*study, run->result.cartesian.compliance, run->mesh_size);
     }
-    write_json(*result, false);
+    if (out.json_wanted()) {
+      nlohmann::json j = io::link_stiffness_to_json(args->mesh, run->mesh_size, run->result, run->from_cache);
+      if (study) j["convergence"] = io::convergence_study_to_json(*study);
+      if (Status s = out.write_json(j); !s.ok()) return fail(s);
+    }
+    ctx.exit_code = kExitOk;
   });
 }
 

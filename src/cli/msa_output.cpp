@@ -1,6 +1,5 @@
 #include "cli/msa_output.hpp"
 
-#include <filesystem>
 #include <ostream>
 
 #include <CLI/CLI.hpp>
@@ -11,38 +10,30 @@
 namespace kinestat::cli {
 
 void add_msa_output_options(CLI::App& cmd, MsaOutputOptions& o) {
-  cmd.add_option("--vtk", o.vtk_dir, "write ParaView files (.vtu per load case + .pvd) into this folder");
-  cmd.add_option("--json", o.json_path, "write the results as JSON (schema: docs/results-json.md)");
-  cmd.add_flag("--quiet", o.quiet, "print no report (errors still go to stderr)");
+  cmd.add_option("--vtk", o.vtk_dir, "write ParaView files (.vtu per load case + .pvd, SI units) into this folder");
+  add_output_options(cmd, o.out, "kinestat-msa-results");
 }
 
-int finish_msa_run(const msa::Structure& s, const msa::Solution& sol, const MsaOutputOptions& o, Context& ctx) {
+int finish_msa_run(const std::string& command, const msa::Structure& s, const msa::Solution& sol,
+                   const MsaOutputOptions& o, Context& ctx, const nlohmann::json& extra) {
   const StatusCode code = sol.status.code();
-  if (code == StatusCode::kInvalidInput || code == StatusCode::kInternal) {
-    ctx.err << "kinestat: " << sol.status.message() << "\n";
-    return exit_code_for(sol.status);
-  }
-  if (!o.quiet) ctx.out << msa::full_report(s, sol);
-  if (!o.json_path.empty()) {
-    std::error_code ec;  // the folder may not exist yet; write_json reports what still fails
-    if (const auto parent = std::filesystem::path(o.json_path).parent_path(); !parent.empty())
-      std::filesystem::create_directories(parent, ec);
-    if (Status st = io::write_json(o.json_path, io::solution_to_json(s, sol)); !st.ok()) {
-      ctx.err << "kinestat: " << st.message() << "\n";
-      return kExitBadInput;
-    }
-    if (!o.quiet) ctx.out << "\nJSON results: " << o.json_path << "\n";
+  if (code == StatusCode::kInvalidInput || code == StatusCode::kInternal)
+    return report_failure(ctx, command, sol.status);
+  Output out(ctx, o.out);
+  out.report() << msa::full_report(s, sol);
+  if (out.json_wanted()) {
+    nlohmann::json j = io::solution_to_json(s, sol);
+    j.update(extra);
+    if (Status st = out.write_json(j); !st.ok()) return report_failure(ctx, command, st);
+    if (o.out.json != "-") out.report() << "\nJSON results: " << o.out.json << "\n";
   }
   if (!o.vtk_dir.empty()) {
     std::vector<std::string> written;
-    if (Status st = io::write_vtk(s, sol, o.vtk_dir, o.basename, &written); !st.ok()) {
-      ctx.err << "kinestat: " << st.message() << "\n";
-      return kExitBadInput;
-    }
-    if (!o.quiet)
-      for (const auto& f : written) ctx.out << "ParaView file: " << f << "\n";
+    if (Status st = io::write_vtk(s, sol, o.vtk_dir, o.basename, &written); !st.ok())
+      return report_failure(ctx, command, st);
+    for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
   }
-  return exit_code_for(sol.status);
+  return out.finish(command, sol.status);
 }
 
 }  // namespace kinestat::cli

@@ -4,23 +4,26 @@
 
 #include <string>
 
-#include "kinestat/cli/app.hpp"
+#include <nlohmann/json.hpp>
+
+#include "cli/command_output.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::cli {
 
 struct MsaOutputOptions {
+  OutputOptions out;      // --json, --quiet
   std::string vtk_dir;    // empty: no VTK
-  std::string json_path;  // empty: no JSON
   std::string basename;   // of the .vtu/.pvd files
-  bool quiet = false;     // no report on stdout (files and errors only)
 };
-
-// Returns the exit status: 0 solved, 3 singular (diagnosis printed; files still written so the free
-// motions can be seen in ParaView), 2 invalid model, 1 internal failure.
-int finish_msa_run(const msa::Structure& s, const msa::Solution& sol, const MsaOutputOptions& o, Context& ctx);
 
 // Adds --vtk, --json and --quiet to a command.
 void add_msa_output_options(CLI::App& cmd, MsaOutputOptions& o);
+
+// Returns the exit status: 0 solved, 3 singular (diagnosis printed; files still written so the free
+// motions can be seen in ParaView), 2 invalid model or unwritable output, 1 internal failure.
+// `extra` holds fields added to the JSON document (the five-bar's posture).
+int finish_msa_run(const std::string& command, const msa::Structure& s, const msa::Solution& sol,
+                   const MsaOutputOptions& o, Context& ctx, const nlohmann::json& extra = nlohmann::json::object());
 
 }  // namespace kinestat::cli

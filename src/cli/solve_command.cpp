@@ -1,4 +1,4 @@
-// kinestat solve FILE [--vtk DIR] [--json FILE] [--regularize]
+// kinestat solve FILE [--vtk DIR] [--json FILE|-] [--quiet] [--regularize]
 #include <filesystem>
 #include <ostream>
 
@@ -16,7 +16,9 @@ void register_solve_command(CLI::App& app, Context& ctx) {
     MsaOutputOptions out;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("solve", "solve a YAML structure file (format: docs/structure-format.md)");
+  CLI::App* cmd = app.add_subcommand(
+      "solve", "solve a YAML structure file (format: docs/structure-format.md; its numbers are in the file's "
+               "'units:', SI or mm-N-s); the report, JSON and VTK are in SI units");
   cmd->add_option("file", args->file, "structure file (.yaml)")->required();
   cmd->add_flag("--regularize", args->regularize,
                 "for a singular structure, also print a REGULARIZED answer (K + 1e-10 diag K), clearly marked");
@@ -24,15 +26,14 @@ void register_solve_command(CLI::App& app, Context& ctx) {
   cmd->callback([args, &ctx] {
     auto s = io::read_structure_yaml(args->file);
     if (!s.ok()) {
-      ctx.err << "kinestat: " << s.status().message() << "\n";
-      ctx.exit_code = kExitBadInput;
+      ctx.exit_code = report_failure(ctx, "solve", s.status());
       return;
     }
     msa::SolveOptions opt;
     opt.regularize = args->regularize;
     const msa::Solution sol = msa::solve(*s, opt);
     args->out.basename = std::filesystem::path(args->file).stem().string();
-    ctx.exit_code = finish_msa_run(*s, sol, args->out, ctx);
+    ctx.exit_code = finish_msa_run("solve", *s, sol, args->out, ctx);
   });
 }
 

@@ -1,4 +1,4 @@
-// kinestat vjm MODEL [--point x,y,z] [--load dx,dy,dz,rx,ry,rz | --wrench Fx,Fy,Fz,Mx,My,Mz]
+// kinestat vjm MODEL [--point x,y,z] [--load dx,dy,dz,rx,ry,rz | --wrench Fx,Fy,Fz,Mx,My,Mz] [--json FILE|-]
 // Virtual joint method stiffness (Pashkevich et al. 2009) of a platform read from a VJM model file
 // (docs/vjm.md): unloaded (eq. 9-10) and, with a load, loaded (eq. 11-21).
 #include <numbers>
@@ -7,10 +7,11 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "kinestat/cli/app.hpp"
-#include "kinestat/core/stiffness_indices.hpp"
+#include "cli/command_output.hpp"
+#include "kinestat/core/cartesian_stiffness.hpp"
+#include "kinestat/io/vjm_results_json.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
-#include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::cli {
@@ -23,19 +24,13 @@ struct VjmArgs {
   std::string model;
   std::vector<double> point;   // mm
   std::vector<double> load;    // mm, deg
-  std::vector<double> wrench;  // N, N m
+  std::vector<double> wrench;  // N, N mm
+  OutputOptions out;
 };
 
 // The stiffness, compliance, indices and lost directions of one VJM result.
-std::string stiffness_report(const vjm::CartesianStiffness& K, const std::string& what) {
-  std::string out = msa::matrix6_report(K.stiffness, "stiffness K (" + what + ")", "N/m, N/rad; N m/m, N m/rad");
-  if (K.compliance_defined)
-    out += msa::matrix6_report(K.compliance, "compliance C = K^-1 (" + what + ")", "m/N, m/(N m); rad/N, rad/(N m)");
-  out += "  indices of K:\n" + msa::indices_report(stiffness_indices(K.stiffness));
-  for (const Vec6& d : K.free_directions) out += "  LOST (free, zero stiffness): " + vjm::describe_twist(d) + "\n";
-  for (const Vec6& d : K.rigid_directions) out += "  LOST (rigid, infinite stiffness): " + vjm::describe_twist(d) + "\n";
-  if (!K.status.ok()) out += "  STATUS: " + K.status.message() + "\n";
-  return out;
+std::string stiffness_report(const CartesianStiffness& K, const std::string& what) {
+  return cartesian_stiffness_report(K, "Cartesian stiffness (" + what + ")");
 }
 
 template <int N>
@@ -46,61 +41,73 @@ StatusOr<Eigen::Matrix<double, N, 1>> vector_option(const std::vector<double>& v
 
 int run_vjm(const VjmArgs& a, Context& ctx) {
   auto bad = [&](const Status& s) { return report_failure(ctx, "vjm", s); };
-  StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
-  if (!model.ok()) return bad(model.status());
+  // The options first, in SI: a bad one is reported before any result.
   std::optional<Vec3> point;
   if (!a.point.empty()) {
     StatusOr<Vec3> p = vector_option<3>(a.point, "--point", "x,y,z in mm");
     if (!p.ok()) return bad(p.status());
     point = *p * kMm;
   }
+  std::optional<Vec6> displacement, wrench;
+  if (!a.load.empty()) {
+    StatusOr<Vec6> d = vector_option<6>(a.load, "--load", "dx,dy,dz in mm and rx,ry,rz in deg");
+    if (!d.ok()) return bad(d.status());
+    displacement = *d;
+    displacement->head<3>() *= kMm;
+    displacement->tail<3>() *= kDeg;
+  }
+  if (!a.wrench.empty()) {
+    StatusOr<Vec6> w = vector_option<6>(a.wrench, "--wrench", "Fx,Fy,Fz in N and Mx,My,Mz in N mm");
+    if (!w.ok()) return bad(w.status());
+    wrench = *w;
+    wrench->tail<3>() *= kMm;  // N mm -> N m
+  }
+  StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
+  if (!model.ok()) return bad(model.status());
+  // The model's `fea:` link springs: meshing and FEA (or their cache), with progress on stderr.
+  auto progress = [&ctx, &a](const std::string& stage) {
+    if (!a.out.quiet) ctx.err << "vjm: " << stage << " ...\n";
+  };
+  if (Status s = io::resolve_fea_springs(*model, progress); !s.ok()) return bad(s);
   StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, point);
   if (!chains.ok()) return bad(chains.status());
-  StatusOr<vjm::CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
+  StatusOr<CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
   if (!K0.ok()) return bad(K0.status());
 
-  std::string out = fmt::format("kinestat VJM report{}\n", model->title.empty() ? "" : ": " + model->title);
-  const Vec3 tool = chains->front().nominal_pose().translation() / kMm;
-  out += fmt::format("  {} chains; tool point ({:.4f}, {:.4f}, {:.4f}) mm\n\n", chains->size(), tool.x(), tool.y(),
-                     tool.z());
-  out += stiffness_report(*K0, "unloaded, eq. 10");
-  int code = exit_code_for(K0->status);
+  io::VjmResults results;
+  results.model_file = a.model;
+  results.title = model->title;
+  results.num_chains = static_cast<int>(chains->size());
+  results.tool_point = chains->front().nominal_pose().translation();
+  results.unloaded = *K0;
+  Output out(ctx, a.out);
+  out.report() << fmt::format("kinestat VJM report{}\n", model->title.empty() ? "" : ": " + model->title);
+  const Vec3 tool = results.tool_point / kMm;
+  out.report() << fmt::format("  {} chains; tool point ({:.4f}, {:.4f}, {:.4f}) mm\n\n", chains->size(), tool.x(),
+                              tool.y(), tool.z())
+               << stiffness_report(*K0, "unloaded, eq. 10");
+  Status result = K0->status;
 
-  if (!a.load.empty() || !a.wrench.empty()) {
-    StatusOr<vjm::PlatformState> state = Status::Ok();
-    if (!a.load.empty()) {
-      StatusOr<Vec6> d = vector_option<6>(a.load, "--load", "dx,dy,dz in mm and rx,ry,rz in deg");
-      if (!d.ok()) return bad(d.status());
-      Vec6 disp = *d;
-      disp.head<3>() *= kMm;
-      disp.tail<3>() *= kDeg;
-      state = vjm::platform_equilibrium(*chains, disp);
-    } else {
-      StatusOr<Vec6> w = vector_option<6>(a.wrench, "--wrench", "Fx,Fy,Fz in N and Mx,My,Mz in N m");
-      if (!w.ok()) return bad(w.status());
-      state = vjm::platform_equilibrium_under_wrench(*chains, *w);
-    }
-    if (!state.ok()) {
-      ctx.out << out;
-      return bad(state.status());
-    }
+  if (displacement || wrench) {
+    StatusOr<vjm::PlatformState> state = displacement ? vjm::platform_equilibrium(*chains, *displacement)
+                                                      : vjm::platform_equilibrium_under_wrench(*chains, *wrench);
+    if (!state.ok()) return bad(state.status());
     const Vec6& t = state->displacement;
     const Vec6& F = state->wrench;
-    out += fmt::format("\nloaded equilibrium: {}\n", state->report.summary());
-    out += fmt::format("  displacement ({:.6e}, {:.6e}, {:.6e}) mm, rotation ({:.6e}, {:.6e}, {:.6e}) deg\n",
-                       t(0) / kMm, t(1) / kMm, t(2) / kMm, t(3) / kDeg, t(4) / kDeg, t(5) / kDeg);
-    out += fmt::format("  wrench F = ({:.6e}, {:.6e}, {:.6e}) N, M = ({:.6e}, {:.6e}, {:.6e}) N m\n", F(0), F(1),
-                       F(2), F(3), F(4), F(5));
-    StatusOr<vjm::CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
-    if (!KF.ok()) {
-      ctx.out << out;
-      return bad(KF.status());
-    }
-    out += stiffness_report(*KF, "loaded, eq. 21");
-    if (code == kExitOk) code = exit_code_for(KF->status);
+    out.report() << fmt::format("\nloaded equilibrium: {}\n", state->report.summary())
+                 << fmt::format("  displacement ({:.6e}, {:.6e}, {:.6e}) mm, rotation ({:.6e}, {:.6e}, {:.6e}) deg\n",
+                                t(0) / kMm, t(1) / kMm, t(2) / kMm, t(3) / kDeg, t(4) / kDeg, t(5) / kDeg)
+                 << fmt::format("  wrench F = ({:.6e}, {:.6e}, {:.6e}) N, M = ({:.6e}, {:.6e}, {:.6e}) N mm\n", F(0),
+                                F(1), F(2), F(3) / kMm, F(4) / kMm, F(5) / kMm);
+    results.state = *state;
+    StatusOr<CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
+    if (!KF.ok()) return bad(KF.status());
+    results.loaded = *KF;
+    out.report() << stiffness_report(*KF, "loaded, eq. 21");
+    if (result.ok()) result = KF->status;
   }
-  ctx.out << out;
-  return code;
+  if (Status s = out.write_json(io::vjm_results_to_json(results)); !s.ok()) return bad(s);
+  return out.finish("vjm", result);
 }
 
 }  // namespace
@@ -108,8 +115,8 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
 void register_vjm_command(CLI::App& app, Context& ctx) {
   auto args = std::make_shared<VjmArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "vjm", "virtual joint method stiffness of a VJM model file (docs/vjm.md): unloaded, and loaded under "
-             "--load or --wrench; stiffness printed in SI units");
+      "vjm", "virtual joint method stiffness of a VJM model file (docs/vjm.md; its numbers are in the file's "
+             "'units:'): unloaded, and loaded under --load or --wrench; stiffness printed in SI units");
   cmd->add_option("model", args->model, "VJM model file (YAML)")->required();
   cmd->add_option("--point", args->point, "tool point x,y,z in mm (Orthoglide models only; default Q0 = 0,0,0)")
       ->delimiter(',');
@@ -117,9 +124,10 @@ void register_vjm_command(CLI::App& app, Context& ctx) {
                                       "prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg): loaded mode")
                           ->delimiter(',');
   cmd->add_option("--wrench", args->wrench,
-                  "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N m) about the tool point: loaded mode")
+                  "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N mm) about the tool point: loaded mode")
       ->delimiter(',')
       ->excludes(load);
+  add_output_options(*cmd, args->out, "kinestat-vjm-results");
   cmd->callback([args, &ctx] { ctx.exit_code = run_vjm(*args, ctx); });
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 namespace kinestat {
 
 StiffnessIndices stiffness_indices(const MatX& K) {
@@ -50,6 +52,22 @@ StiffnessIndices stiffness_indices(const MatX& K) {
     s.determinant = sign * std::pow(10.0, log10_det);
   }
   return s;
+}
+
+std::string indices_report(const StiffnessIndices& ix) {
+  std::string out;
+  out += fmt::format("    size {}x{}, symmetry error {:.1e}\n", ix.size, ix.size, ix.symmetry_error);
+  out += fmt::format("    determinant       {} (sign {}, log10|det| = {:.4f})\n",
+                     std::isfinite(ix.determinant) ? fmt::format("{:.4e}", ix.determinant) : std::string("overflows double"),
+                     ix.det_sign, ix.log10_abs_det);
+  out += fmt::format("    trace             {:.4e}\n", ix.trace);
+  out += fmt::format("    1-norm            {:.4e}\n", ix.norm_1);
+  out += fmt::format("    2-norm            {:.4e}\n", ix.norm_2);
+  out += fmt::format("    Frobenius norm    {:.4e}\n", ix.norm_frobenius);
+  out += fmt::format("    inf-norm (rows)   {:.4e}\n", ix.norm_inf);
+  out += fmt::format("    max |k_ij|        {:.4e}\n", ix.max_abs_entry);
+  out += fmt::format("    condition number  {:.4e}\n", ix.condition_number);
+  return out;
 }
 
 }  // namespace kinestat

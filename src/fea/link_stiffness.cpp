@@ -11,6 +11,7 @@
 #include "kinestat/core/frame.hpp"
 #include "fea/elasticity_assembly.hpp"
 #include "kinestat/fea/tet_element.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace kinestat::fea {
 
@@ -57,13 +58,11 @@ double scaled_symmetry_error(const Mat6& A) {
   return (B - B.transpose()).norm() / B.norm();
 }
 
-void set_compliance(LinkStiffness& r, const Mat6& compliance) {
-  r.compliance = compliance;
-  r.stiffness = compliance.inverse();
-  r.compliance_symmetry_error = scaled_symmetry_error(r.compliance);
-  r.stiffness_symmetry_error = scaled_symmetry_error(r.stiffness);
-  r.compliance_eigenvalues = symmetric_eigenvalues(r.compliance);
-  r.stiffness_eigenvalues = symmetric_eigenvalues(r.stiffness);
+void set_compliance(LinkStiffness& r, const Mat6& compliance, const Vec3& point) {
+  r.compliance_symmetry_error = scaled_symmetry_error(compliance);
+  r.stiffness_symmetry_error = scaled_symmetry_error(compliance.inverse());
+  r.compliance_eigenvalues = symmetric_eigenvalues(compliance);
+  r.cartesian = cartesian_from_compliance(compliance, point, kLinkFrame);
 }
 
 StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& material,
@@ -129,8 +128,9 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
                                        mesh.nodes[overlap[0]].z()));
   r.num_clamped_nodes = static_cast<int>(clamped.size());
   r.num_reference_nodes = static_cast<int>(reference_nodes.size());
+  Vec3 reference_point;
   if (options.reference_point) {
-    r.reference_point = *options.reference_point;
+    reference_point = *options.reference_point;
   } else {
     // The centre of the nodes' bounding box, not their average: it does not depend on how the
     // mesher spread nodes over the face (the centre of a face, a bore's axis).
@@ -139,11 +139,11 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
       lo = lo.cwiseMin(mesh.nodes[n]);
       hi = hi.cwiseMax(mesh.nodes[n]);
     }
-    r.reference_point = 0.5 * (lo + hi);
+    reference_point = 0.5 * (lo + hi);
   }
 
   progress(fmt::format("assembling {} elements", mesh.num_elements()));
-  const DofMap map = make_dof_map(mesh, clamped, stiff_body ? std::vector<int>{} : reference_nodes, r.reference_point);
+  const DofMap map = make_dof_map(mesh, clamped, stiff_body ? std::vector<int>{} : reference_nodes, reference_point);
   r.num_dofs = map.num_dofs;
   StatusOr<solver::SparseMatrix> K = assemble_stiffness(mesh, D, element_material, map);
   if (!K.ok()) return K.status();
@@ -154,12 +154,12 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   if (stiff_body) {
     Mat6 AtA = Mat6::Zero();
     for (int n : reference_nodes) {
-      const Eigen::Matrix<double, 3, 6> A = rigid_transfer(mesh.nodes[n] - r.reference_point).topRows<3>();
+      const Eigen::Matrix<double, 3, 6> A = rigid_transfer(mesh.nodes[n] - reference_point).topRows<3>();
       AtA += A.transpose() * A;
     }
     const Mat6 AtA_inv = AtA.inverse();
     for (int n : reference_nodes) {
-      const Eigen::Matrix<double, 3, 6> A = rigid_transfer(mesh.nodes[n] - r.reference_point).topRows<3>();
+      const Eigen::Matrix<double, 3, 6> A = rigid_transfer(mesh.nodes[n] - reference_point).topRows<3>();
       F.middleRows<3>(map.terms[3 * n].index[0]) = A * AtA_inv;  // body nodes are free: one term each
     }
   } else {
@@ -168,7 +168,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
 
   const auto t1 = std::chrono::steady_clock::now();
   progress(fmt::format("factorizing {} dofs", map.num_dofs));
-  auto cholesky = solver::SparseCholesky::Create(options.cholesky);
+  auto cholesky = solver::make_sparse_cholesky(options.cholesky);
   r.backend = cholesky->backend_description();
   if (Status s = cholesky->Factorize(*K, &r.factorization); !s.ok()) {
     if (s.code() == StatusCode::kSingular)
@@ -179,7 +179,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   progress("solving the six unit load cases");
   MatX X;
   if (Status s = cholesky->Solve(F, &X); !s.ok()) return s;
-  set_compliance(r, stiff_body ? Mat6(F.transpose() * X) : Mat6(X.middleRows<6>(map.reference_dof)));
+  set_compliance(r, stiff_body ? Mat6(F.transpose() * X) : Mat6(X.middleRows<6>(map.reference_dof)), reference_point);
   if (options.keep_fields) {
     for (int k = 0; k < 6; ++k) {
       r.displacement[k] = expand(map, X.col(k));
@@ -202,27 +202,12 @@ std::string link_stiffness_report(const LinkStiffness& r) {
     os << fmt::format("  solver: {} dofs, {}, ordering {}, nnz(L) = {}; assembly {:.3f} s, factor+solve {:.3f} s\n",
                       r.num_dofs, r.backend, r.factorization.ordering, r.factorization.nnz_factor, r.assembly_seconds,
                       r.solve_seconds);
-  os << fmt::format("  reference point ({:.6g}, {:.6g}, {:.6g}) m; axes of the link frame; dofs ux uy uz rx ry rz\n",
-                    r.reference_point.x(), r.reference_point.y(), r.reference_point.z());
-  auto matrix = [&os](const char* title, const Mat6& A) {
-    os << "  " << title << "\n";
-    for (int i = 0; i < 6; ++i) {
-      os << "   ";
-      for (int j = 0; j < 6; ++j) os << fmt::format(" {:13.5e}", A(i, j));
-      os << "\n";
-    }
-  };
-  matrix("stiffness K [N/m, N/rad; N, N m/rad]:", r.stiffness);
-  matrix("compliance C = K^-1 [m/N, m/(N m); rad/N, rad/(N m)]:", r.compliance);
+  os << cartesian_stiffness_report(r.cartesian, "  6x6 of the reference");
   os << fmt::format("  symmetry error (diagonally scaled, Frobenius): compliance {:.2e}, stiffness {:.2e}\n",
                     r.compliance_symmetry_error, r.stiffness_symmetry_error);
-  auto eig = [&os](const char* title, const Vec6& v) {
-    os << "  " << title;
-    for (int i = 0; i < 6; ++i) os << fmt::format(" {:.5e}", v(i));
-    os << "\n";
-  };
-  eig("eigenvalues of K (SI, mixed units):", r.stiffness_eigenvalues);
-  eig("eigenvalues of C (SI, mixed units):", r.compliance_eigenvalues);
+  os << "  eigenvalues of C (SI, mixed units):";
+  for (int i = 0; i < 6; ++i) os << fmt::format(" {:.5e}", r.compliance_eigenvalues(i));
+  os << "\n";
   return os.str();
 }
 

@@ -50,13 +50,15 @@ StatusOr<Region> parse_region(const std::string& text, double scale, const std::
   return Region::box(a * scale, b * scale);
 }
 
-StatusOr<Material> parse_material(const std::string& text, const std::string& what) {
+StatusOr<Material> parse_material(const std::string& text, const std::string& what, double modulus_unit) {
   if (text == "steel") return Material::from_E_nu("steel", 210e9, 0.3);
   if (text == "aluminium" || text == "aluminum") return Material::from_E_nu("aluminium", 70e9, 0.33);
   double E = 0.0, nu = -2.0;
   if (std::sscanf(text.c_str(), "E=%lf,nu=%lf", &E, &nu) == 2 && E > 0.0 && nu > -1.0 && nu < 0.5)
-    return Material::from_E_nu(text, E, nu);
-  return Status::Invalid(what + ": give steel, aluminium or E=PA,nu=V (E > 0 in Pa, -1 < nu < 0.5)");
+    return Material::from_E_nu(text, E * modulus_unit, nu);
+  const std::string unit = modulus_unit == 1e6 ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("{:g} Pa", modulus_unit);
+  return Status::Invalid(
+      fmt::format("{}: give steel, aluminium or E=VALUE,nu=V (E > 0 in {}, -1 < nu < 0.5)", what, unit));
 }
 
 double default_mesh_size(const SurfaceInfo& surface, double unit_scale) {

@@ -51,7 +51,7 @@ StatusOr<ConvergenceStudy> mesh_convergence_study(const std::function<StatusOr<T
     StatusOr<LinkStiffness> r = link_stiffness(*mesh, material, o);
     if (!r.ok()) return r.status();
     study.num_dofs.push_back(r->num_dofs);
-    study.compliance.push_back(r->compliance);
+    study.compliance.push_back(r->cartesian.compliance);
   }
   for (int k = 0; k < 6; ++k) {
     std::vector<double> f;

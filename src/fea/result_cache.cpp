@@ -19,11 +19,11 @@ std::string region_text(const Region& r) {
                      r.normal.z(), r.lo.x(), r.lo.y(), r.lo.z(), r.hi.x(), r.hi.y(), r.hi.z(), r.tolerance);
 }
 
-std::string path_of(const std::string& dir, const std::string& key) {
+}  // namespace
+
+std::string link_stiffness_cache_path(const std::string& dir, const std::string& key) {
   return (std::filesystem::path(dir) / (key + ".txt")).string();
 }
-
-}  // namespace
 
 std::uint64_t fnv1a(std::string_view data, std::uint64_t seed) {
   for (unsigned char c : data) seed = (seed ^ c) * 1099511628211ull;
@@ -42,7 +42,7 @@ std::string link_stiffness_cache_key(std::string_view mesh_identity, const Mater
 }
 
 std::optional<LinkStiffness> load_cached_link_stiffness(const std::string& dir, const std::string& key) {
-  std::ifstream in(path_of(dir, key));
+  std::ifstream in(link_stiffness_cache_path(dir, key));
   std::string header, stored_key;
   if (!in || !std::getline(in, header) || header != kHeader || !(in >> stored_key) || stored_key != key)
     return std::nullopt;
@@ -50,26 +50,29 @@ std::optional<LinkStiffness> load_cached_link_stiffness(const std::string& dir, 
   int model = 0;
   in >> model >> r.num_nodes >> r.num_elements >> r.nodes_per_element >> r.num_dofs;
   r.reference_model = static_cast<ReferenceModel>(model);
-  for (int i = 0; i < 3; ++i) in >> r.reference_point(i);
+  Vec3 point;
+  for (int i = 0; i < 3; ++i) in >> point(i);
   Mat6 C;
   for (int i = 0; i < 36; ++i) in >> C(i / 6, i % 6);
   if (!in) return std::nullopt;
-  set_compliance(r, C);
+  set_compliance(r, C, point);
   return r;
 }
 
 Status store_cached_link_stiffness(const std::string& dir, const std::string& key, const LinkStiffness& r) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  std::ofstream out(path_of(dir, key));
+  std::ofstream out(link_stiffness_cache_path(dir, key));
   if (ec || !out) return Status::Invalid(dir + ": cannot write the link stiffness cache there");
   out << kHeader << "\n" << key << "\n";
   out << fmt::format("{} {} {} {} {}\n", static_cast<int>(r.reference_model), r.num_nodes, r.num_elements,
                      r.nodes_per_element, r.num_dofs);
-  out << fmt::format("{:.17g} {:.17g} {:.17g}\n", r.reference_point.x(), r.reference_point.y(), r.reference_point.z());
+  const Vec3& p = r.cartesian.point;
+  const Mat6& C = r.cartesian.compliance;
+  out << fmt::format("{:.17g} {:.17g} {:.17g}\n", p.x(), p.y(), p.z());
   for (int i = 0; i < 6; ++i)
-    out << fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", r.compliance(i, 0), r.compliance(i, 1),
-                       r.compliance(i, 2), r.compliance(i, 3), r.compliance(i, 4), r.compliance(i, 5));
+    out << fmt::format("{:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g}\n", C(i, 0), C(i, 1), C(i, 2), C(i, 3), C(i, 4),
+                       C(i, 5));
   return out ? Status::Ok() : Status::Internal(dir + ": writing the link stiffness cache failed");
 }
 

@@ -1,5 +1,7 @@
 #include "kinestat/io/fea_vtk.hpp"
 
+#include "io/vtk_files.hpp"
+
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -61,10 +63,12 @@ Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const f
   note->SetName("load_case");
   note->InsertNextValue(fmt::format("unit {} = 1 {} on the reference point ({:g}, {:g}, {:g}) m; coordinates m, "
                                     "displacement m per {}, von_mises Pa per {}",
-                                    link_load_case_name(k), force ? "N" : "N m", result.reference_point.x(),
-                                    result.reference_point.y(), result.reference_point.z(), force ? "N" : "N m",
+                                    link_load_case_name(k), force ? "N" : "N m", result.cartesian.point.x(),
+                                    result.cartesian.point.y(), result.cartesian.point.z(), force ? "N" : "N m",
                                     force ? "N" : "N m"));
   grid->GetFieldData()->AddArray(note);
+  const std::string per = force ? "N" : "N m";
+  add_units(*grid, {{"coordinates", "m"}, {"displacement", "m per " + per}, {"von_mises", "Pa per " + per}});
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetFileName(path.c_str());
   writer->SetInputData(grid);
@@ -78,11 +82,17 @@ Status write_link_vtu_files(const std::string& dir, const std::string& prefix, c
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return Status::Invalid(dir + ": cannot create the output directory: " + ec.message());
+  std::vector<PvdEntry> entries;
   for (int k = 0; k < 6; ++k) {
-    const std::string path = (std::filesystem::path(dir) / (prefix + "_" + link_load_case_name(k) + ".vtu")).string();
+    const std::string file = prefix + "_" + link_load_case_name(k) + ".vtu";
+    const std::string path = (std::filesystem::path(dir) / file).string();
     if (Status s = write_link_vtu(path, mesh, result, k); !s.ok()) return s;
     if (written) written->push_back(path);
+    entries.push_back({file, link_load_case_name(k)});
   }
+  const std::string pvd = (std::filesystem::path(dir) / (prefix + ".pvd")).string();
+  if (Status s = write_pvd(pvd, entries); !s.ok()) return s;
+  if (written) written->push_back(pvd);
   return Status::Ok();
 }
 

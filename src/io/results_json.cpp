@@ -1,5 +1,7 @@
 #include "kinestat/io/results_json.hpp"
 
+#include "io/json_values.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -11,54 +13,6 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kEndForceNames[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
-
-template <class Derived>
-json to_array(const Eigen::DenseBase<Derived>& v) {
-  json a = json::array();
-  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(v(i));
-  return a;
-}
-
-template <class Derived>
-json to_rows(const Eigen::DenseBase<Derived>& m) {
-  json rows = json::array();
-  for (Eigen::Index r = 0; r < m.rows(); ++r) rows.push_back(to_array(m.row(r)));
-  return rows;
-}
-
-// Unit of entry (i, j) of the 6x6 compliance (motion per wrench) and stiffness (wrench per motion).
-json unit_matrix(bool compliance) {
-  const char* per_force[2] = {"m/N", "rad/N"};
-  const char* per_moment[2] = {"m/(N m)", "rad/(N m)"};
-  const char* per_translation[2] = {"N/m", "N m/m"};
-  const char* per_rotation[2] = {"N/rad", "N m/rad"};
-  json rows = json::array();
-  for (int i = 0; i < 6; ++i) {
-    json row = json::array();
-    for (int j = 0; j < 6; ++j) {
-      row.push_back(compliance ? (j < 3 ? per_force : per_moment)[i / 3]
-                               : (j < 3 ? per_translation : per_rotation)[i / 3]);
-    }
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-const char* status_name(StatusCode c) {
-  switch (c) {
-    case StatusCode::kOk:
-      return "ok";
-    case StatusCode::kInvalidInput:
-      return "invalid_input";
-    case StatusCode::kSingular:
-      return "singular";
-    case StatusCode::kNotConverged:
-      return "not_converged";
-    case StatusCode::kInternal:
-      return "internal";
-  }
-  return "unknown";
-}
 
 // Id of item i of `items`, or "#i" when the solution refers past the structure (never expected).
 template <class T>
@@ -116,9 +70,9 @@ json load_case_json(const msa::Structure& s, const msa::LoadCaseResult& r) {
   return c;
 }
 
-json cartesian_json(const msa::Structure& s, const msa::CartesianStiffness& cs) {
+json cartesian_json(const msa::Structure& s, const CartesianStiffness& cs) {
   json c;
-  c["node"] = node_id(s, cs.node);
+  c["node"] = node_id(s, s.report_node().value_or(-1));  // Solution::cartesian is the report node's
   c["axes"] = "global";
   c["order"] = {"ux", "uy", "uz", "rx", "ry", "rz"};
   c["compliance"] = to_rows(cs.compliance);
@@ -127,7 +81,7 @@ json cartesian_json(const msa::Structure& s, const msa::CartesianStiffness& cs) 
   c["stiffness"] = cs.stiffness_defined ? to_rows(cs.stiffness) : json();
   c["stiffness_units"] = unit_matrix(false);
   c["note"] = cs.note;
-  c["indices"] = cs.stiffness_defined ? stiffness_indices_to_json(cs.indices) : json();
+  c["indices"] = cs.indices ? stiffness_indices_to_json(*cs.indices) : json();
   return c;
 }
 
@@ -209,7 +163,7 @@ json solution_to_json(const msa::Structure& s, const msa::Solution& sol) {
                 {"num_dofs", sol.num_dofs},
                 {"num_free_dofs", sol.num_free_dofs},
                 {"report_node", node_id(s, s.report_node().value_or(-1))}};
-  j["status"] = {{"code", status_name(sol.status.code())}, {"message", sol.status.message()}};
+  j["status"] = status_json(sol.status);
   j["regularized"] = sol.regularized;
 
   const auto& f = sol.factorization;
@@ -241,13 +195,17 @@ json solution_to_json(const msa::Structure& s, const msa::Solution& sol) {
   return j;
 }
 
+void write_json(std::ostream& out, const json& j, int indent) {
+  // `replace`: a title with invalid UTF-8 must not abort the whole report.
+  out << j.dump(indent, ' ', false, json::error_handler_t::replace) << '\n';
+}
+
 Status write_json(const std::string& path, const json& j, int indent) {
   std::ofstream out(path);
   if (!out)
     return Status::Invalid(
         fmt::format("{}: cannot open for writing; check that the directory exists and is writable", path));
-  // `replace`: a title with invalid UTF-8 must not abort the whole report.
-  out << j.dump(indent, ' ', false, json::error_handler_t::replace) << '\n';
+  write_json(out, j, indent);
   out.close();
   if (!out) return Status::Invalid(fmt::format("{}: writing failed (disk full?)", path));
   return Status::Ok();

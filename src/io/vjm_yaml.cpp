@@ -11,13 +11,10 @@
 
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
-#include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
-#include "kinestat/fea/result_cache.hpp"
-#include "kinestat/fea/surface_mesher.hpp"
-#include "io/yaml_fields.hpp"
-#include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/link_spring.hpp"
+#include "kinestat/vjm/platform.hpp"
+#include "io/yaml_fields.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -47,10 +44,15 @@ class VjmParser : public YamlFields {
     }
     if (root["orthoglide"].IsDefined())
       fail(root["orthoglide"], "file", "an 'orthoglide' block needs 'mechanism: orthoglide'; add it");
-    for_each(root, "chains", true, [&](const YAML::Node& c, int i) { m.chains.push_back(parse_chain(c, i)); });
+    for_each(root, "chains", true,
+             [&](const YAML::Node& c, int i) { m.chains.push_back(parse_chain(c, i, m.fea_springs)); });
     if (m.chains.empty()) fail(root["chains"], "chains", "the list is empty; give at least one chain");
     if (const Status s = vjm::validate_platform(m.chains); !s.ok())
       fail(root["chains"], "chains", s.message() + "; check the chains' transforms and joint values");
+    // Until resolve_fea_springs computes them, FEA springs are NaN: a chain used before that fails
+    // its checks instead of giving numbers.
+    for (const FeaSpring& f : m.fea_springs)
+      (void)m.chains[f.chain].set_spring_stiffness(f.spring, Mat6::Constant(std::numeric_limits<double>::quiet_NaN()));
     return m;
   }
 
@@ -146,74 +148,57 @@ class VjmParser : public YamlFields {
     return (std::filesystem::path(file()).parent_path() / text(v, item, key)).string();
   }
 
-  // `fea:` the 6x6 of a link from the FEA of its mesh (fea/link_stiffness.hpp, rigid reference coupling),
-  // through the result cache when `cache` names a directory. Convention (docs/vjm.md): the mesh's axes
-  // are the current frame's axes and the reference point is the current frame's origin, i.e. the spring
-  // sits at the link's far end, after the `translate` along the link, exactly like `cantilever`.
-  Mat6 fea_spring(const YAML::Node& f, const std::string& it) const {
+  // `fea:` the 6x6 of a link from the FEA of its mesh (fea/link_stiffness_request.hpp, rigid reference
+  // coupling), through the result cache when `cache` names a directory: only what to compute; the
+  // file is not meshed here (resolve_fea_springs does it). Convention (docs/vjm.md): the mesh's axes
+  // are the current frame's axes and the reference point is the current frame's origin, i.e. the
+  // spring sits at the link's far end, after the `translate` along the link, exactly like `cantilever`.
+  fea::LinkStiffnessRequest fea_request(const YAML::Node& f, const std::string& it) const {
     check_map(f, it, {"mesh", "material", "E", "nu", "clamp", "reference", "reference_point", "unit", "size", "cache"});
+    fea::LinkStiffnessRequest r;
     // The mesh file's length unit (also of the regions, reference point and size): the model's by default.
-    double scale = u_.length;
+    r.unit_scale = u_.length;
     if (const YAML::Node u = f["unit"]; u.IsDefined()) {
       const std::string s = text(u, it, "unit");
       if (s != "mm" && s != "m") fail(u, it, fmt::format("unknown unit '{}'; write mm or m (the mesh file's unit)", s));
-      scale = s == "mm" ? 1e-3 : 1.0;
+      r.unit_scale = s == "mm" ? 1e-3 : 1.0;
     }
-    Material mat;
     if (const YAML::Node m = f["material"]; m.IsDefined()) {
       if (f["E"].IsDefined() || f["nu"].IsDefined()) fail(m, it, "give either 'material' or 'E' and 'nu', not both");
-      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'");
+      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'", u_.stress());
       if (!parsed.ok()) fail(m, it, parsed.status().message());
-      mat = *parsed;
+      r.material = *parsed;
     } else {
-      mat = material(f, it);
+      r.material = material(f, it);
     }
     auto region = [&](const char* key) {
-      const YAML::Node r = require(f, it, key);
-      StatusOr<fea::Region> parsed = fea::parse_region(text(r, it, key), scale, fmt::format("'{}: {}'", key, r.Scalar()));
-      if (!parsed.ok()) fail(r, it, parsed.status().message());
+      const YAML::Node n = require(f, it, key);
+      StatusOr<fea::Region> parsed = fea::parse_region(text(n, it, key), r.unit_scale, fmt::format("'{}: {}'", key, n.Scalar()));
+      if (!parsed.ok()) fail(n, it, parsed.status().message());
       return *parsed;
     };
-    fea::LinkStiffnessOptions options;
-    options.clamp = region("clamp");
-    options.reference = region("reference");
-    options.keep_fields = false;
+    r.options.clamp = region("clamp");
+    r.options.reference = region("reference");
     if (const YAML::Node p = f["reference_point"]; p.IsDefined())
-      options.reference_point = vec3(p, it, "reference_point") * scale;
-
-    const YAML::Node mesh_node = require(f, it, "mesh");
-    const std::string path = path_in_file(mesh_node, it, "mesh");
-    StatusOr<fea::SurfaceInfo> surface = fea::check_surface_file(path);
-    if (!surface.ok()) fail(mesh_node, it, surface.status().message());
-    fea::MeshingOptions meshing;
-    meshing.unit_scale = scale;
-    meshing.size =
-        f["size"].IsDefined() ? positive(f["size"], it, "size") * scale : fea::default_mesh_size(*surface, scale);
-    // Round-off asymmetry only (C = F^T K^-1 F is symmetric by construction); the VJM wants a symmetric spring.
-    auto spring_of = [](const fea::LinkStiffness& r) -> Mat6 { return 0.5 * (r.stiffness + r.stiffness.transpose()); };
-
-    std::string cache_dir, key;
-    if (const YAML::Node c = f["cache"]; c.IsDefined()) {
-      cache_dir = path_in_file(c, it, "cache");
-      StatusOr<std::string> identity = fea::surface_mesh_identity(path, meshing);
-      if (!identity.ok()) fail(mesh_node, it, identity.status().message());
-      key = fea::link_stiffness_cache_key(*identity, mat, options);
-      if (auto cached = fea::load_cached_link_stiffness(cache_dir, key)) return spring_of(*cached);
-    }
-    StatusOr<fea::TetMesh> mesh = fea::mesh_surface_file(path, meshing);
-    if (!mesh.ok()) fail(mesh_node, it, mesh.status().message());
-    StatusOr<fea::LinkStiffness> result = fea::link_stiffness(*mesh, mat, options);
-    if (!result.ok()) fail(f, it, path + ": " + result.status().message() + "; check 'clamp' and 'reference' (mesh units)");
-    if (!key.empty())
-      if (const Status s = fea::store_cached_link_stiffness(cache_dir, key, *result); !s.ok())
-        fail(f["cache"], it, s.message());
-    return spring_of(*result);
+      r.options.reference_point = vec3(p, it, "reference_point") * r.unit_scale;
+    if (const YAML::Node s = f["size"]; s.IsDefined()) r.mesh_size = positive(s, it, "size") * r.unit_scale;
+    const YAML::Node mesh = require(f, it, "mesh");
+    r.mesh_file = path_in_file(mesh, it, "mesh");
+    if (!std::filesystem::is_regular_file(r.mesh_file))
+      fail(mesh, it, r.mesh_file + ": no such mesh file; the path is relative to the model file's folder");
+    if (const YAML::Node c = f["cache"]; c.IsDefined()) r.cache_dir = path_in_file(c, it, "cache");
+    return r;
   }
 
-  Mat6 spring(const YAML::Node& n, const std::string& item) const {
+  // A spring's 6x6; for `fea:` a placeholder, and *fea says what to compute.
+  Mat6 spring(const YAML::Node& n, const std::string& item, std::optional<FeaSpring>* fea) const {
     check_map(n, item, {"matrix", "cantilever", "parallelogram", "fea"});
     if (n.size() != 1) fail(n, item, "give exactly one of matrix, cantilever, parallelogram, fea");
-    if (const YAML::Node f = n["fea"]; f.IsDefined()) return fea_spring(f, item + " fea");
+    if (const YAML::Node f = n["fea"]; f.IsDefined()) {
+      const std::string it = item + " fea";
+      *fea = FeaSpring{.where = where(f, it), .request = fea_request(f, it)};
+      return Mat6::Identity();  // valid for the checks of the chain's geometry; made NaN after them
+    }
     if (const YAML::Node k = n["matrix"]; k.IsDefined()) {
       if (!k.IsSequence() || k.size() != 6) fail(k, item, "'matrix' must be 6 rows of 6 numbers");
       // File units: N/mm, N/rad (= N mm/mm), N mm/rad for mm-N-s; K_SI = force D K D, D = diag(l^-1/2 I, l^1/2 I).
@@ -255,7 +240,7 @@ class VjmParser : public YamlFields {
     return *K;
   }
 
-  vjm::Chain parse_chain(const YAML::Node& c, int index) const {
+  vjm::Chain parse_chain(const YAML::Node& c, int index, std::vector<FeaSpring>& fea_springs) const {
     std::string item = fmt::format("chain #{}", index + 1);
     check_map(c, item, {"name", "elements"});
     vjm::Chain chain(c["name"].IsDefined() ? text(c["name"], item, "name") : item);
@@ -280,7 +265,14 @@ class VjmParser : public YamlFields {
         check_map(v, vit, {"axis", "angle"});
         chain.add_rotation(axis(v, vit), number(require(v, vit, "angle"), vit, "angle") * kDeg, label);
       } else if (kind == "spring") {
-        chain.add_spring(spring(v, vit), label);
+        std::optional<FeaSpring> fea;
+        const Mat6 K = spring(v, vit, &fea);
+        if (fea) {
+          fea->chain = index;
+          fea->spring = static_cast<int>(chain.springs().size());
+          fea_springs.push_back(std::move(*fea));
+        }
+        chain.add_spring(K, label);
       } else if (kind == "actuator") {
         check_map(v, vit, {"type", "axis", "value", "stiffness"});
         const vjm::JointType t = joint_type(v, vit);
@@ -328,7 +320,29 @@ StatusOr<VjmModel> read_vjm_model_yaml(const std::string& path) {
   return read_vjm_model_yaml_string(*text, path);
 }
 
+Status resolve_fea_springs(VjmModel& model, const std::function<void(const std::string&)>& progress) {
+  for (FeaSpring& f : model.fea_springs) {
+    if (f.resolved) continue;
+    fea::LinkStiffnessRequest request = f.request;
+    request.options.progress = progress;
+    StatusOr<fea::LinkStiffnessRun> run = fea::compute_link_stiffness(request);
+    if (!run.ok()) {
+      // A mesh or region the FEA cannot use is the model file's fault; a library failure is not.
+      const std::string message = f.where + ": " + run.status().message();
+      return run.status().code() == StatusCode::kInternal ? Status::Internal(message) : Status::Invalid(message);
+    }
+    // The stiffness is symmetric (the compliance is symmetrized; its asymmetry is round-off).
+    if (Status s = model.chains[f.chain].set_spring_stiffness(f.spring, run->result.cartesian.stiffness); !s.ok())
+      return s;
+    f.resolved = true;
+  }
+  return Status::Ok();
+}
+
 StatusOr<std::vector<vjm::Chain>> vjm_model_chains(const VjmModel& model, const std::optional<Vec3>& point) {
+  for (const FeaSpring& f : model.fea_springs)
+    if (!f.resolved)
+      return Status::Invalid(f.where + ": this spring is not computed yet; call io::resolve_fea_springs first");
   if (model.orthoglide) return mechanisms::orthoglide_chains(*model.orthoglide, model.architecture, point.value_or(Vec3::Zero()));
   if (point)
     return Status::Invalid(

@@ -1,5 +1,7 @@
 #include "kinestat/io/vtk_output.hpp"
 
+#include "io/vtk_files.hpp"
+
 #include <fmt/format.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
@@ -14,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 namespace kinestat::io {
 namespace {
@@ -76,6 +77,10 @@ vtkSmartPointer<vtkUnstructuredGrid> geometry(const msa::Structure& s) {
   }
   grid->GetCellData()->AddArray(type);
   grid->GetCellData()->AddArray(id);
+  add_units(*grid, {{"coordinates", "m"}, {"displacement", "m"}, {"rotation", "rad"}, {"reaction_force", "N"},
+                    {"reaction_moment", "N m"}, {"end_forces", "N (N Vy Vz), N m (T My Mz)"}, {"axial_force", "N"},
+                    {"torsion", "N m"}, {"bending_moment_y", "N m"}, {"bending_moment_z", "N m"},
+                    {"joint_force", "N (force), N m (moment)"}, {"free_motion_K", "- (a shape: only ratios count)"}});
   return grid;
 }
 
@@ -120,29 +125,6 @@ void add_free_motions(const msa::SingularityDiagnosis& d, vtkUnstructuredGrid* g
   if (!d.modes.empty() && !grid->GetPointData()->GetVectors()) grid->GetPointData()->SetActiveVectors("free_motion_1");
 }
 
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 Status write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
   writer->SetFileName(path.c_str());
@@ -171,10 +153,7 @@ Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::s
   if (ec || !fs::is_directory(dir))
     return Status::Invalid(fmt::format("{}: cannot create the output directory ({})", dir, ec.message()));
 
-  struct Entry {
-    std::string file, name;
-  };
-  std::vector<Entry> entries;
+  std::vector<PvdEntry> entries;
   auto emit = [&](vtkUnstructuredGrid* grid, std::string file, std::string name) -> Status {
     const std::string path = (fs::path(dir) / file).string();
     if (Status st = write_grid(grid, path); !st.ok()) return st;
@@ -194,18 +173,8 @@ Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::s
     if (Status st = emit(grid, basename + "_undeformed.vtu", "undeformed"); !st.ok()) return st;
   }
 
-  // ParaView's collection format: one DataSet per load case; the timestep slider steps through them.
   const std::string pvd = (fs::path(dir) / (basename + ".pvd")).string();
-  std::ofstream out(pvd);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    out << fmt::format("    <DataSet timestep=\"{}\" part=\"0\" name=\"{}\" file=\"{}\"/>\n", i,
-                       xml_escape(entries[i].name), xml_escape(entries[i].file));
-  }
-  out << "  </Collection>\n</VTKFile>\n";
-  out.close();
-  if (!out)
-    return Status::Invalid(fmt::format("{}: cannot write the collection file; check the directory is writable", pvd));
+  if (Status st = write_pvd(pvd, entries); !st.ok()) return st;
   if (written) written->push_back(pvd);
   return Status::Ok();
 }

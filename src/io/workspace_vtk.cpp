@@ -1,5 +1,7 @@
 #include "kinestat/io/workspace_vtk.hpp"
 
+#include "io/vtk_files.hpp"
+
 #include <array>
 #include <filesystem>
 #include <system_error>
@@ -7,11 +9,9 @@
 #include <fmt/format.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
-#include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
-#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -35,10 +35,8 @@ class WorkspaceGrid {
     manipulability_->SetName("manipulability");
     rho_->SetName("rho");
     rho_->SetNumberOfComponents(3);
-    auto unit = vtkSmartPointer<vtkStringArray>::New();
-    unit->SetName("length_unit");
-    unit->InsertNextValue("m");
-    grid_->GetFieldData()->AddArray(unit);
+    add_units(*grid_, {{"coordinates", "m"}, {"rho", "m"}, {"mu_min", "-"}, {"mu_max", "-"}, {"condition_number", "-"},
+                       {"manipulability", "-"}});
   }
 
   vtkIdType add_point(const Vec3& p, const Vec3& rho, const VelocityTransmission& v) {

@@ -15,10 +15,13 @@ std::string join_keys(std::initializer_list<const char*> names) {
   return out;
 }
 
-void YamlFields::fail(const YAML::Node& at, const std::string& item, const std::string& what) const {
+std::string YamlFields::where(const YAML::Node& at, const std::string& item) const {
   const int line = (at.IsDefined() && !at.Mark().is_null()) ? at.Mark().line + 1 : 0;
-  const std::string where = line > 0 ? fmt::format("{}:{}", file_, line) : file_;
-  throw YamlInputError{fmt::format("{}: {}: {}", where, item, what)};
+  return line > 0 ? fmt::format("{}:{}: {}", file_, line, item) : fmt::format("{}: {}", file_, item);
+}
+
+void YamlFields::fail(const YAML::Node& at, const std::string& item, const std::string& what) const {
+  throw YamlInputError{fmt::format("{}: {}", where(at, item), what)};
 }
 
 void YamlFields::check_map(const YAML::Node& node, const std::string& item,

@@ -40,6 +40,8 @@ class YamlFields {
   YamlFields(std::string file, std::string format_doc) : file_(std::move(file)), doc_(std::move(format_doc)) {}
 
   [[noreturn]] void fail(const YAML::Node& at, const std::string& item, const std::string& what) const;
+  // "FILE:LINE: ITEM", the start of fail's message, for checks made after reading.
+  std::string where(const YAML::Node& at, const std::string& item) const;
 
   // `node` must be a map whose keys are all in `allowed`, each once.
   void check_map(const YAML::Node& node, const std::string& item, std::initializer_list<const char*> allowed) const;

@@ -291,6 +291,71 @@ DexterousVolumes unit_dexterous_volumes(double mu_low, double mu_high, int n) {
   return v;
 }
 
+namespace {
+
+// Root of a continuous f with f(lo) and f(hi) of opposite signs, to round-off.
+template <class F>
+double bisect(F f, double lo, double hi) {
+  const bool lo_negative = f(lo) < 0;
+  for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    ((f(mid) < 0) == lo_negative ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+namespace {
+
+// mu_min at joints (r, r, t) of the unit manipulator: the edge of W_rho with two joints at rho_min.
+double unit_edge_factor(double r, double t) {
+  const Sample s = joint_sample(OrthoglideGeometry{1.0}, Vec3(r, r, t));
+  return s.kind == Sample::kRegular ? s.v.mu_min : kInf;
+}
+
+// The smallest unit_edge_factor(r, t) for t in [a, b]: a 200-step scan, then golden-section search
+// in the best bracket (to round-off).
+double unit_edge_minimum(double r, double a, double b) {
+  const int n = 200;
+  auto t_at = [&](int i) { return a + (b - a) * i / n; };
+  int best = 0;
+  for (int i = 1; i <= n; ++i)
+    if (unit_edge_factor(r, t_at(i)) < unit_edge_factor(r, t_at(best))) best = i;
+  double lo = t_at(std::max(best - 1, 0)), hi = t_at(std::min(best + 1, n));
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int k = 0; k < 80; ++k) {
+    const double c = hi - g * (hi - lo), d = lo + g * (hi - lo);
+    if (unit_edge_factor(r, c) < unit_edge_factor(r, d))
+      hi = d;
+    else
+      lo = c;
+  }
+  return unit_edge_factor(r, 0.5 * (lo + hi));
+}
+
+}  // namespace
+
+MinimumSwitchPoints unit_minimum_switch_points(int n) {
+  using C = CriticalPoint;
+  auto sigma_max = [](C c, double r) { return unit_critical_point_singular_values(c, r)[0]; };
+  MinimumSwitchPoints m;
+  // Fig. 9a's vertical lines: the formulas' largest singular values of S- and R-, R- and Q- meet.
+  m.rho_sr = bisect([&](double r) { return sigma_max(C::kS, r) - sigma_max(C::kR, r); }, 0.01, 0.2);
+  m.rho_rq = bisect([&](double r) { return sigma_max(C::kR, r) - sigma_max(C::kQ, r); }, 0.15, 0.6);
+  m.mu_sr = 1.0 / sigma_max(C::kS, m.rho_sr);
+  m.mu_rq = 1.0 / sigma_max(C::kQ, m.rho_rq);
+  const OrthoglideGeometry unit{1.0};
+  m.search_mu_at_rho_sr = search_joint_space(unit, m.rho_sr, 1.0, kInf, n).range.min;
+  m.search_mu_at_rho_rq = search_joint_space(unit, m.rho_rq, 1.0, kInf, n).range.min;
+  // Along the edge (r, r, t) two local minima compete: the vertex Q- (t = r) and one near t = 0.45,
+  // which is lower until the switch. Both are tracked on the edge itself (a search over the whole box
+  // refines only the best point and blurs the other by its grid step).
+  m.rho_q = bisect([&](double r) { return unit_edge_minimum(r, r + 0.1, 1.0) - unit_edge_factor(r, r); }, m.rho_rq, 0.4);
+  m.mu_q = 1.0 / sigma_max(C::kQ, m.rho_q);
+  return m;
+}
+
 StatusOr<OrthoglideDesign> design_orthoglide(int strategy, double mu, double cube_size) {
   if (strategy < 1 || strategy > 3)
     return Status::Invalid(fmt::format("design strategy {}: must be 1, 2 or 3 (Table 3)", strategy));
@@ -324,12 +389,35 @@ StatusOr<OrthoglideDesign> design_orthoglide(int strategy, double mu, double cub
   if (!(rho_max < kSqrt15)) d.joint_sum_limit = 3.0 * q.rho_plus * L;
   d.joint_space = unit_joint_space_range(rho_min, rho_max);
   d.cube = unit_cube_range(p_min, p_max);
+  if (std::isfinite(d.joint_sum_limit)) {
+    // The cut corner {y in [0, a]^3 : sum y > t} (y = rho_max - rho, a the stroke, t = 3 rho_max - limit)
+    // by inclusion-exclusion over the box faces: sum_k (-1)^k C(3, k) max(0, t - k a)^3 / 6.
+    const double a = rho_max - rho_min, t = 3.0 * rho_max - 3.0 * q.rho_plus;
+    double cut = 0.0;
+    const double binomial[4] = {1, 3, 3, 1};
+    for (int k = 0; k < 4; ++k) cut += (k % 2 ? -1.0 : 1.0) * binomial[k] * std::pow(std::max(0.0, t - k * a), 3) / 6.0;
+    d.joint_box_kept = 1.0 - cut / (a * a * a);
+  }
   return d;
 }
 
-OrthoglideDesignCheck check_design(const OrthoglideDesign& d, int n) {
+WorkspaceSearch search_cube_with_encoder_offset(const OrthoglideGeometry& g, double p_min, double p_max, double offset,
+                                                int n) {
+  const Evaluator eval = [&g, offset](const Vec3& p) {
+    auto rho = inverse_kinematics(g, p);
+    if (!rho.ok()) return Sample{Sample::kSerial, p, Vec3::Zero(), {}};
+    return joint_sample(g, *rho + Vec3::Constant(offset));
+  };
+  return search(p_min, p_max, kInf, n, eval);
+}
+
+OrthoglideDesignCheck check_design(const OrthoglideDesign& d, int n, const std::vector<double>& encoder_offsets) {
   const OrthoglideGeometry g{d.link_length};
-  return {search_joint_space(g, d.rho_min, d.rho_max, d.joint_sum_limit, n), search_cube(g, d.p_min, d.p_max, n)};
+  OrthoglideDesignCheck c{search_joint_space(g, d.rho_min, d.rho_max, d.joint_sum_limit, n),
+                          search_cube(g, d.p_min, d.p_max, n), {}};
+  for (double e : encoder_offsets)
+    c.encoder_offsets.push_back({e, search_cube_with_encoder_offset(g, d.p_min, d.p_max, e, n)});
+  return c;
 }
 
 JointWorkspaceSamples sample_joint_workspace(const OrthoglideDesign& d, int n) {

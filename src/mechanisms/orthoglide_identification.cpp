@@ -55,7 +55,7 @@ OrthoglideStiffnessModel with_inputs(const OrthoglideStiffnessModel& start, cons
 StatusOr<double> model_compliance(const OrthoglideStiffnessModel& m, const ComplianceTarget& t) {
   StatusOr<std::vector<vjm::Chain>> chains = orthoglide_chains(m, t.architecture, t.point);
   if (!chains.ok()) return chains.status();
-  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
+  StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
   if (!K.ok()) return K.status();
   if (!K->compliance_defined) return Status::Singular(fmt::format("{}: {}", t.label, K->status.message()));
   return K->compliance(t.row, t.col);
@@ -145,9 +145,11 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
   out.iterations = static_cast<int>(lm.iter);
   out.evaluations = static_cast<int>(lm.nfev);
   std::string r = "Identified inputs (start -> identified):\n";
-  for (std::size_t k = 0; k < inputs.size(); ++k)
-    r += fmt::format("  {:<28} {:>12.6g} -> {:.6g}\n", input_name(inputs[k]), start_value(start, inputs[k]),
-                     std::exp(x[static_cast<Eigen::Index>(k)]));
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    out.start_values.push_back(start_value(start, inputs[k]));
+    out.values.push_back(std::exp(x[static_cast<Eigen::Index>(k)]));
+    r += fmt::format("  {:<28} {:>12.6g} -> {:.6g}\n", input_name(inputs[k]), out.start_values[k], out.values[k]);
+  }
   r += "Targets (SI) and the identified model:\n";
   double worst = 0.0;
   std::string worst_label;

@@ -65,7 +65,7 @@ StatusOr<Mat6> parallelogram_spring(const OrthoglideStiffnessModel& m, double q)
     c.add_translation(-side * w * Vec3::UnitZ(), "distal plate");
     bars.push_back(std::move(c));
   }
-  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(bars);
+  StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(bars);
   if (!K.ok()) return K.status();
   // Exactly one free motion: the plate's translation along the arc, u = R_y(q) e_z (pure translation).
   if (K->free_directions.size() != 1 || !K->rigid_directions.empty())
@@ -135,13 +135,13 @@ StatusOr<OrthoglideStiffness> orthoglide_stiffness(const OrthoglideStiffnessMode
   StatusOr<std::vector<Chain>> chains = orthoglide_chains(m, a, p);
   if (!chains.ok()) return chains.status();
   OrthoglideStiffness out;
-  StatusOr<vjm::CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
+  StatusOr<CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
   if (!K0.ok()) return K0.status();
   out.unloaded = std::move(*K0);
   StatusOr<vjm::PlatformState> st = vjm::platform_equilibrium(*chains, displacement);
   if (!st.ok()) return st.status();
   out.loaded_state = std::move(*st);
-  StatusOr<vjm::CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, out.loaded_state);
+  StatusOr<CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, out.loaded_state);
   if (!KF.ok()) return KF.status();
   out.loaded = std::move(*KF);
   return out;

@@ -10,6 +10,7 @@
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
 #include "kinestat/mechanisms/orthoglide_kinematics.hpp"
 #include "kinestat/msa/static_analysis.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
 namespace kinestat::mechanisms {
@@ -82,7 +83,7 @@ class ReferenceOrthoglideKernel final : public PostureKernel {
     auto chains = orthoglide_chains(o_.model, o_.architecture, point);
     if (!chains.ok()) return r;
     r.status = PostureStatus::kSingular;
-    StatusOr<vjm::CartesianStiffness> k = Status::Internal("not computed");
+    StatusOr<CartesianStiffness> k = Status::Internal("not computed");
     Vec6 deflection = Vec6::Zero();
     if (o_.wrench || o_.displacement) {
       auto state = o_.wrench ? vjm::platform_equilibrium_under_wrench(*chains, *o_.wrench)

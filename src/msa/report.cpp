@@ -12,36 +12,6 @@ const char* kDofUnits[6] = {"m", "m", "m", "rad", "rad", "rad"};
 
 }  // namespace
 
-std::string matrix6_report(const Mat6& M, const std::string& title, const char* units) {
-  std::string out = fmt::format("  {} [{}]\n", title, units);
-  static const char* names[6] = {"x", "y", "z", "rx", "ry", "rz"};
-  out += "          ";
-  for (const char* n : names) out += fmt::format("{:>12}", n);
-  out += "\n";
-  for (int i = 0; i < 6; ++i) {
-    out += fmt::format("    {:>4}  ", names[i]);
-    for (int j = 0; j < 6; ++j) out += fmt::format("{:>12.4e}", M(i, j));
-    out += "\n";
-  }
-  return out;
-}
-
-std::string indices_report(const StiffnessIndices& ix) {
-  std::string out;
-  out += fmt::format("    size {}x{}, symmetry error {:.1e}\n", ix.size, ix.size, ix.symmetry_error);
-  out += fmt::format("    determinant       {} (sign {}, log10|det| = {:.4f})\n",
-                     std::isfinite(ix.determinant) ? fmt::format("{:.4e}", ix.determinant) : std::string("overflows double"),
-                     ix.det_sign, ix.log10_abs_det);
-  out += fmt::format("    trace             {:.4e}\n", ix.trace);
-  out += fmt::format("    1-norm            {:.4e}\n", ix.norm_1);
-  out += fmt::format("    2-norm            {:.4e}\n", ix.norm_2);
-  out += fmt::format("    Frobenius norm    {:.4e}\n", ix.norm_frobenius);
-  out += fmt::format("    inf-norm (rows)   {:.4e}\n", ix.norm_inf);
-  out += fmt::format("    max |k_ij|        {:.4e}\n", ix.max_abs_entry);
-  out += fmt::format("    condition number  {:.4e}\n", ix.condition_number);
-  return out;
-}
-
 std::string full_report(const Structure& s, const Solution& sol) {
   std::string out;
   out += fmt::format("kinestat MSA report{}\n", s.title().empty() ? "" : ": " + s.title());
@@ -83,19 +53,10 @@ std::string full_report(const Structure& s, const Solution& sol) {
       out += "\n";
     }
   }
-  if (sol.cartesian) {
-    const auto& c = *sol.cartesian;
-    out += fmt::format("\nCartesian stiffness of node '{}' (static condensation, global axes)\n", s.nodes()[c.node].id);
-    if (c.stiffness_defined) {
-      out += matrix6_report(c.stiffness, "stiffness K", "N/m, N/rad; N m/m, N m/rad");
-      out += "  indices of K:\n" + indices_report(c.indices);
-      out += "  eigenvalues of K: ";
-      for (int i = 0; i < c.indices.eigenvalues.size(); ++i) out += fmt::format("{:.4e} ", c.indices.eigenvalues(i));
-      out += "\n";
-    } else {
-      out += "  " + c.note + "\n";
-    }
-    out += matrix6_report(c.compliance, "compliance C = K^-1", "m/N, m/(N m); rad/N, rad/(N m)");
+  if (sol.cartesian && s.report_node()) {
+    const std::string& node = s.nodes()[*s.report_node()].id;
+    out += "\n";  // appended separately: GCC 12 warns falsely (-Wrestrict) about "\n" + std::string&&
+    out += cartesian_stiffness_report(*sol.cartesian, "Cartesian stiffness of node '" + node + "' (static condensation)");
   }
   if (sol.global_indices) out += "\nindices of the reduced global stiffness matrix:\n" + indices_report(*sol.global_indices);
   return out;

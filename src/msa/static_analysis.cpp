@@ -6,10 +6,11 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
+#include "kinestat/solver/null_space.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
-#include "kinestat/msa/singularity.hpp"
-#include "kinestat/solver/null_space.hpp"
+#include "msa/singularity_diagnosis.hpp"
 
 namespace kinestat::msa {
 namespace {
@@ -49,13 +50,15 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
     st = Status::Singular("softest mode below the mechanism ratio");
   }
   if (st.code() != StatusCode::kSingular) return st;
-  sol.singularity = diagnose_singularity(s, sys.map, sys.Kr, sol.factorization, opt.mechanism_ratio);
+  sol.singularity = diagnose_singularity(s, sys.map, sys.Kr, sol.factorization, opt.mechanism_ratio, opt.cholesky);
   if (!sol.singularity.modes.empty()) sol.softest_mode_ratio = sol.singularity.modes.front().rayleigh_ratio;
   if (!opt.regularize) return Status::Singular(sol.singularity.message);
   solver::SparseMatrix R = sys.Kr;
   const VecX D = solver::stiffness_scaling(R);
   for (int i = 0; i < R.rows(); ++i) R.coeffRef(i, i) += opt.regularization * D(i);
-  regularized = solver::SparseCholesky::Create({.singular_pivot_ratio = 0.0});
+  solver::SparseCholeskyOptions shifted = opt.cholesky;  // the caller's backend and ordering, no pivot check
+  shifted.singular_pivot_ratio = 0.0;
+  regularized = solver::make_sparse_cholesky(shifted);
   if (Status r = regularized->Factorize(R, nullptr); !r.ok()) return r;
   sol.regularized = true;
   return Status::Ok();
@@ -69,7 +72,12 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   const VecX residual = sys.K * u - f;  // reactions at supports, constraint forces at tied nodes
   r.displacement.resize(nn);
   r.reaction.assign(nn, Vec6::Zero());
-  double fscale = 0.0, mscale = 0.0;
+  // Scale of the loads and reactions, each term taken on its own (not their net sum at a node, which
+  // is zero where a support takes a load directly), forces times the structure size so that forces
+  // and moments share one unit (N m): a pure-moment case then compares the round-off in its
+  // resultant force with its moments, not with the round-off reactions themselves.
+  const double size = s.length_scale();
+  double scale = 0.0;
   for (int n = 0; n < nn; ++n) {
     r.displacement[n] = u.segment<6>(6 * n);
     if (sys.map.supported_node[n]) r.reaction[n] = residual.segment<6>(6 * n);
@@ -79,16 +87,15 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
       r.max_translation_node = n;
     }
     // Resultant of loads + reactions about the origin: zero for a structure in equilibrium.
-    const Vec6 w = f.segment<6>(6 * n) + r.reaction[n];
     const Vec3& x = s.nodes()[n].position;
-    r.resultant.head<3>() += w.head<3>();
-    r.resultant.tail<3>() += w.tail<3>() + x.cross(w.head<3>());
-    fscale += w.head<3>().norm();
-    mscale += w.tail<3>().norm() + x.norm() * w.head<3>().norm();
+    for (const Vec6& w : {Vec6(f.segment<6>(6 * n)), r.reaction[n]}) {
+      r.resultant.head<3>() += w.head<3>();
+      r.resultant.tail<3>() += w.tail<3>() + x.cross(w.head<3>());
+      scale += w.tail<3>().norm() + (size + x.norm()) * w.head<3>().norm();
+    }
   }
-  const double ef = fscale > 0 ? r.resultant.head<3>().norm() / fscale : 0.0;
-  const double em = mscale > 0 ? r.resultant.tail<3>().norm() / mscale : 0.0;
-  r.equilibrium_error = std::max(ef, em);
+  const double unbalance = size * r.resultant.head<3>().norm() + r.resultant.tail<3>().norm();
+  r.equilibrium_error = scale > 0 ? unbalance / scale : 0.0;
   const VecX rr = sys.map.C.transpose() * residual;
   const double fn = (sys.map.C.transpose() * (f - sys.K * u0)).norm();  // the reduced right-hand side
   r.free_dof_residual = fn > 0 ? rr.norm() / fn : rr.norm();
@@ -124,29 +131,14 @@ StatusOr<CartesianStiffness> node_stiffness(const Structure& s, const System& sy
   for (int i = 0; i < 6; ++i) E(6 * node + i, i) = 1.0;
   MatX Q;
   if (Status st = chol.Solve(sys.map.C.transpose() * E, &Q); !st.ok()) return st;
-  CartesianStiffness c;
-  c.node = node;
-  c.compliance = (sys.map.C * Q).middleRows<6>(6 * node);
-  c.compliance = 0.5 * (c.compliance + c.compliance.transpose());  // exact up to round-off (K_r symmetric)
-  Eigen::SelfAdjointEigenSolver<Mat6> eig(c.compliance);
-  const double cmax = eig.eigenvalues().cwiseAbs().maxCoeff();
-  if (!(cmax > 0)) {
-    c.note = "the node is fully supported: its stiffness is infinite";
-  } else if (eig.eigenvalues().minCoeff() <= 1e-13 * cmax) {
-    c.note = "the compliance is singular (a supported or rigidly tied dof at this node): the 6x6 stiffness "
-             "is infinite in some direction; see the compliance";
-  } else {
-    c.stiffness = eig.eigenvectors() * eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
-    c.stiffness_defined = true;
-    c.indices = stiffness_indices(c.stiffness);
-  }
-  return c;
+  // Exact up to round-off (K_r symmetric); symmetrized by cartesian_from_compliance.
+  return cartesian_from_compliance((sys.map.C * Q).middleRows<6>(6 * node), s.nodes()[node].position, "global axes");
 }
 
 }  // namespace
 
 Workspace::Workspace(const solver::SparseCholeskyOptions& options)
-    : cholesky_(solver::SparseCholesky::Create(options)) {}
+    : cholesky_(solver::make_sparse_cholesky(options)) {}
 
 Solution solve(const Structure& s, const SolveOptions& options) {
   Workspace ws(options.cholesky);

@@ -1,16 +1,16 @@
-// CHOLMOD backend of SparseCholesky. Internal: nothing outside this file includes cholmod.h.
+// CHOLMOD backend of SparseCholesky. Internal: cholmod.h is seen by this file and library_versions.cpp only.
+#include "solver/cholmod_cholesky.hpp"
+
 #include <cholmod.h>
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <limits>
-#include <set>
 #include <string>
 
 #include <fmt/format.h>
 
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/library_versions.hpp"
 
 namespace kinestat::solver {
 namespace {
@@ -30,23 +30,6 @@ const char* ordering_name(int ordering) {
     case CHOLMOD_POSTORDERED: return "postordered";
     default: return "unknown";
   }
-}
-
-// The BLAS library actually mapped into this process (through the libblas.so.3 alternative):
-// CHOLMOD's supernodal speed depends on it, so reports name it.
-std::string loaded_blas() {
-  std::ifstream maps("/proc/self/maps");
-  std::set<std::string> libs;
-  std::string line;
-  while (std::getline(maps, line)) {
-    const auto pos = line.find('/');
-    if (pos == std::string::npos) continue;
-    const std::string path = line.substr(pos);
-    if (path.find("blas") != std::string::npos) libs.insert(path);
-  }
-  std::string out;
-  for (const auto& l : libs) out += (out.empty() ? "" : ", ") + l;
-  return out.empty() ? "no BLAS mapped yet" : out;
 }
 
 class CholmodCholesky final : public SparseCholesky {
@@ -148,8 +131,8 @@ class CholmodCholesky final : public SparseCholesky {
   int num_symbolic_analyses() const override { return analyses_; }
 
   std::string backend_description() const override {
-    return fmt::format("CHOLMOD {}.{}.{} (SuiteSparse), BLAS: {}", CHOLMOD_MAIN_VERSION, CHOLMOD_SUB_VERSION,
-                       CHOLMOD_SUBSUB_VERSION, loaded_blas());
+    const LibraryVersions v = library_versions();
+    return fmt::format("{}, BLAS: {}", v.cholmod, v.blas);
   }
 
  private:
@@ -230,7 +213,7 @@ class CholmodCholesky final : public SparseCholesky {
 
 }  // namespace
 
-std::unique_ptr<SparseCholesky> SparseCholesky::Create(const SparseCholeskyOptions& options) {
+std::unique_ptr<SparseCholesky> make_cholmod_cholesky(const SparseCholeskyOptions& options) {
   return std::make_unique<CholmodCholesky>(options);
 }
 

@@ -5,6 +5,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "kinestat/solver/linear_solver_factory.hpp"
+
 namespace kinestat::solver {
 
 VecX stiffness_scaling(const SparseMatrix& A) {
@@ -36,12 +38,15 @@ StatusOr<NullSpace> lowest_modes(const SparseMatrix& A, const SparseCholesky& fa
   return NullSpace{X * ges.eigenvectors(), ges.eigenvalues().cwiseMax(0.0)};
 }
 
-StatusOr<NullSpace> near_null_space(const SparseMatrix& A, int block, double threshold) {
+StatusOr<NullSpace> near_null_space(const SparseMatrix& A, int block, double threshold,
+                                    const SparseCholeskyOptions& options) {
   const VecX D = stiffness_scaling(A);
   // The shift sits between round-off (~1e-16 relative) and real soft modes (>~1e-12), so
   // mechanisms converge much faster than real soft modes. If round-off still makes A + sigma D
   // indefinite, grow the shift.
-  auto chol = SparseCholesky::Create({.singular_pivot_ratio = 0.0});
+  SparseCholeskyOptions shifted = options;
+  shifted.singular_pivot_ratio = 0.0;
+  auto chol = make_sparse_cholesky(shifted);
   Status st = Status::Internal("unreachable");
   for (double sigma : {1e-14, 1e-12, 1e-10}) {
     SparseMatrix S = A;

@@ -15,6 +15,20 @@ Vec6 unscaled_direction(const Vec6& scaled, double length_scale) {
   return t / t.norm();
 }
 
+ToolSpaceSplit split_tool_space(const MatX& Jq, const MatX& Jtheta, const Vec6& w, double tol) {
+  MatX J(6, Jq.cols() + Jtheta.cols());
+  J << w.asDiagonal() * Jq, w.asDiagonal() * Jtheta;
+  for (int j = 0; j < J.cols(); ++j)
+    if (J.col(j).norm() > 0) J.col(j).normalize();
+  ToolSpaceSplit s;
+  if (J.cols() == 0) return s;
+  Eigen::JacobiSVD<MatX> svd(J, Eigen::ComputeFullU);
+  const VecX& sv = svd.singularValues();
+  while (s.rank < sv.size() && sv[s.rank] > tol * std::max(1.0, sv[0])) ++s.rank;
+  s.U = svd.matrixU();
+  return s;
+}
+
 Mat6 spring_compliance(const MatX& Jtheta, const MatX& Ktheta) {
   if (Jtheta.cols() == 0) return Mat6::Zero();
   // K_theta is symmetric positive definite (Chain::validate), so LLT applies; no inverse is formed.

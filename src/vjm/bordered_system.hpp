@@ -40,4 +40,15 @@ BorderedSystem factor_bordered_system(const MatX& Jq, const Mat6& S, double leng
 // A scaled direction mapped back to twist units (W^-1 t~) and unit-normalized, for reporting.
 Vec6 unscaled_direction(const Vec6& scaled, double length_scale);
 
+// Orthonormal split of the scaled tool space by the range of [W J_q, W J_theta] (columns normalized):
+// U's first `rank` columns span the tool motions that some joint or spring produces, the others the
+// rigid directions. A scaled wrench W^-1 F in the rigid part is a reaction: J^T F = 0, it loads no
+// joint and no spring (but it does enter the Hessians of the loaded mode).
+struct ToolSpaceSplit {
+  Mat6 U = Mat6::Identity();
+  int rank = 0;
+  MatX rigid() const { return U.rightCols(6 - rank); }
+};
+ToolSpaceSplit split_tool_space(const MatX& Jq, const MatX& Jtheta, const Vec6& w, double rank_tolerance);
+
 }  // namespace kinestat::vjm

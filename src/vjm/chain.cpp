@@ -57,6 +57,13 @@ int Chain::add_spring(const Mat6& K, std::string label) {
   return first;
 }
 
+Status Chain::set_spring_stiffness(int index, const Mat6& K) {
+  if (index < 0 || index >= static_cast<int>(springs_.size()))
+    return Status::Invalid(fmt::format("chain '{}' has no spring {} (it has {})", name_, index, springs_.size()));
+  springs_[index].stiffness = K;
+  return Status::Ok();
+}
+
 int Chain::add_passive(JointType type, const Vec3& axis, double nominal, std::string label) {
   const int index = num_passive();
   nominal_q_.conservativeResize(index + 1);

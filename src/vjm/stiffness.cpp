@@ -6,18 +6,10 @@
 #include <cmath>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/vjm/platform.hpp"
 #include "vjm/bordered_system.hpp"
 
 namespace kinestat::vjm {
-
-std::string describe_twist(const Vec6& t) {
-  const Vec3 v = t.head<3>(), r = t.tail<3>();
-  const double scale = t.norm();
-  if (r.norm() <= 1e-9 * scale) return "translation along " + direction_words(v);
-  if (v.norm() <= 1e-9 * scale) return "rotation about " + direction_words(r) + " through the tool point";
-  return fmt::format("screw motion: rotation about {} with tool-point translation {:.3g} m/rad along {}", direction_words(r),
-                     v.norm() / r.norm(), direction_words(v));
-}
 
 namespace {
 
@@ -40,10 +32,11 @@ MatX complement_of(const std::vector<Vec6>& rigid, const Vec6& w, double tol, st
   return svd.matrixU().rightCols(6 - r);
 }
 
-// Free directions, compliance and status of a (finite-part) stiffness K with the given rigid
-// directions. A chain's free directions are its mobility; a platform's are a singularity.
-void finish(CartesianStiffness& out, const std::vector<Vec6>& rigid, double L, double tol, bool platform,
-            const std::string& who) {
+// Free directions, compliance, indices and status of a (finite-part) stiffness K with the given
+// rigid directions and passive self-motions. A chain's free directions are its mobility; a
+// platform's are a singularity.
+void finish(CartesianStiffness& out, const std::vector<Vec6>& rigid, int self_motions, double L, double tol,
+            bool platform, const std::string& who) {
   const Vec6 w = twist_scale(L);
   const MatX Uc = complement_of(rigid, w, tol, &out.rigid_directions, L);
   const Mat6 Kt = w.cwiseInverse().asDiagonal() * out.stiffness * w.cwiseInverse().asDiagonal();
@@ -58,6 +51,8 @@ void finish(CartesianStiffness& out, const std::vector<Vec6>& rigid, double L, d
       out.free_directions.push_back(unscaled_direction(Uc * svd.matrixV().col(k), L));
   }
   out.compliance_defined = out.free_directions.empty();
+  out.stiffness_defined = out.rigid_directions.empty();
+  out.indices = stiffness_indices(out.stiffness);
   out.compliance.setZero();
   if (out.compliance_defined && Kc.size() > 0) {
     // C = W^-1 Uc Kc^-1 Uc^T W^-1: zero along rigid directions.
@@ -73,9 +68,11 @@ void finish(CartesianStiffness& out, const std::vector<Vec6>& rigid, double L, d
         "{} has zero stiffness (a free motion: singular posture or missing constraint) along: {}; "
         "the compliance is undefined. ",
         who, list_twists(out.free_directions));
-  if (!msg.empty() && !out.self_motions.empty())
-    msg += fmt::format("The passive joints also have {} self-motion(s) that do not move the tool.",
-                       out.self_motions.size());
+  if (self_motions > 0)
+    out.note = fmt::format("the passive joints have {} self-motion(s) that do not move the tool (no effect on K)",
+                           self_motions);
+  if (!msg.empty() && self_motions > 0)
+    msg += fmt::format("The passive joints also have {} self-motion(s) that do not move the tool.", self_motions);
   out.status = msg.empty() ? Status::Ok() : Status::Singular(msg);
 }
 
@@ -89,9 +86,10 @@ StatusOr<CartesianStiffness> unloaded_stiffness(const Chain& chain, const Stiffn
   const BorderedSystem B = factor_bordered_system(J.Jq, spring_compliance(J.Jtheta, chain.spring_stiffness()),
                                                   chain.length_scale(), opt.rank_tolerance);
   CartesianStiffness out;
+  out.point = J.pose.translation();
   out.stiffness = B.K;
-  out.self_motions = B.self_motions;
-  finish(out, B.rigid_directions, chain.length_scale(), opt.rank_tolerance, false, chain_label(chain));
+  finish(out, B.rigid_directions, static_cast<int>(B.self_motions.size()), chain.length_scale(), opt.rank_tolerance,
+         false, chain_label(chain));
   return out;
 }
 
@@ -124,24 +122,12 @@ StatusOr<CartesianStiffness> loaded_stiffness(const Chain& chain, const ChainSta
   const MatX C = Jq.transpose() + H.Hqtheta * kJt;  // J_q^T + K_qtheta k J_theta^T
   const MatX D = H.Hqq + H.Hqtheta * kH;            // K_qq + K_qtheta k K_thetaq
 
-  // Rigid directions: left null space of [J_q J_theta] (columns normalized). The force along them is
-  // a reaction, so (21) is solved on the complement Uc: dF~ = Uc f, rows projected by Uc^T.
-  MatX Jall(6, n + m);
-  Jall << Jq, Jth;
-  for (int j = 0; j < Jall.cols(); ++j)
-    if (Jall.col(j).norm() > 0) Jall.col(j).normalize();
+  // Rigid directions: left null space of [J_q J_theta]. The force along them is a reaction, so (21)
+  // is solved on the complement Uc: dF~ = Uc f, rows projected by Uc^T.
+  const ToolSpaceSplit split = split_tool_space(J.Jq, J.Jtheta, w, opt.rank_tolerance);
+  const int c = split.rank;
+  const Mat6& U = split.U;
   std::vector<Vec6> rigid;
-  int c = 6;
-  Mat6 U = Mat6::Identity();
-  if (Jall.cols() > 0) {
-    Eigen::JacobiSVD<MatX> svd(Jall, Eigen::ComputeFullU);
-    const VecX& sv = svd.singularValues();
-    c = 0;
-    while (c < sv.size() && sv[c] > opt.rank_tolerance * std::max(1.0, sv[0])) ++c;
-    U = svd.matrixU();
-  } else {
-    c = 0;
-  }
   for (int k = c; k < 6; ++k) rigid.push_back(unscaled_direction(U.col(k), L));
   const MatX Uc = U.leftCols(c);
   MatX A(c + n, c + n);
@@ -151,19 +137,21 @@ StatusOr<CartesianStiffness> loaded_stiffness(const Chain& chain, const ChainSta
   // Minimum-norm solution: a passive self-motion (a null vector with dF = 0) does not change K.
   const MatX X = Eigen::CompleteOrthogonalDecomposition<MatX>(A).solve(rhs);
   CartesianStiffness out;
+  out.point = J.pose.translation();
   out.stiffness = w.asDiagonal() * (Uc * X.topRows(c) * Uc.transpose()) * w.asDiagonal();
-  finish(out, rigid, L, opt.rank_tolerance, false, chain_label(chain));
+  finish(out, rigid, 0, L, opt.rank_tolerance, false, chain_label(chain));
   return out;
 }
 
 CartesianStiffness aggregate(const std::vector<CartesianStiffness>& chains, double L, const StiffnessOptions& opt) {
   CartesianStiffness out;
+  if (!chains.empty()) out.point = chains.front().point;  // validate_platform: the chains share it
   std::vector<Vec6> rigid;
   for (const CartesianStiffness& c : chains) {
     out.stiffness += c.stiffness;
     rigid.insert(rigid.end(), c.rigid_directions.begin(), c.rigid_directions.end());
   }
-  finish(out, rigid, L, opt.rank_tolerance, true, "the platform");
+  finish(out, rigid, 0, L, opt.rank_tolerance, true, "the platform");
   return out;
 }
 
@@ -174,14 +162,12 @@ StatusOr<CartesianStiffness> platform_stiffness(const std::vector<Chain>& chains
                                                 PerChain per_chain) {
   if (Status s = validate_platform(chains); !s.ok()) return s;
   std::vector<CartesianStiffness> parts;
-  double L = 0.0;
   for (size_t i = 0; i < chains.size(); ++i) {
     StatusOr<CartesianStiffness> k = per_chain(i);
     if (!k.ok()) return k.status();
     parts.push_back(std::move(*k));
-    L = std::max(L, chains[i].length_scale());
   }
-  return aggregate(parts, L, opt);
+  return aggregate(parts, platform_length_scale(chains), opt);
 }
 
 }  // namespace

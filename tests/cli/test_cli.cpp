@@ -32,8 +32,8 @@ TEST(Cli, FiveBarSingularPostureIsDiagnosedWithExitStatus3) {
 }
 
 TEST(Cli, FiveBarFromPointAndWorkingMode) {
-  // P of row 14 with the working mode the angles give back ("+-").
-  const CliRun r = run_cli({"fivebar", "--point", "0.033338451196,0.134483336761", "--mode", "+-"});
+  // P of row 14 (in mm, as every length option) with the working mode the angles give back ("+-").
+  const CliRun r = run_cli({"fivebar", "--point", "33.338451196,134.483336761", "--mode", "+-"});  // mm
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("theta1 = 64.0000 deg, theta2 = 75.0000 deg"), std::string::npos) << r.out;
 }
@@ -42,7 +42,7 @@ TEST(Cli, ImpossiblePosturesAndBadOptionsExitWith2) {
   CliRun r = run_cli({"fivebar", "--theta1", "-90", "--theta2", "90"});  // |B1B2| > 2 r2: cannot close
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_FALSE(r.err.empty());
-  r = run_cli({"fivebar", "--point", "1,1"});  // out of reach
+  r = run_cli({"fivebar", "--point", "1000,1000"});  // out of reach (mm)
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("reach"), std::string::npos) << r.err;
   r = run_cli({"fivebar", "--theta1", "10", "--theta2", "20", "--assembly", "sideways"});

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 
@@ -16,10 +17,11 @@ const std::string kSource = KINESTAT_SOURCE_DIR;
 const std::string kPuu = kSource + "/models/orthoglide_puu.yaml";
 const std::string kPrpar = kSource + "/models/orthoglide_prpar.yaml";
 
-// The 6x6 printed after the line that contains `title`.
-Mat6 printed_matrix(const std::string& out, const std::string& title) {
+// The 6x6 printed after the line that contains `title`, in the report section headed `section`.
+Mat6 printed_matrix(const std::string& out, const std::string& section, const std::string& title) {
   Mat6 M = Mat6::Constant(std::nan(""));
-  const std::size_t at = out.find(title);
+  const std::size_t from = out.find(section);
+  const std::size_t at = from == std::string::npos ? from : out.find(title, from);
   if (at == std::string::npos) return M;
   std::istringstream s(out.substr(out.find('\n', at) + 1));
   std::string line, label;
@@ -57,10 +59,10 @@ void expect_isotropic_translation(const Mat6& C, double c) {
 TEST(VjmCommand, PuuAtQ0IsIsotropicWithTheSeriesCompliance) {
   const CliRun r = run_cli({"vjm", kPuu});
   ASSERT_EQ(r.code, kExitOk) << r.err;
-  const Mat6 C = printed_matrix(r.out, "compliance C = K^-1 (unloaded");
+  const Mat6 C = printed_matrix(r.out, "(unloaded", "compliance C = K^-1 [");
   expect_isotropic_translation(C, q0_translational_compliance());
   // Stiffness printed is the inverse of the compliance printed, and symmetric.
-  const Mat6 K = printed_matrix(r.out, "stiffness K (unloaded");
+  const Mat6 K = printed_matrix(r.out, "(unloaded", "stiffness K [");
   EXPECT_LT((K * C - Mat6::Identity()).cwiseAbs().maxCoeff(), 1e-3);
   EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-4 * K.cwiseAbs().maxCoeff());
   EXPECT_NE(r.out.find("condition number"), std::string::npos);
@@ -70,7 +72,8 @@ TEST(VjmCommand, PuuAtQ0IsIsotropicWithTheSeriesCompliance) {
 TEST(VjmCommand, PrparAtQ0HasTheSameTranslationalCompliance) {
   const CliRun r = run_cli({"vjm", kPrpar, "--point", "0,0,0"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
-  expect_isotropic_translation(printed_matrix(r.out, "compliance C = K^-1 (unloaded"), q0_translational_compliance());
+  expect_isotropic_translation(printed_matrix(r.out, "(unloaded", "compliance C = K^-1 ["),
+                               q0_translational_compliance());
 }
 
 TEST(VjmCommand, WrenchGivesTheComplianceTimesTheForce) {
@@ -82,7 +85,7 @@ TEST(VjmCommand, WrenchGivesTheComplianceTimesTheForce) {
   ASSERT_NE(at, std::string::npos) << r.out;
   const double dx_mm = std::stod(r.out.substr(at + 14));
   EXPECT_NEAR(dx_mm, 100 * q0_translational_compliance() * 1e3, 1e-4 * dx_mm);
-  EXPECT_NE(printed_matrix(r.out, "stiffness K (loaded").maxCoeff(), 0.0);
+  EXPECT_NE(printed_matrix(r.out, "(loaded", "stiffness K [").maxCoeff(), 0.0);
 }
 
 TEST(VjmCommand, PrescribedDisplacementReportsTheWrench) {
@@ -93,6 +96,40 @@ TEST(VjmCommand, PrescribedDisplacementReportsTheWrench) {
   ASSERT_NE(at, std::string::npos) << r.out;
   const double Fx = std::stod(r.out.substr(at + 12));
   EXPECT_NEAR(Fx, 7e-6 / q0_translational_compliance(), 1e-4 * Fx);
+}
+
+TEST(VjmCommand, WrenchOnVeryStiffSpringsConverges) {
+  // Three orthogonal legs, each a 1e9 N/mm (and N mm/rad) spring at the tool point: K = 3e9 N/mm
+  // isotropic. The wrench residual's round-off floor (~eps K l) is far above 1e-10 of the load; the
+  // solve must still converge and give F / K.
+  const std::string path = std::string(KINESTAT_BINARY_DIR) + "/vjm_stiff_legs.yaml";
+  {
+    std::ofstream f(path);
+    f << "units: mm-N-s\nchains:\n";
+    // Base point, then a rotation (axis, deg) that turns the local x towards the tool point.
+    struct Leg { const char* base; const char* axis; int angle; };
+    const Leg legs[3] = {{"[250, 0, 0]", "[0, 0, 1]", 180}, {"[0, 250, 0]", "[0, 0, 1]", -90}, {"[0, 0, 250]", "[0, 1, 0]", 90}};
+    for (int i = 0; i < 3; ++i) {
+      f << "  - name: leg " << i << "\n    elements:\n";
+      f << "      - {translate: " << legs[i].base << "}\n";
+      f << "      - {rotate: {axis: " << legs[i].axis << ", angle: " << legs[i].angle << "}}\n";
+      f << "      - {translate: [250, 0, 0]}\n";
+      f << "      - {spring: {matrix: [";
+      for (int r = 0; r < 6; ++r) {
+        f << (r ? ", " : "") << "[";
+        for (int c = 0; c < 6; ++c) f << (c ? ", " : "") << (r == c ? "1.0e9" : "0");
+        f << "]";
+      }
+      f << "]}}\n";
+      f << "      - {rotate: {axis: " << legs[i].axis << ", angle: " << -legs[i].angle << "}}\n";
+    }
+  }
+  const CliRun r = run_cli({"vjm", path, "--wrench", "1000,-500,800,0,0,0"});
+  ASSERT_EQ(r.code, kExitOk) << r.err << r.out;
+  const std::size_t at = r.out.find("displacement (");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double dx_mm = std::stod(r.out.substr(at + 14));
+  EXPECT_NEAR(dx_mm, 1000 / 3e9, 1e-4 * 1000 / 3e9) << r.out;
 }
 
 TEST(VjmCommand, BadInputExitsWith2) {

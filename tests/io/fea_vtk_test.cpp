@@ -7,8 +7,10 @@
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -27,14 +29,16 @@ TEST(FeaVtk, SixFilesReadBackWithFieldsAndUniformAxialStress) {
   fea::LinkStiffnessOptions o;
   o.clamp = fea::Region::plane(Vec3::Zero(), Vec3::UnitX());
   o.reference = fea::Region::plane(Vec3(L, 0, 0), Vec3::UnitX());
+  o.keep_fields = true;
   auto r = fea::link_stiffness(mesh, Material::from_E_nu("steel", 210e9, 0.3), o);
   ASSERT_TRUE(r.ok()) << r.status().message();
   const std::string dir = (std::filesystem::temp_directory_path() / "kinestat_fea_vtk_test").string();
   std::filesystem::remove_all(dir);
   std::vector<std::string> written;
   ASSERT_TRUE(write_link_vtu_files(dir, "bar", mesh, *r, &written).ok());
-  ASSERT_EQ(written.size(), 6u);
+  ASSERT_EQ(written.size(), 7u);  // six load cases and the .pvd that groups them
   EXPECT_EQ(std::filesystem::path(written[3]).filename(), "bar_Mx.vtu");
+  EXPECT_EQ(std::filesystem::path(written[6]).filename(), "bar.pvd");
 
   for (int k = 0; k < 6; ++k) {
     vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -44,6 +48,9 @@ TEST(FeaVtk, SixFilesReadBackWithFieldsAndUniformAxialStress) {
     ASSERT_EQ(grid->GetNumberOfPoints(), mesh.num_nodes());
     ASSERT_EQ(grid->GetNumberOfCells(), mesh.num_elements());
     EXPECT_EQ(grid->GetCellType(0), VTK_QUADRATIC_TETRA);
+    auto* units = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("units"));
+    ASSERT_NE(units, nullptr);
+    EXPECT_EQ(units->GetValue(1), k < 3 ? "displacement: m per N" : "displacement: m per N m");
     vtkDataArray* u = grid->GetPointData()->GetArray("displacement");
     vtkDataArray* vm = grid->GetCellData()->GetArray("von_mises");
     ASSERT_TRUE(u && vm);

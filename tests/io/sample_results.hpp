@@ -87,20 +87,20 @@ inline msa::Solution sample_solution() {
     r.max_translation_node = 3;
     sol.cases.push_back(r);
   }
-  msa::CartesianStiffness cs;
-  cs.node = 3;
+  CartesianStiffness cs;  // of the report node (sample_structure: node 3)
   for (int i = 0; i < 6; ++i) {
     for (int j = 0; j < 6; ++j) cs.compliance(i, j) = 1.0 / (1 + i + j);  // Hilbert: symmetric
   }
   cs.stiffness = cs.compliance.inverse();
   cs.stiffness_defined = true;
-  cs.indices.size = 6;
-  cs.indices.trace = 42.0;
-  cs.indices.condition_number = std::numeric_limits<double>::infinity();
-  cs.indices.determinant = std::numeric_limits<double>::quiet_NaN();
-  cs.indices.eigenvalues = VecX::LinSpaced(6, 1.0, 6.0);
-  cs.indices.eigenvectors = MatX::Identity(6, 6);
-  cs.indices.eigenvectors(0, 1) = 0.25;
+  StiffnessIndices& ix = cs.indices.emplace();
+  ix.size = 6;
+  ix.trace = 42.0;
+  ix.condition_number = std::numeric_limits<double>::infinity();
+  ix.determinant = std::numeric_limits<double>::quiet_NaN();
+  ix.eigenvalues = VecX::LinSpaced(6, 1.0, 6.0);
+  ix.eigenvectors = MatX::Identity(6, 6);
+  ix.eigenvectors(0, 1) = 0.25;
   sol.cartesian = cs;
   return sol;
 }

@@ -1,5 +1,6 @@
 // The `fea:` spring of VJM model files: a link's 6x6 from the FEA of its mesh, placed like the
-// `cantilever:` spring, served from the result cache on the second read, and bad input named by FILE:LINE.
+// `cantilever:` spring, served from the result cache on the second read, and bad input named by
+// FILE:LINE. Reading only records the spring; resolve_fea_springs computes it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -29,10 +30,15 @@ std::string bar_model(const std::string& spring) {
          "      - {spring: " + spring + "}\n";
 }
 
-Mat6 model_stiffness(const StatusOr<VjmModel>& model) {
+Mat6 model_stiffness(StatusOr<VjmModel> model) {
   EXPECT_TRUE(model.ok()) << model.status().message();
   if (!model.ok()) return Mat6::Zero();
-  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(model->chains);
+  const Status resolved = resolve_fea_springs(*model);
+  EXPECT_TRUE(resolved.ok()) << resolved.message();
+  StatusOr<std::vector<vjm::Chain>> chains = vjm_model_chains(*model, std::nullopt);
+  EXPECT_TRUE(chains.ok()) << chains.status().message();
+  if (!chains.ok()) return Mat6::Zero();
+  StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
   EXPECT_TRUE(K.ok()) << K.status().message();
   return K->stiffness;
 }
@@ -80,7 +86,7 @@ TEST(VjmFeaSpring, BarMatchesTimoshenkoCantileverAndSecondReadComesFromTheCache)
   const std::string key = cached[0].stem().string();
   std::optional<fea::LinkStiffness> entry = fea::load_cached_link_stiffness((dir / "cache").string(), key);
   ASSERT_TRUE(entry.has_value());
-  fea::set_compliance(*entry, 2.0 * entry->compliance);
+  fea::set_compliance(*entry, 2.0 * entry->cartesian.compliance, entry->cartesian.point);
   ASSERT_TRUE(fea::store_cached_link_stiffness((dir / "cache").string(), key, *entry).ok());
   const Mat6 K_again = model_stiffness(read_vjm_model_yaml(model_file.string()));
   EXPECT_LT((K_again - 0.5 * K_fea).norm() / K_fea.norm(), 1e-9);
@@ -115,15 +121,28 @@ TEST(VjmFeaSpring, BadInputNamesFileAndLine) {
   }
 }
 
-// A region that selects no node of the mesh is found only after meshing (coarse here: a second).
-TEST(VjmFeaSpring, RegionOutsideTheLinkNamesFileAndLine) {
+// Reading does not mesh: the spring is recorded, the chains refuse to be used until it is computed,
+// and a region that selects no node of the mesh is found by the resolution (coarse here: a second),
+// still named by FILE:LINE.
+TEST(VjmFeaSpring, ReadingRecordsTheSpringAndResolvingFindsABadRegion) {
   const std::string name = (fresh_dir("vjm_fea_spring_region") / "model.yaml").string();
   StatusOr<VjmModel> m = read_vjm_model_yaml_string(
       bar_model("{fea: {mesh: " + kBar.string() + ", material: steel, clamp: x=-50, reference: x=200, size: 20}}"), name);
-  ASSERT_FALSE(m.ok());
-  EXPECT_EQ(m.status().code(), StatusCode::kInvalidInput);
-  EXPECT_NE(m.status().message().find(name + ":7:"), std::string::npos) << m.status().message();
-  EXPECT_NE(m.status().message().find("bar.off"), std::string::npos) << m.status().message();
+  ASSERT_TRUE(m.ok()) << m.status().message();
+  ASSERT_EQ(m->fea_springs.size(), 1u);
+  EXPECT_FALSE(m->fea_springs[0].resolved);
+  EXPECT_EQ(m->fea_springs[0].request.mesh_size, 0.02);  // size 20 in the model's mm
+  StatusOr<std::vector<vjm::Chain>> early = vjm_model_chains(*m, std::nullopt);
+  EXPECT_EQ(early.status().code(), StatusCode::kInvalidInput);
+  EXPECT_NE(early.status().message().find("resolve_fea_springs"), std::string::npos) << early.status().message();
+  EXPECT_FALSE(vjm::platform_unloaded_stiffness(m->chains).ok());  // the unresolved spring is not a number
+
+  const Status s = resolve_fea_springs(*m);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.code(), StatusCode::kInvalidInput);
+  EXPECT_NE(s.message().find(name + ":7: chain 'bar' element 3 (spring) fea"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("bar.off"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("clamp region"), std::string::npos) << s.message();
 }
 
 }  // namespace

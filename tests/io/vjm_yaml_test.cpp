@@ -15,7 +15,7 @@ using mechanisms::OrthoglideArchitecture;
 const std::string kSource = KINESTAT_SOURCE_DIR;
 
 Mat6 platform_stiffness(const std::vector<vjm::Chain>& chains) {
-  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(chains);
+  StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(chains);
   EXPECT_TRUE(K.ok()) << K.status().message();
   EXPECT_TRUE(K->status.ok()) << K->status.message();
   return K->stiffness;

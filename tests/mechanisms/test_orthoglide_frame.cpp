@@ -23,7 +23,7 @@ Mat6 msa_stiffness(const OrthoglideStiffnessModel& m, const Case& c) {
   EXPECT_TRUE(s.ok()) << s.status().message();
   if (!s.ok()) return Mat6::Zero();
   msa::Workspace ws;
-  StatusOr<msa::CartesianStiffness> K = msa::cartesian_stiffness(*s, ws, *s->report_node());
+  StatusOr<CartesianStiffness> K = msa::cartesian_stiffness(*s, ws, *s->report_node());
   EXPECT_TRUE(K.ok()) << K.status().message();
   if (!K.ok()) return Mat6::Zero();
   EXPECT_TRUE(K->stiffness_defined) << K->note;
@@ -35,7 +35,7 @@ Mat6 vjm_stiffness(const OrthoglideStiffnessModel& m, const Case& c) {
       orthoglide_chains(m, c.architecture, paper_table_point(c.table_coordinate_mm));
   EXPECT_TRUE(chains.ok()) << chains.status().message();
   if (!chains.ok()) return Mat6::Zero();
-  StatusOr<vjm::CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
+  StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
   EXPECT_TRUE(K.ok() && K->status.ok()) << (K.ok() ? K->status.message() : K.status().message());
   return K.ok() ? K->stiffness : Mat6::Zero();
 }

@@ -122,7 +122,7 @@ Point computed(A a, double c) {
   StatusOr<OrthoglideStiffness> s = orthoglide_stiffness(identified().model, a, paper_table_point(c), kPaperLoad);
   EXPECT_TRUE(s.ok()) << s.status().message();
   if (!s.ok()) return {};
-  auto blocks = [](const vjm::CartesianStiffness& k) {
+  auto blocks = [](const CartesianStiffness& k) {
     const Mat6& C = k.compliance;
     return Blocks{C(0, 0) / kTran, C(0, 1) / kTran, C(3, 3) / kRot, C(3, 4) / kRot};
   };

@@ -17,8 +17,8 @@ namespace kinestat::mechanisms {
 namespace {
 
 // Tables' units: translational compliance mm/N, rotational rad/(N mm); blocks of C = K^-1.
-Mat3 tran(const vjm::CartesianStiffness& k) { return k.compliance.topLeftCorner<3, 3>() * 1e3; }
-Mat3 rot(const vjm::CartesianStiffness& k) { return k.compliance.bottomRightCorner<3, 3>() * 1e-3; }
+Mat3 tran(const CartesianStiffness& k) { return k.compliance.topLeftCorner<3, 3>() * 1e3; }
+Mat3 rot(const CartesianStiffness& k) { return k.compliance.bottomRightCorner<3, 3>() * 1e-3; }
 
 // Tables 1-3: (0.5, 0.5, 0.5) mm on the tables' (reversed) axes.
 const Vec6 kPaperLoad = (Vec6() << -0.5e-3, -0.5e-3, -0.5e-3, 0, 0, 0).finished();
@@ -103,7 +103,7 @@ TEST(OrthoglideStiffness, OffDiagonalSignsOfTables1And2) {
   for (const Row& r : rows) {
     for (int k = 0; k < 3; ++k) {
       const OrthoglideStiffness s = at(r.a, points[k]);
-      const vjm::CartesianStiffness& K = r.loaded ? s.loaded : s.unloaded;
+      const CartesianStiffness& K = r.loaded ? s.loaded : s.unloaded;
       const auto [a, b, c] = q_axis_form(r.rotational ? rot(K) : tran(K));
       const std::string where = ::testing::PrintToString(
           std::make_tuple(r.a == OrthoglideArchitecture::kPUU ? "PUU" : "PRPaR", r.loaded ? "loaded" : "unloaded",
@@ -179,7 +179,7 @@ TEST(OrthoglideStiffness, ParallelogramSpringReproducesTheTwoBarLoop) {
     c.add_translation(m.link_length * Vec3::UnitX(), "bars");
     c.add_coupled(vjm::JointType::kRevolute, Vec3::UnitY(), k, -1.0, "coupled");
     c.add_spring(*Ks, "parallelogram");
-    StatusOr<vjm::CartesianStiffness> K = vjm::unloaded_stiffness(c);
+    StatusOr<CartesianStiffness> K = vjm::unloaded_stiffness(c);
     ASSERT_TRUE(K.ok());
     const Mat6 loop = two_bar_loop(m, q);
     EXPECT_LT((K->stiffness - loop).cwiseAbs().maxCoeff(), 1e-9 * loop.cwiseAbs().maxCoeff()) << q;

@@ -52,7 +52,7 @@ void cross_check(BeamTheory theory) {
   s.add_joint({.id = "elbow joint", .node1 = n1, .node2 = n1b, .frame = joint_frame, .stiffness = joint_k});
   s.add_support({.node = n0});
   msa::Workspace ws;
-  StatusOr<msa::CartesianStiffness> K_msa = msa::cartesian_stiffness(s, ws, n2);
+  StatusOr<CartesianStiffness> K_msa = msa::cartesian_stiffness(s, ws, n2);
   ASSERT_TRUE(K_msa.ok()) << K_msa.status().message();
   ASSERT_TRUE(K_msa->stiffness_defined) << K_msa->note;
 
@@ -69,7 +69,7 @@ void cross_check(BeamTheory theory) {
   c.add_transform(reorient(joint_frame, a2), "lower beam axes");
   c.add_translation(Vec3((p2 - p1).norm(), 0, 0), "lower beam");
   c.add_spring(vjm::cantilever_spring(steel, sec2, (p2 - p1).norm(), theory), "lower beam");
-  StatusOr<vjm::CartesianStiffness> K_vjm = vjm::unloaded_stiffness(c);
+  StatusOr<CartesianStiffness> K_vjm = vjm::unloaded_stiffness(c);
   ASSERT_TRUE(K_vjm.ok()) << K_vjm.status().message();
   ASSERT_TRUE(K_vjm->compliance_defined) << K_vjm->status.message();
   EXPECT_LT((c.nominal_pose().translation() - p2).norm(), 1e-15);

@@ -2,6 +2,8 @@
 // into garbage.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "kinestat/msa/singularity.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
@@ -37,6 +39,28 @@ Structure hinged_chain(const Vec3& b, const Vec6& joint) {
   return s;
 }
 
+// The six rigid-body motions of `nodes` in the canonical basis about point c: mode k < 3 translates
+// every node along axis k, mode 3 + k rotates them about axis k through c.
+void expect_canonical_rigid_modes(const Structure& s, const std::vector<FreeMotion>& modes, size_t first,
+                                  const std::vector<int>& nodes, const Vec3& c) {
+  ASSERT_GE(modes.size(), first + 6);
+  for (int k = 0; k < 6; ++k) {
+    const FreeMotion& fm = modes[first + k];
+    EXPECT_LT(fm.rayleigh_ratio, 1e-12) << k;
+    const Vec3 e = Vec3::Unit(k % 3);
+    for (int n = 0; n < static_cast<int>(s.nodes().size()); ++n) {
+      Vec6 expected = Vec6::Zero();
+      if (std::find(nodes.begin(), nodes.end(), n) != nodes.end()) {
+        if (k < 3)
+          expected.head<3>() = e;
+        else
+          expected << e.cross(s.nodes()[n].position - c), e;
+      }
+      EXPECT_LT((fm.node_motion[n] - expected).norm(), 1e-12) << "mode " << k << " node " << n;
+    }
+  }
+}
+
 TEST(Singularity, UnsupportedFrameHasSixRigidBodyMotions) {
   Structure s;
   const int m = s.add_material(kSteel), c = s.add_section(circle_section(0.02));
@@ -49,8 +73,49 @@ TEST(Singularity, UnsupportedFrameHasSixRigidBodyMotions) {
   const Solution sol = solve(s);
   ASSERT_EQ(sol.status.code(), StatusCode::kSingular);
   EXPECT_TRUE(sol.cases.empty());  // no numbers from a singular matrix
+  const std::string& msg = sol.status.message();
+  EXPECT_NE(msg.find("The model has no supports: it moves as a rigid body (3 translations, 3 rotations)"),
+            std::string::npos)
+      << msg;
+  // Exactly the six motions, in the canonical basis about the centroid (2/3, 1/3, 0) m, in words.
   EXPECT_EQ(sol.singularity.modes.size(), 6u);
-  for (const auto& fm : sol.singularity.modes) EXPECT_LT(fm.rayleigh_ratio, 1e-12);
+  expect_canonical_rigid_modes(s, sol.singularity.modes, 0, {0, 1, 2}, Vec3(2.0 / 3, 1.0 / 3, 0));
+  EXPECT_NE(msg.find("free motion 1 (rigid body"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("the whole model translates along +x"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("the whole model rotates about +z through (0.666667, 0.333333, 0) m"), std::string::npos) << msg;
+}
+
+TEST(Singularity, PartCutLooseIsNamedWithItsRigidBodyMotions) {
+  // The joint A-A' has no stiffness at all: A'-B is not connected to the clamped cantilever O-A.
+  const Structure s = hinged_chain(Vec3(0.5, 0.4, 0), Vec6::Zero());
+  const Solution sol = solve(s);
+  ASSERT_EQ(sol.status.code(), StatusCode::kSingular);
+  const std::string& msg = sol.status.message();
+  EXPECT_NE(msg.find("Nodes {'A'', 'B'} are not connected to any support: they move as a rigid body"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(msg.find("no supports"), std::string::npos) << msg;
+  EXPECT_EQ(sol.singularity.modes.size(), 6u);
+  expect_canonical_rigid_modes(s, sol.singularity.modes, 0, {2, 3}, Vec3(0.5, 0.2, 0));
+  EXPECT_NE(msg.find("nodes {'A'', 'B'} rotate about +x through (0.5, 0.2, 0) m"), std::string::npos) << msg;
+
+  // A loose part next to a mechanism: its six motions first, then the hinge's three swings (found
+  // in the rest of the near-null space), in which the loose beam C-D does not move.
+  Structure s2 = hinged_chain(Vec3(0.5, 0.4, 0), (Vec6() << 1e10, 1e10, 1e10, 0, 0, 0).finished());
+  const int cd_c = s2.add_node("C", Vec3(0, 1, 1)), cd_d = s2.add_node("D", Vec3(0, 2, 1));
+  s2.add_beam(beam("CD", cd_c, cd_d, 0, 0));
+  const Solution sol2 = solve(s2);
+  ASSERT_EQ(sol2.status.code(), StatusCode::kSingular);
+  ASSERT_EQ(sol2.singularity.modes.size(), 9u) << sol2.status.message();
+  expect_canonical_rigid_modes(s2, sol2.singularity.modes, 0, {cd_c, cd_d}, Vec3(0, 1.5, 1));
+  for (size_t k = 6; k < 9; ++k) {
+    const FreeMotion& fm = sol2.singularity.modes[k];
+    EXPECT_LT(fm.rayleigh_ratio, 1e-12);
+    EXPECT_LT(fm.node_motion[cd_c].norm() + fm.node_motion[cd_d].norm(), 1e-9);
+    EXPECT_GT(fm.node_motion[3].norm(), 0.1);  // B swings
+    EXPECT_LT(fm.node_motion[0].norm(), 1e-9);
+  }
+  EXPECT_NE(sol2.status.message().find("Nodes {'C', 'D'} are not connected to any support"), std::string::npos);
 }
 
 TEST(Singularity, ReleasedChainSwingsAboutItsHinge) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "kinestat/solver/linear_solver_factory.hpp"
 #include "kinestat/solver/null_space.hpp"
 #include "kinestat/solver/sparse_cholesky.hpp"
 
@@ -22,7 +23,7 @@ SparseMatrix spring_chain(int n, double k, double kg) {
 }
 
 TEST(SparseCholesky, SolvesAgainstDenseAndReusesSymbolicAnalysis) {
-  auto chol = SparseCholesky::Create();
+  auto chol = make_sparse_cholesky();
   const SparseMatrix A = spring_chain(50, 1e3, 1e3);
   FactorizationReport rep;
   ASSERT_TRUE(chol->Factorize(A, &rep).ok());
@@ -44,7 +45,7 @@ TEST(SparseCholesky, SolvesAgainstDenseAndReusesSymbolicAnalysis) {
 
 TEST(SparseCholesky, UngroundedChainIsSingularAndSaysWhere) {
   // Without the ground spring the chain can translate freely: exactly one zero pivot.
-  auto chol = SparseCholesky::Create({.ordering = Ordering::kNatural});
+  auto chol = make_sparse_cholesky({.ordering = Ordering::kNatural});
   FactorizationReport rep;
   const Status st = chol->Factorize(spring_chain(10, 1e3, 0.0), &rep);
   EXPECT_EQ(st.code(), StatusCode::kSingular);
@@ -70,15 +71,28 @@ TEST(SparseCholesky, StiffSpringsAreNotMistakenForMechanisms) {
   SparseMatrix A(4, 4);
   A.setFromTriplets(t.begin(), t.end());
   for (Ordering o : {Ordering::kNatural, Ordering::kAmd}) {
-    auto chol = SparseCholesky::Create({.ordering = o});
+    auto chol = make_sparse_cholesky({.ordering = o});
     FactorizationReport rep;
     EXPECT_TRUE(chol->Factorize(A, &rep).ok());
     EXPECT_GT(rep.min_pivot_ratio, 1e-11);
   }
 }
 
+// The factory makes the backend the options name, configured by them, and knows its names.
+TEST(LinearSolverFactory, MakesTheNamedBackendWithTheCallersOptions) {
+  for (Backend b : available_backends()) EXPECT_EQ(backend_from_name(backend_name(b)), b);
+  EXPECT_EQ(backend_from_name("cholmod"), Backend::kCholmod);
+  EXPECT_FALSE(backend_from_name("petsc-typo").has_value());
+  auto chol = make_sparse_cholesky({.backend = Backend::kCholmod, .ordering = Ordering::kNatural});
+  ASSERT_NE(chol, nullptr);
+  EXPECT_NE(chol->backend_description().find("CHOLMOD"), std::string::npos);
+  FactorizationReport rep;
+  ASSERT_TRUE(chol->Factorize(spring_chain(30, 1e3, 1e3), &rep).ok());
+  EXPECT_EQ(rep.ordering, "natural");  // the caller's ordering reached the backend
+}
+
 TEST(NullSpace, FindsTheRigidTranslationOfAFreeChain) {
-  auto ns = near_null_space(spring_chain(20, 1e3, 0.0), 3, 1e-13);
+  auto ns = near_null_space(spring_chain(20, 1e3, 0.0), 3, 1e-13, {.ordering = Ordering::kNatural});
   ASSERT_TRUE(ns.ok());
   ASSERT_EQ(ns->modes.cols(), 1);
   EXPECT_LT(ns->ratios(0), 1e-12);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
@@ -161,6 +162,49 @@ TEST(VjmLoaded, PendulumUnderAPrescribedWrenchSatisfiesHandStatics) {
   EXPECT_LT((F - W.head<3>() + Vec3(0, 0, W[2])).norm(), 1e-9 * W.norm()) << F.transpose();
 }
 
+// Pendulum at angle phi0: base spring k about z, link l, axial spring ka along the link (ka = +inf:
+// a rigid link, no spring), pin about z at the tip (the tool point).
+Chain swung_pendulum(double k, double l, double phi0, double ka) {
+  Chain c("pendulum");
+  c.add_actuator(JointType::kRevolute, Vec3::UnitZ(), phi0, k, "base spring");
+  c.add_translation(Vec3(l, 0, 0), "link");
+  c.add_actuator(JointType::kPrismatic, Vec3::UnitX(), 0.0, ka, "axial spring");
+  c.add_passive(JointType::kRevolute, Vec3::UnitZ(), 0.0, "tip pin");
+  return c;
+}
+
+TEST(VjmLoaded, ReactionAlongARigidLinkEntersTheLoadedStiffness) {
+  // A force F along an exactly rigid link is a reaction: nothing deflects, but the pulled (pushed)
+  // link stiffens (softens) the tangential motion: K_tt = k / l^2 + F / l (the tip force's work on
+  // the swinging link). The same chain with a very stiff axial spring (ka = 1e12 N/m) is its limit.
+  // The link at phi0 = 0.4 rad makes the rigid direction non-axial.
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (const double phi0 : {0.0, 0.4}) {
+    for (const double F : {100.0, -100.0}) {
+      SCOPED_TRACE(testing::Message() << "phi0 = " << phi0 << ", F = " << F);
+      const Vec3 er(std::cos(phi0), std::sin(phi0), 0), et(-std::sin(phi0), std::cos(phi0), 0);
+      const Vec6 W = (Vec6() << F * er, 0, 0, 0).finished();
+      const double Ktt = kK / (kL * kL) + F / kL;
+      const Vec6 t = (Vec6() << et, 0, 0, 0).finished();
+      for (const double ka : {kInf, 1e12}) {
+        const std::vector<Chain> c = {swung_pendulum(kK, kL, phi0, ka)};
+        StatusOr<PlatformState> s = platform_equilibrium_under_wrench(c, W);
+        ASSERT_TRUE(s.ok()) << "ka = " << ka << ": " << s.status().message();
+        // The chain carries the whole wrench, reaction included (J^T F = K theta still holds); the
+        // stiff spring's pose is known to ~eps, i.e. its force to ~eps ka l.
+        const double tol = std::isinf(ka) ? 1e-12 : 1e-6;
+        EXPECT_LT((s->chains[0].wrench - W).norm(), tol * W.norm());
+        EXPECT_LT(std::abs(s->displacement.head<3>().dot(et)), tol * kL);  // no swing
+        StatusOr<CartesianStiffness> K = platform_loaded_stiffness(c, *s);
+        ASSERT_TRUE(K.ok()) << K.status().message();
+        EXPECT_NEAR(t.dot(K->stiffness * t), Ktt, (std::isinf(ka) ? 1e-9 : 1e-6) * Ktt) << "ka = " << ka;
+      }
+      // The unloaded value differs by far more than the tolerance (the test can fail).
+      EXPECT_GT(std::abs(Ktt - kK / (kL * kL)), 0.1 * Ktt);
+    }
+  }
+}
+
 TEST(VjmLoaded, WrenchOnAFreeDirectionIsRefused) {
   const std::vector<Chain> c = {pendulum(kK, kKa, kL)};
   const StatusOr<PlatformState> s = platform_equilibrium_under_wrench(c, (Vec6() << 0, 0, 0, 0, 0, 1.0).finished());
@@ -169,11 +213,9 @@ TEST(VjmLoaded, WrenchOnAFreeDirectionIsRefused) {
       << s.status().message();
 }
 
-TEST(VjmLoaded, SmallWrenchGivesLinearCompliance) {
-  // Three elastic legs meeting at a point: for a small wrench the displacement is C W to first order
-  // (relative error of the order of the strain, ~1e-6 here).
+// Three legs of length 0.25 m with spring Kleg at their far ends, meeting at a point.
+std::vector<Chain> three_legs(const Mat6& Kleg) {
   std::vector<Chain> legs;
-  const Mat6 Kleg = cantilever_spring(steel(), circle_section(0.01), 0.25, BeamTheory::kEulerBernoulli);
   for (int i = 0; i < 3; ++i) {
     const Vec3 dir = Vec3(std::cos(2.1 * i), std::sin(2.1 * i), 0.5).normalized();
     const Mat3 R = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), -dir).toRotationMatrix();
@@ -184,6 +226,13 @@ TEST(VjmLoaded, SmallWrenchGivesLinearCompliance) {
     c.add_spring(Kleg, "leg spring");
     legs.push_back(c);
   }
+  return legs;
+}
+
+TEST(VjmLoaded, SmallWrenchGivesLinearCompliance) {
+  // Three elastic legs meeting at a point: for a small wrench the displacement is C W to first order
+  // (relative error of the order of the strain, ~1e-6 here).
+  const std::vector<Chain> legs = three_legs(cantilever_spring(steel(), circle_section(0.01), 0.25, BeamTheory::kEulerBernoulli));
   const Vec6 W = (Vec6() << 10.0, -5.0, 8.0, 0.2, 0.1, -0.3).finished();
   StatusOr<PlatformState> s = platform_equilibrium_under_wrench(legs, W);
   ASSERT_TRUE(s.ok()) << s.status().message();
@@ -192,6 +241,29 @@ TEST(VjmLoaded, SmallWrenchGivesLinearCompliance) {
   EXPECT_LT((s->displacement - lin).norm(), 1e-4 * lin.norm());
   EXPECT_GT((s->displacement - lin).norm(), 0.0);
   EXPECT_LT((s->wrench - W).norm(), 1e-10 * W.norm());
+}
+
+TEST(VjmLoaded, VeryStiffSpringsConvergeUnderAWrench) {
+  // Springs of 1e9 in mm-N units (1e12 N/m, 1e6 N m/rad): a leg's wrench is K times a pose known to
+  // ~eps, so the wrench residual cannot go below ~eps K l ~ 1e-5 N, whatever the load; a fixed
+  // tolerance (1e-10 of the load) is out of reach. And a chain whose tool is displaced by ~1e-10 m
+  // must not count a 1e-12 m pose error (1 N here) as converged.
+  Vec6 k;
+  k << 1e12, 1e12, 1e12, 1e6, 1e6, 1e6;
+  const std::vector<Chain> legs = three_legs(k.asDiagonal());
+  for (const double scale : {100.0, 2000.0}) {
+    const Vec6 W = scale * (Vec6() << 1.0, -0.5, 0.8, 0.02, 0.01, -0.03).finished();
+    StatusOr<PlatformState> s = platform_equilibrium_under_wrench(legs, W);
+    ASSERT_TRUE(s.ok()) << s.status().message();
+    EXPECT_TRUE(s->report.converged);
+    // Displacements ~1e-10 m and rotations ~1e-5 rad: linear statics holds to ~1e-6.
+    StatusOr<CartesianStiffness> K0 = platform_unloaded_stiffness(legs);
+    const Vec6 lin = K0->compliance * W;
+    EXPECT_LT((s->displacement - lin).norm(), 1e-5 * lin.norm()) << s->displacement.transpose() << "\n" << lin.transpose();
+    Vec6 sum = Vec6::Zero();
+    for (const ChainState& c : s->chains) sum += c.wrench;
+    EXPECT_LT((sum - W).norm(), 1e-5 * W.norm()) << s->report.summary() << "\n" << sum.transpose() << "\n" << s->displacement.transpose();
+  }
 }
 
 }  // namespace

@@ -29,6 +29,9 @@ struct StiffnessIndices {
 // Computes every index of K (dense, symmetric). The eigen-decomposition is of the symmetric part.
 StiffnessIndices stiffness_indices(const MatX& K);
 
+// The indices as printed lines (reports of every method).
+std::string indices_report(const StiffnessIndices& ix);
+
 // The same indices of a 6x6 Cartesian stiffness (dofs ux uy uz rx ry rz) for posture sweeps: fixed
 // size, no heap allocation, plus the eigenvalues of the translational and rotational 3x3 blocks
 // (the stiffness in the weakest and strongest direction of translation and of rotation).

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/elements/material.hpp"
@@ -38,24 +39,25 @@ struct LinkStiffnessOptions {
   // and costs ~4 of the ~16 digits to conditioning; beyond ~1e8 the Cholesky pivot check rejects it.
   double stiff_body_ratio = 1e4;
   std::optional<Vec3> reference_point;  // default: centre of the reference nodes' bounding box
-  bool keep_fields = true;              // displacement and von Mises fields of the six load cases
+  // Displacement and von Mises fields of the six load cases (for VTK output): 6 x (3 per node + 1
+  // per element) numbers, so off unless asked for.
+  bool keep_fields = false;
   solver::SparseCholeskyOptions cholesky;
   std::function<void(const std::string& stage)> progress;  // called before each stage (large meshes)
 };
 
 struct LinkStiffness {
-  Vec3 reference_point = Vec3::Zero();    // m, link frame
-  // Rows/columns ux uy uz rx ry rz. Compliance: m/N, m/(N m), rad/N, rad/(N m); stiffness: the inverse.
-  Mat6 compliance = Mat6::Zero();
-  Mat6 stiffness = Mat6::Zero();
-  // ||S(C - C^T)S||_F / ||S C S||_F with S = diag(C)^-1/2 (unit-free: the SI entries differ by
-  // orders of magnitude); likewise for the stiffness.
+  // The 6x6 of the reference point (cartesian.point, m) along the link frame's (mesh) axes, dofs
+  // ux uy uz rx ry rz: the compliance from the six unit load cases, the stiffness its inverse.
+  CartesianStiffness cartesian;
+  // ||S(C - C^T)S||_F / ||S C S||_F with S = diag(C)^-1/2 of the compliance as solved, before it
+  // is symmetrized (unit-free: the SI entries differ by orders of magnitude); likewise for its inverse.
   double compliance_symmetry_error = 0.0;
   double stiffness_symmetry_error = 0.0;
-  // Eigenvalues (ascending) of the symmetric parts in SI units. They mix units (N/m with N m/rad),
-  // so they depend on the unit of length; use the 3x3 blocks for physical statements.
+  // Eigenvalues (ascending) of the compliance in SI units (those of the stiffness are in
+  // cartesian.indices). They mix units (m/N with rad/(N m)), so they depend on the unit of length;
+  // use the 3x3 blocks for physical statements.
   Vec6 compliance_eigenvalues = Vec6::Zero();
-  Vec6 stiffness_eigenvalues = Vec6::Zero();
   int num_nodes = 0, num_elements = 0, nodes_per_element = 0, num_dofs = 0;
   int num_clamped_nodes = 0, num_reference_nodes = 0, num_stiff_elements = 0;
   ReferenceModel reference_model = ReferenceModel::kRigidCoupling;
@@ -71,11 +73,16 @@ struct LinkStiffness {
 StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& material,
                                        const LinkStiffnessOptions& options);
 
-// Human-readable summary: model, mesh, solver, both matrices with units, symmetry, eigenvalues.
+// Human-readable summary: model, mesh, solver, then the Cartesian stiffness report (both matrices
+// with units, indices), symmetry errors and the compliance's eigenvalues.
 std::string link_stiffness_report(const LinkStiffness& r);
 
-// Sets the compliance and everything derived from it: stiffness, symmetry errors, eigenvalues.
-void set_compliance(LinkStiffness& r, const Mat6& compliance);
+// Sets the compliance of the reference point `point` (m) and everything derived from it:
+// r.cartesian (stiffness, indices), the symmetry errors and the compliance's eigenvalues.
+void set_compliance(LinkStiffness& r, const Mat6& compliance, const Vec3& point);
+
+// The axes of a link stiffness, in words (CartesianStiffness::frame).
+inline constexpr const char* kLinkFrame = "axes of the link (mesh) frame";
 
 const char* reference_model_name(ReferenceModel m);
 // ||S (A - A^T) S||_F / ||S A S||_F with S = diag(|A|)^-1/2.

@@ -21,8 +21,10 @@ StatusOr<std::vector<double>> parse_numbers(const std::string& text, size_t coun
 // lengths in the mesh file's unit, converted to m with `scale`. Messages start with `what`.
 StatusOr<Region> parse_region(const std::string& text, double scale, const std::string& what);
 
-// "steel" (E 210 GPa, nu 0.3), "aluminium" (70 GPa, 0.33) or "E=PA,nu=V". Messages start with `what`.
-StatusOr<Material> parse_material(const std::string& text, const std::string& what);
+// "steel" (E 210 GPa, nu 0.3), "aluminium" (70 GPa, 0.33) or "E=VALUE,nu=V" with E in units of
+// `modulus_unit` Pa (1e6: MPa, the command line's unit; a model file's stress unit). Messages start
+// with `what`.
+StatusOr<Material> parse_material(const std::string& text, const std::string& what, double modulus_unit = 1.0);
 
 // Default tetrahedron size (m): 1/20 of the surface's largest extent.
 double default_mesh_size(const SurfaceInfo& surface, double unit_scale);

@@ -24,6 +24,9 @@ std::uint64_t fnv1a(std::string_view data, std::uint64_t seed = 1469598103934665
 std::string link_stiffness_cache_key(std::string_view mesh_identity, const Material& material,
                                      const LinkStiffnessOptions& options);
 
+// The file of the entry `key` in `dir`: DIR/KEY.txt.
+std::string link_stiffness_cache_path(const std::string& dir, const std::string& key);
+
 // The cached compliance and reference point for `key` in `dir` (derived quantities recomputed;
 // no fields, no solver report), or nullopt when absent or unreadable.
 std::optional<LinkStiffness> load_cached_link_stiffness(const std::string& dir, const std::string& key);

@@ -1,7 +1,8 @@
 // VTK XML unstructured grids (.vtu, readable in ParaView) of a link analysed by FEA: the mesh in
 // its undeformed position (m) with, per unit load case, the node displacements (point vector
 // "displacement", m per N or per N m: use ParaView's "Warp By Vector" to see the deformed link)
-// and the element von Mises stress at the centroid (cell scalar "von_mises", Pa per N or N m).
+// and the element von Mises stress at the centroid (cell scalar "von_mises", Pa per N or N m). Each
+// file carries its units as the field data "units" and its load case as "load_case".
 #pragma once
 
 #include <string>
@@ -19,7 +20,9 @@ const char* link_load_case_name(int k);
 // One file for load case k (0..5). Needs the fields (LinkStiffnessOptions::keep_fields).
 Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const fea::LinkStiffness& result, int k);
 
-// The six files DIR/PREFIX_Fx.vtu ... PREFIX_Mz.vtu (DIR is created); their paths in `written`.
+// The six files DIR/PREFIX_Fx.vtu ... PREFIX_Mz.vtu and DIR/PREFIX.pvd, which groups them (timesteps
+// 0..5 in that order) so that ParaView's time slider steps through the load cases. DIR is created;
+// the paths are appended to `written`.
 Status write_link_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,
                             const fea::LinkStiffness& result, std::vector<std::string>* written);
 

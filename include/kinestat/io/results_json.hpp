@@ -4,6 +4,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 
 #include "kinestat/core/status.hpp"
@@ -32,5 +33,7 @@ void encode_non_finite(nlohmann::json& j);
 // Writes `j` indented by `indent` spaces (-1: compact, on one line); kInvalidInput naming the path
 // when it cannot be written.
 Status write_json(const std::string& path, const nlohmann::json& j, int indent = 2);
+// The same text to a stream (`--json -` writes to stdout).
+void write_json(std::ostream& out, const nlohmann::json& j, int indent = 2);
 
 }  // namespace kinestat::io

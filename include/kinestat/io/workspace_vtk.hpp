@@ -1,6 +1,6 @@
 // Orthoglide workspaces for ParaView (VTK XML unstructured grids, .vtu). Coordinates in m; the
 // transmission factors, condition number and manipulability are dimensionless. Each file carries
-// the field string "length_unit" = "m".
+// its units as the field data "units" ("coordinates: m", "rho: m", "mu_min: -", ...).
 #pragma once
 
 #include <string>

@@ -101,6 +101,23 @@ struct DexterousVolumes {
 };
 DexterousVolumes unit_dexterous_volumes(double mu_low, double mu_high, int n);
 
+// Section 5.2, Fig. 9a: where the global minimum factor mu_min(rho_min) over W_rho changes its
+// critical point, for W_rho = [rho_min, 1]^3 (L = 1; mu_min there is set by the low side and does not
+// depend on rho_max as long as Q+ does not compete, i.e. for rho_min below ~0.5). The paper's
+// rho_SR = 0.1093 and rho_RQ = 0.2240 (factors 0.3232, 0.4210) are where its critical-point formulas
+// switch. The true minimum is lower there (docs/orthoglide.md): near S- on a face, then on the edge
+// (rho_min, rho_min, t) at t ~ 0.45, short of R-. Along that edge it competes with the vertex
+// Q- = (rho_min, rho_min, rho_min) and stays the lower one up to rho_min = 0.2398: the true switch.
+struct MinimumSwitchPoints {
+  double rho_sr = 0.0, mu_sr = 0.0;      // S- | R- by the formulas
+  double rho_rq = 0.0, mu_rq = 0.0;      // R- | Q- by the formulas
+  double search_mu_at_rho_sr = 0.0;      // numerical search (search_joint_space) at rho_sr: the true mu_min
+  double search_mu_at_rho_rq = 0.0;      // ... at rho_rq
+  double rho_q = 0.0, mu_q = 0.0;        // the true switch to Q- and the factor there (Q-'s)
+};
+// `n`: grid of the numerical searches (search_joint_space).
+MinimumSwitchPoints unit_minimum_switch_points(int n = 41);
+
 // ---- The three design strategies, Table 3 (unit values scaled by L = c / (p_max - p_min)).
 //  1: cube vertices at Q+, Q-; rho_max raised to 1 + p(Q+) so the cube is reachable.
 //  2: joint limits at Q+, Q-; the largest cube inside W_rho, p_max = rho(Q+) - 1 (Proposition 2).
@@ -118,16 +135,33 @@ struct OrthoglideDesign {
   double joint_sum_limit = std::numeric_limits<double>::infinity();
   TransmissionRange joint_space;  // over the box W_rho, critical points (unit_joint_space_range, no software limit)
   TransmissionRange cube;         // over the cube, Proposition 1
+  // Share of the joint box [rho_min, rho_max]^3 (joint-space volume) that the software limit keeps: the
+  // cut corner is the simplex sum(rho_max - rho) < 3 rho_max - joint_sum_limit. 1 without a limit.
+  double joint_box_kept = 1.0;
 };
 // kInvalidInput when strategy is not 1, 2 or 3, mu is not in (0, 1), or c is not positive and finite.
 StatusOr<OrthoglideDesign> design_orthoglide(int strategy, double mu, double cube_size);
 
-// Numerical check of a design: search_joint_space (with its software limit) and search_cube.
+// Section 6's encoder offsets: the controller commands the cube [p_min, p_max]^3 (m) through the
+// nominal inverse kinematics, but every slider sits `offset` (m) further out than commanded (rho + offset
+// on all three joints); the factors are those of the postures actually reached (direct kinematics).
+// With +5 and +10 mm the prototype's cube goes from [0.50, 2.00] to [0.507, 2.419] and [0.515, 3.420]:
+// the paper's upper bounds 2.42 and 3.42 (docs/orthoglide.md).
+WorkspaceSearch search_cube_with_encoder_offset(const OrthoglideGeometry& g, double p_min, double p_max,
+                                                double offset, int n = 101);
+
+// Numerical check of a design: search_joint_space (with its software limit), search_cube, and the cube
+// under each of `encoder_offsets` (m).
+struct EncoderOffsetEffect {
+  double offset = 0.0;  // m, on every joint
+  WorkspaceSearch cube;
+};
 struct OrthoglideDesignCheck {
   WorkspaceSearch joint_space;
   WorkspaceSearch cube;
+  std::vector<EncoderOffsetEffect> encoder_offsets;
 };
-OrthoglideDesignCheck check_design(const OrthoglideDesign& d, int n = 101);
+OrthoglideDesignCheck check_design(const OrthoglideDesign& d, int n = 101, const std::vector<double>& encoder_offsets = {});
 
 // The joint-bounded workspace sampled on a regular n x n x n joint grid (index i + n (j + n k) for
 // rho_x, rho_y, rho_z), mapped by the working-branch direct kinematics: for VTK output.

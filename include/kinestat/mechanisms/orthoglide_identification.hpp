@@ -44,6 +44,9 @@ struct ComplianceTarget {
 
 struct OrthoglideIdentification {
   OrthoglideStiffnessModel model;         // the start model with the identified inputs
+  // Per input, in the order asked: the start and identified values, SI (the bar scale is relative to
+  // the start model's section, so it starts at 1).
+  std::vector<double> start_values, values;
   std::vector<double> relative_residual;  // per target, (model - target) / |target|
   int iterations = 0, evaluations = 0;
   std::string report;  // inputs before and after, target and model values, convergence

@@ -84,8 +84,8 @@ StatusOr<std::vector<vjm::Chain>> orthoglide_chains(const OrthoglideStiffnessMod
                                                     const Vec3& p);
 
 struct OrthoglideStiffness {
-  vjm::CartesianStiffness unloaded;
-  vjm::CartesianStiffness loaded;
+  CartesianStiffness unloaded;
+  CartesianStiffness loaded;
   vjm::PlatformState loaded_state;  // wrench, convergence report
 };
 

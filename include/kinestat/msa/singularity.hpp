@@ -1,16 +1,32 @@
-// Diagnosis of a singular structure: which nodes and dofs move freely, and how, in words.
+// What the diagnosis of a singular structure finds: which nodes and dofs move freely, and how, in
+// words. The diagnosis itself runs inside msa::solve (src/msa/singularity_diagnosis.hpp).
 #pragma once
 
-#include "msa/dof_map.hpp"
-#include "kinestat/msa/static_analysis.hpp"
+#include <string>
+#include <vector>
+
+#include "kinestat/core/types.hpp"
 
 namespace kinestat::msa {
 
-// From the failed factorization of K_r: the dofs whose pivots vanished (mapped back from CHOLMOD's
-// column to node and dof) and the free motions (near-null space of K_r with stiffness ratio below
-// `tolerance`, the pivot tolerance), described per node.
-SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map, const solver::SparseMatrix& Kr,
-                                          const solver::FactorizationReport& report, double tolerance);
+// One free motion (null-space mode) of a singular structure. A part that no support holds (the whole
+// model when it has none) contributes six rigid-body motions in the canonical basis: unit translations
+// along global x, y, z, then 1 rad rotations about x, y, z through the part's centroid; they come
+// first, the other free motions (mechanisms) after them.
+struct FreeMotion {
+  std::vector<Vec6> node_motion;  // per node (ux uy uz rx ry rz); the largest translation is 1 (or the largest
+                                  // rotation if none); rigid-body motions as above
+  double rayleigh_ratio = 0.0;    // u'Ku / u'Du: ~1e-16 for a true mechanism
+  std::string description;        // in words: which nodes move and how
+};
+
+struct SingularityDiagnosis {
+  bool singular = false;
+  struct WeakDof { int node; int dof; };  // dof in the node's support frame / global
+  std::vector<WeakDof> weak_dofs;          // where the pivot check failed
+  std::vector<FreeMotion> modes;
+  std::string message;                     // the whole diagnosis in words
+};
 
 // "node '5' translates along +y" / "rotates about (0.71, 0.71, 0)": one node's motion in words.
 std::string describe_node_motion(const Vec6& motion, double length_scale);

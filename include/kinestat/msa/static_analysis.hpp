@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/msa/singularity.hpp"
 #include "kinestat/msa/structure.hpp"
 #include "kinestat/solver/sparse_cholesky.hpp"
 
@@ -29,21 +31,6 @@ struct SolveOptions {
   int max_dofs_for_global_indices = 2000;
 };
 
-// One free motion (null-space mode) of a singular structure.
-struct FreeMotion {
-  std::vector<Vec6> node_motion;  // per node (ux uy uz rx ry rz); the largest translation is 1 (or the largest rotation if none)
-  double rayleigh_ratio = 0.0;    // u'Ku / u'Du: ~1e-16 for a true mechanism
-  std::string description;        // in words: which nodes move and how
-};
-
-struct SingularityDiagnosis {
-  bool singular = false;
-  struct WeakDof { int node; int dof; };  // dof in the node's support frame / global
-  std::vector<WeakDof> weak_dofs;          // where the pivot check failed
-  std::vector<FreeMotion> modes;
-  std::string message;                     // the whole diagnosis in words
-};
-
 struct LoadCaseResult {
   std::string name;
   std::vector<Vec6> displacement;    // per node, global: ux uy uz (m), rx ry rz (rad)
@@ -51,19 +38,10 @@ struct LoadCaseResult {
   std::vector<Vec12> beam_end_forces;  // per beam, local axes: N1 Vy1 Vz1 T1 My1 Mz1 N2 ... (force on the beam)
   std::vector<Vec6> joint_forces;    // per joint, joint frame: spring force/moment acting on node2
   Vec6 resultant = Vec6::Zero();     // sum of loads and reactions (force, moment about origin): ~0
-  double equilibrium_error = 0.0;    // |resultant| / (|loads| + |reactions|), force and moment parts
+  double equilibrium_error = 0.0;    // |resultant| / (|loads| + |reactions|), forces times the model size
   double free_dof_residual = 0.0;    // ||C'(K u - f)|| / ||C' f||
   double max_translation = 0.0;
   int max_translation_node = -1;
-};
-
-struct CartesianStiffness {
-  int node = -1;
-  Mat6 compliance = Mat6::Zero();  // m/N, m/(N m), rad/N, rad/(N m); global axes
-  Mat6 stiffness = Mat6::Zero();   // inverse of compliance when it is regular
-  bool stiffness_defined = false;
-  std::string note;                // why stiffness is undefined (a supported dof, a free motion)
-  StiffnessIndices indices;        // of `stiffness` when defined
 };
 
 struct Solution {
@@ -77,7 +55,7 @@ struct Solution {
   std::string backend;
   SingularityDiagnosis singularity;
   std::vector<LoadCaseResult> cases;
-  std::optional<CartesianStiffness> cartesian;       // of the report node
+  std::optional<CartesianStiffness> cartesian;       // of the report node (point: its position, global axes)
   std::optional<StiffnessIndices> global_indices;    // of the reduced global matrix
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;
@@ -99,17 +77,13 @@ class Workspace {
 Solution solve(const Structure& s, Workspace& ws, const SolveOptions& options = {});
 Solution solve(const Structure& s, const SolveOptions& options = {});
 
-// Compliance/stiffness of one node (static condensation onto its 6 dofs) without load cases.
+// Compliance/stiffness of one node (static condensation onto its 6 dofs) without load cases; the
+// point is the node's position, the axes global.
 StatusOr<CartesianStiffness> cartesian_stiffness(const Structure& s, Workspace& ws, int node,
                                                  const SolveOptions& options = {});
 
 // A full human-readable report (as Ceres' Summary::FullReport): model size, solver, per load case
 // max displacement and equilibrium, Cartesian stiffness with units, indices, singularity diagnosis.
 std::string full_report(const Structure& s, const Solution& sol);
-
-// The stiffness indices as printed lines (used in reports of every method).
-std::string indices_report(const StiffnessIndices& ix);
-// A 6x6 matrix (dofs x y z rx ry rz) under a title line "  TITLE [UNITS]", one labelled row per dof.
-std::string matrix6_report(const Mat6& M, const std::string& title, const char* units);
 
 }  // namespace kinestat::msa

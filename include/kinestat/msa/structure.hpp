@@ -72,10 +72,11 @@ struct PrescribedDisplacement {
   double value = 0.0;
 };
 
+// (Every member has an initializer, so that designated initializers may leave any out warning-free.)
 struct LoadCase {
-  std::string name;
-  std::vector<NodalLoad> loads;
-  std::vector<PrescribedDisplacement> prescribed;
+  std::string name{};
+  std::vector<NodalLoad> loads{};
+  std::vector<PrescribedDisplacement> prescribed{};
 };
 
 class Structure {

@@ -20,7 +20,10 @@ StatusOr<NullSpace> lowest_modes(const SparseMatrix& A, const SparseCholesky& fa
 
 // The modes with lambda below `threshold` (at least the lowest one), from the shifted, positive
 // definite A + sigma D, which exists also when A is singular. `block` >= expected nullity + 2.
-StatusOr<NullSpace> near_null_space(const SparseMatrix& A, int block, double threshold);
+// The shifted matrix is factorized with the caller's `options` (backend, ordering); its pivot
+// check is off (the shift, not the check, makes the matrix regular).
+StatusOr<NullSpace> near_null_space(const SparseMatrix& A, int block, double threshold,
+                                    const SparseCholeskyOptions& options);
 
 // D = diag(A), floored at 1e-12 max|diag| so that dofs with no stiffness at all still count.
 VecX stiffness_scaling(const SparseMatrix& A);

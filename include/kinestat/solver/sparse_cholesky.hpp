@@ -1,9 +1,9 @@
 // The one sparse Cholesky interface of kinestat (as Ceres hides CHOLMOD behind SparseCholesky).
-// Methods (MSA, FEA) see only this header: a distributed backend (PETSc, MUMPS over MPI) is a new
-// implementation of this class, not a change to the methods.
+// Methods (MSA, FEA) see only this header and make their solver objects through
+// solver/linear_solver_factory.hpp: a distributed backend (PETSc, MUMPS over MPI) is a new
+// implementation of this class and a factory entry, not a change to the methods.
 #pragma once
 
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,7 +18,13 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 enum class Ordering { kAuto, kAmd, kMetis, kNatural };
 
+// The implementations behind SparseCholesky (solver/linear_solver_factory.hpp makes them).
+enum class Backend { kCholmod };
+
+// What the caller chooses; passed unchanged to every factorization made for that caller
+// (its solves, the null-space diagnosis, a regularized solve), only the pivot check varies.
 struct SparseCholeskyOptions {
+  Backend backend = Backend::kCholmod;
   Ordering ordering = Ordering::kAuto;
   // A column whose Cholesky pivot d_j falls below this fraction of its diagonal entry A_jj has lost
   // all but -log10(ratio) of the ~16 digits of double precision to cancellation: it is (numerically)
@@ -65,8 +71,6 @@ class SparseCholesky {
 
   // Name of the backend and of the BLAS it runs on, for reports and benchmarks.
   virtual std::string backend_description() const = 0;
-
-  static std::unique_ptr<SparseCholesky> Create(const SparseCholeskyOptions& options = {});
 };
 
 }  // namespace kinestat::solver

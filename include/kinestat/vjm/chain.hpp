@@ -4,7 +4,7 @@
 // Its kinematics: tool pose (eq. 4), the Jacobians J_q, J_theta (eq. 5) and the derivatives of
 // J^T F that the loaded mode needs (the Hessians of eq. 20).
 //
-// Conventions (shared by every vjm function, and the same as msa::CartesianStiffness):
+// Conventions (shared by every vjm function, and those of kinestat::CartesianStiffness):
 // - SI units: m, rad, N, N m. Prismatic coordinates in m, revolute ones in rad.
 // - A tool displacement (twist) is (dx dy dz, rx ry rz): the translation of the tool point and a
 //   small rotation vector, both in global (base) axes. A wrench is (Fx Fy Fz, Mx My Mz): force and
@@ -70,6 +70,10 @@ class Chain {
   // x, y, z of the current frame; K is its 6x6 stiffness in that frame (dofs ux uy uz rx ry rz),
   // symmetric positive definite. Returns the first theta index.
   int add_spring(const Mat6& K, std::string label);
+  // Replaces the stiffness of springs()[index] (a spring computed after the chain was built, such
+  // as a model file's FEA link spring). Checked by validate() like every spring; kInvalidInput
+  // for an index that names no spring.
+  Status set_spring_stiffness(int index, const Mat6& K);
 
   // Passive joint with nominal coordinate q0 (from the inverse kinematics). Returns its q index.
   int add_passive(JointType type, const Vec3& axis, double nominal, std::string label);

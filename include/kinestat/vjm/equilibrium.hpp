@@ -7,12 +7,12 @@
 // platform pose uses the loaded stiffness (eq. 21) as the Jacobian dF/dt.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/vjm/chain.hpp"
+#include "kinestat/vjm/loaded_state.hpp"
 
 namespace kinestat::vjm {
 
@@ -20,29 +20,13 @@ struct EquilibriumOptions {
   int max_fixed_point_iterations = 50;  // eq. (15)
   int max_newton_iterations = 50;       // full Newton-Raphson fallback (and outer platform iteration)
   bool newton_fallback = true;
-  // Convergence: kinematic residual |t - f| (translation / length scale, rotation in rad) and the
-  // relative static residual |J^T F - K theta| / (|J^T F| + |K theta|) both below this.
+  // Convergence: the relative static residual |J^T F - K theta| / (|J^T F| + |K theta|) below this,
+  // and the kinematic residual |t - f| (translation / length scale, rotation in rad) below this times
+  // the prescribed displacement (same scaling), or at the pose's round-off floor 16 eps. Under a
+  // prescribed wrench, the relative wrench residual below 100 times this, or stalled at its round-off
+  // floor ~eps |K| (very stiff springs).
   double tolerance = 1e-12;  // the round-off floor of the static residual is ~1e-14 for stiff chains
   double rank_tolerance = 1e-10;  // as StiffnessOptions::rank_tolerance
-};
-
-struct ConvergenceReport {
-  bool converged = false;
-  std::string method;  // "eq. (15) iteration" or "Newton-Raphson (after eq. (15) stalled)"
-  int fixed_point_iterations = 0;
-  int newton_iterations = 0;
-  double kinematic_residual = 0.0;  // dimensionless, see EquilibriumOptions::tolerance
-  double static_residual = 0.0;     // relative
-  std::string summary() const;      // one line in words
-};
-
-// One chain at equilibrium.
-struct ChainState {
-  VecX q;                      // passive coordinates (m, rad)
-  VecX theta;                  // virtual spring coordinates (m, rad)
-  Vec6 wrench = Vec6::Zero();  // F: external wrench on the tool carried by this chain (N, N m about the tool point)
-  Transform pose = Transform::Identity();
-  ConvergenceReport report;
 };
 
 // Equilibrium of one chain whose tool is displaced by `displacement` (dx dy dz in m, rotation
@@ -50,18 +34,6 @@ struct ChainState {
 // from the unloaded configuration (q0, 0). kNotConverged carries the report in its message.
 StatusOr<ChainState> chain_equilibrium(const Chain& chain, const Vec6& displacement,
                                        const EquilibriumOptions& options = {}, const ChainState* start = nullptr);
-
-// Several chains sharing one platform: every chain's tool frame is the platform's reference point.
-struct PlatformState {
-  std::vector<ChainState> chains;
-  Vec6 displacement = Vec6::Zero();  // of the tool point from the nominal pose (m, rad)
-  Vec6 wrench = Vec6::Zero();        // total external wrench, sum of the chains' (N, N m)
-  ConvergenceReport report;          // of the outer iteration (wrench-prescribed) or the worst chain
-};
-
-// Checks that the chains are valid and that their nominal tool points coincide (the platform is
-// assembled); the message names the chain at fault.
-Status validate_platform(const std::vector<Chain>& chains);
 
 StatusOr<PlatformState> platform_equilibrium(const std::vector<Chain>& chains, const Vec6& displacement,
                                              const EquilibriumOptions& options = {});

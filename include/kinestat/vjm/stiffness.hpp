@@ -8,13 +8,13 @@
 // the stiffness that exists is returned and the lost directions are named. See docs/vjm.md.
 #pragma once
 
-#include <string>
 #include <vector>
 
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/vjm/chain.hpp"
-#include "kinestat/vjm/equilibrium.hpp"
+#include "kinestat/vjm/loaded_state.hpp"
 
 namespace kinestat::vjm {
 
@@ -25,19 +25,9 @@ struct StiffnessOptions {
   double rank_tolerance = 1e-10;
 };
 
-// Same dof order and units as msa::CartesianStiffness: (ux uy uz rx ry rz) of the tool point,
-// global axes; stiffness in N/m, N/rad, N m/m, N m/rad; compliance in the inverse units.
-struct CartesianStiffness {
-  Mat6 stiffness = Mat6::Zero();
-  Mat6 compliance = Mat6::Zero();      // valid when compliance_defined; zero along rigid directions
-  bool compliance_defined = false;     // no free direction (the stiffness is regular off the rigid ones)
-  std::vector<Vec6> free_directions;   // unit twists with zero stiffness (the chain/platform moves freely)
-  std::vector<Vec6> rigid_directions;  // unit twists with infinite stiffness (excluded from `stiffness`)
-  std::vector<VecX> self_motions;      // passive-joint combinations that do not move the tool
-  // kOk, or kSingular with the lost directions in words. For a single chain free directions are
-  // normal (its passive mobility) and do not make the status singular.
-  Status status;
-};
+// Results are kinestat::CartesianStiffness (core/cartesian_stiffness.hpp): the tool point, global
+// axes; `stiffness` is the finite part, the lost directions are listed, and a passive self-motion
+// (several q giving the same tool motion) is named in `note`.
 
 // Unloaded stiffness of one chain at its nominal passive coordinates, theta = 0 (eq. 9-10).
 StatusOr<CartesianStiffness> unloaded_stiffness(const Chain& chain, const StiffnessOptions& options = {});
@@ -57,9 +47,5 @@ StatusOr<CartesianStiffness> platform_unloaded_stiffness(const std::vector<Chain
                                                          const StiffnessOptions& options = {});
 StatusOr<CartesianStiffness> platform_loaded_stiffness(const std::vector<Chain>& chains, const PlatformState& state,
                                                        const StiffnessOptions& options = {});
-
-// A twist in words for diagnoses: "translation along (0.707, 0.707, 0)", "rotation about (0, 0, 1)"
-// or both parts of a screw motion.
-std::string describe_twist(const Vec6& twist);
 
 }  // namespace kinestat::vjm

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Proves the installable package: installs build/ into a temporary prefix, checks that the prefix
+# holds the headers, the layer libraries, the kinestat executable and the CMake package files, then
+# configures, builds and runs tests/install/consumer (find_package(kinestat), kinestat::kinestat)
+# against that prefix alone. Called by scripts/test.sh after ctest; run it after a build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+prefix="$work/prefix"
+
+cmake --install build --prefix "$prefix" >/dev/null
+missing=0
+for f in include/kinestat/msa/static_analysis.hpp include/kinestat/core/cartesian_stiffness.hpp \
+         include/kinestat/solver/linear_solver_factory.hpp bin/kinestat; do
+  [[ -e "$prefix/$f" ]] || { echo "check_install: $f is not installed" >&2; missing=1; }
+done
+config=$(find "$prefix" -name kinestatConfig.cmake -path '*/cmake/kinestat/*' | head -n1)
+[[ -n "$config" ]] || { echo "check_install: kinestatConfig.cmake is not installed" >&2; exit 1; }
+package=$(dirname "$config")             # PREFIX/LIBDIR/cmake/kinestat
+libdir=$(dirname "$(dirname "$package")")
+for f in kinestatConfigVersion.cmake kinestatTargets.cmake; do
+  [[ -e "$package/$f" ]] || { echo "check_install: $f is not installed" >&2; missing=1; }
+done
+for layer in core elements solver msa vjm fea mechanisms io cli; do
+  [[ -e "$libdir/libkinestat_$layer.a" ]] || { echo "check_install: libkinestat_$layer.a is not installed" >&2; missing=1; }
+done
+# The package refers to nothing in the source or build tree.
+if grep -rl "$root" "$package" >/dev/null; then
+  echo "check_install: the installed CMake files name the source tree ($root):" >&2
+  grep -rl "$root" "$package" >&2
+  missing=1
+fi
+# Internal headers stay private.
+if [[ -e "$prefix/include/kinestat/msa/dof_map.hpp" || -d "$prefix/include/msa" ]]; then
+  echo "check_install: an internal header was installed" >&2; missing=1
+fi
+[[ $missing == 0 ]] || exit 1
+
+"$prefix/bin/kinestat" --help >/dev/null
+cmake -S "$root/tests/install/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/consumer" -j"$(nproc 2>/dev/null || echo 2)" >/dev/null
+"$work/consumer/cantilever"
+echo "check_install: the installed package builds and runs an outside project"

@@ -1,0 +1,44 @@
+#include "cli/command_output.hpp"
+
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+
+#include "kinestat/io/results_json.hpp"
+
+namespace kinestat::cli {
+
+void add_output_options(CLI::App& cmd, OutputOptions& o, const std::string& schema) {
+  cmd.add_option("--json", o.json,
+                 "write the results as JSON, SI units (schema: docs/results-json.md, " + schema +
+                     ") to FILE, or to stdout with '-' (the report then goes to stderr)");
+  cmd.add_flag("--quiet", o.quiet, "print no report and no progress (errors still go to stderr)");
+}
+
+Output::Output(Context& ctx, const OutputOptions& o) : ctx_(ctx), options_(o) {}
+
+std::ostream& Output::report() {
+  if (options_.quiet) return discard_;
+  return options_.json == "-" ? ctx_.err : ctx_.out;
+}
+
+std::ostream& Output::progress() { return options_.quiet ? discard_ : ctx_.err; }
+
+int Output::finish(const std::string& command, const Status& result) {
+  if (!result.ok() && options_.quiet) return report_failure(ctx_, command, result);
+  return exit_code_for(result);
+}
+
+Status Output::write_json(const nlohmann::json& j) {
+  if (options_.json.empty()) return Status::Ok();
+  if (options_.json == "-") {
+    io::write_json(ctx_.out, j);
+    return Status::Ok();
+  }
+  std::error_code ec;  // the folder may not exist yet; write_json names what still fails
+  if (const auto parent = std::filesystem::path(options_.json).parent_path(); !parent.empty())
+    std::filesystem::create_directories(parent, ec);
+  return io::write_json(options_.json, j);
+}
+
+}  // namespace kinestat::cli

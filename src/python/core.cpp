@@ -1,0 +1,92 @@
+// kinestat core: status codes, frames and rigid transfer, stiffness indices (core/*.hpp).
+#include "kinestat/core/frame.hpp"
+#include "kinestat/core/stiffness_indices.hpp"
+#include "python/bindings.hpp"
+
+namespace kinestat::python {
+
+void bind_core(py::module_& m) {
+  m.attr("DOFS_PER_NODE") = kDofsPerNode;
+  m.def("dof_name", &dof_name, py::arg("dof"), "Name of a nodal dof 0..5: 'ux', 'uy', 'uz', 'rx', 'ry', 'rz'.");
+
+  py::enum_<StatusCode>(m, "StatusCode", "What a failed computation reports (the exceptions' .code).")
+      .value("OK", StatusCode::kOk)
+      .value("INVALID_INPUT", StatusCode::kInvalidInput)
+      .value("SINGULAR", StatusCode::kSingular)
+      .value("NOT_CONVERGED", StatusCode::kNotConverged)
+      .value("INTERNAL", StatusCode::kInternal);
+
+  py::class_<Status>(m, "Status", "A status code and its message (kinestat::Status).")
+      .def_property_readonly("ok", &Status::ok)
+      .def_property_readonly("code", &Status::code)
+      .def_property_readonly("message", &Status::message)
+      .def("__repr__", [](const Status& s) { return "Status(" + std::string(s.ok() ? "OK" : s.message()) + ")"; });
+
+  // frame.hpp
+  m.def("skew", &skew, py::arg("v"), "Skew-symmetric 3x3 matrix [v]x with [v]x w = v x w.");
+  m.def(
+      "element_axes",
+      [](const Vec3& p1, const Vec3& p2, const Vec3& orientation) -> std::optional<Mat3> {
+        Mat3 axes;
+        if (!element_axes(p1, p2, orientation, axes)) return std::nullopt;
+        return axes;
+      },
+      py::arg("p1"), py::arg("p2"), py::arg("orientation"),
+      "Local axes (columns x, y, z in global coordinates) of a line element from p1 to p2 whose local x-y plane "
+      "contains `orientation`; None for a zero length or an orientation parallel to the element.");
+  m.def("default_orientation", &default_orientation, py::arg("direction"),
+        "Default orientation vector of an element along `direction`: global z, or global y when nearly parallel to z.");
+  m.def("rotation6", &rotation6, py::arg("R"), "6x6 block-diagonal diag(R, R) acting on (translation, rotation).");
+  m.def("rigid_transfer", &rigid_transfer, py::arg("offset"),
+        "A = [I, -[offset]x; 0, I]: the motion of a point at `offset` (m) from a reference point moving by (u, theta).");
+  m.def("direction_words", &direction_words, py::arg("v"), "A direction in words: '+y' or '(0.707, 0.707, 0.000)'.");
+  m.def("axis_angle", &axis_angle, py::arg("axis"), py::arg("angle"), "Rotation matrix about a unit axis by an angle (rad).");
+
+  // stiffness_indices.hpp (Goncalves et al. 2010, eq. 7-13)
+  py::class_<StiffnessIndices>(m, "StiffnessIndices",
+                               "Stiffness indices of a symmetric matrix (Goncalves et al. 2010, eq. 7-13), in the "
+                               "matrix's units. eigenvalues ascending, eigenvectors as columns.")
+      .def(py::init<>())
+      .def_readonly("size", &StiffnessIndices::size)
+      .def_readonly("det_sign", &StiffnessIndices::det_sign)
+      .def_readonly("log10_abs_det", &StiffnessIndices::log10_abs_det)
+      .def_readonly("determinant", &StiffnessIndices::determinant, "eq. (7); +-inf on overflow (use log10_abs_det)")
+      .def_readonly("trace", &StiffnessIndices::trace, "eq. (8)")
+      .def_readonly("norm_1", &StiffnessIndices::norm_1, "eq. (9): max column sum of |k_ij|")
+      .def_readonly("norm_2", &StiffnessIndices::norm_2, "eq. (10): spectral norm")
+      .def_readonly("norm_frobenius", &StiffnessIndices::norm_frobenius, "eq. (11)")
+      .def_readonly("norm_inf", &StiffnessIndices::norm_inf, "max row sum of |k_ij|")
+      .def_readonly("max_abs_entry", &StiffnessIndices::max_abs_entry, "eq. (12)")
+      .def_readonly("condition_number", &StiffnessIndices::condition_number, "eq. (13), 2-norm; inf if singular")
+      .def_readonly("eigenvalues", &StiffnessIndices::eigenvalues)
+      .def_readonly("eigenvectors", &StiffnessIndices::eigenvectors)
+      .def_readonly("symmetry_error", &StiffnessIndices::symmetry_error, "||K - K^T||_F / ||K||_F");
+  m.def(
+      "stiffness_indices",
+      [](const MatX& K) {
+        if (K.rows() != K.cols()) raise_status(Status::Invalid("stiffness_indices: K must be a square matrix"));
+        return stiffness_indices(K);
+      },
+      py::arg("K"), "Every index of a dense symmetric matrix K.");
+
+  py::class_<CartesianIndices>(m, "CartesianIndices",
+                               "Indices of a 6x6 Cartesian stiffness (ux uy uz rx ry rz; N/m, N, N m/rad), with the "
+                               "eigenvalues of the translational (N/m) and rotational (N m/rad) 3x3 blocks.")
+      .def(py::init<>())
+      .def_readonly("det_sign", &CartesianIndices::det_sign)
+      .def_readonly("log10_abs_det", &CartesianIndices::log10_abs_det)
+      .def_readonly("trace", &CartesianIndices::trace)
+      .def_readonly("norm_1", &CartesianIndices::norm_1)
+      .def_readonly("norm_2", &CartesianIndices::norm_2)
+      .def_readonly("norm_frobenius", &CartesianIndices::norm_frobenius)
+      .def_readonly("norm_inf", &CartesianIndices::norm_inf)
+      .def_readonly("max_abs_entry", &CartesianIndices::max_abs_entry)
+      .def_readonly("condition_number", &CartesianIndices::condition_number)
+      .def_readonly("eigenvalues", &CartesianIndices::eigenvalues, "of the 6x6, ascending (mixed units)")
+      .def_readonly("translational_eigenvalues", &CartesianIndices::translational_eigenvalues, "of K[:3, :3], N/m")
+      .def_readonly("rotational_eigenvalues", &CartesianIndices::rotational_eigenvalues, "of K[3:, 3:], N m/rad")
+      .def_readonly("symmetry_error", &CartesianIndices::symmetry_error);
+  m.def("cartesian_indices", &cartesian_indices, py::arg("K"), "Indices of a 6x6 Cartesian stiffness.");
+}
+
+}  // namespace kinestat::python
