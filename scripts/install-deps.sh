@@ -22,6 +22,8 @@ PACKAGES=(
   python3-numpy            # its arrays
   python3-pytest           # its tests (tests/python)
   python3-matplotlib       # the Python examples' pictures (examples/python)
+  libplplot-dev            # PNG maps (kinestat map/design --png) ...
+  plplot-driver-cairo      # ... through PLplot's pngcairo device
 )
 
 missing=()

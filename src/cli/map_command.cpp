@@ -2,8 +2,6 @@
 // kinestat map MODEL.yaml --box x0:x1,y0:y1,z0:z1 --step MM [--load D | --wrench W]
 // A workspace stiffness map (mechanisms/workspace_map.hpp; docs/maps.md): every point of a grid,
 // written as VTI (ParaView), JSON and PNG, with a short summary on stdout.
-#include <charconv>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -16,6 +14,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/io/map_json.hpp"
 #include "kinestat/io/map_png.hpp"
@@ -70,36 +69,6 @@ Display display(MapField f) {
   }
 }
 
-std::optional<double> parse_number(const std::string& s) {
-  double v = 0.0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
-// "lo:hi" or "value" per axis (mm) -> ranges (m); `count` axes.
-StatusOr<std::vector<MapRange>> parse_ranges(const std::vector<std::string>& parts, std::size_t count,
-                                             const char* option, const char* form) {
-  if (parts.size() != count)
-    return Status::Invalid(fmt::format("{} takes {} ranges, {} (mm); got {}", option, count, form, parts.size()));
-  std::vector<MapRange> ranges;
-  for (std::size_t a = 0; a < count; ++a) {
-    const std::string& p = parts[a];
-    const std::size_t colon = p.find(':', 1);  // not the sign of a leading negative bound
-    const auto lo = parse_number(p.substr(0, colon));
-    const auto hi = colon == std::string::npos ? lo : parse_number(p.substr(colon + 1));
-    const char axis = "xyz"[a];
-    if (!lo || !hi)
-      return Status::Invalid(fmt::format("{}: '{}' is not a range of {} in mm; write lo:hi or a single value (form {})",
-                                         option, p, axis, form));
-    if (*lo > *hi)
-      return Status::Invalid(
-          fmt::format("{}: the {} range {} is reversed; write the smaller bound first", option, axis, p));
-    ranges.push_back({*lo * kMm, *hi * kMm});
-  }
-  return ranges;
-}
-
 StatusOr<Vec6> six_numbers(const std::vector<double>& v, const char* option, const char* form) {
   if (v.size() != 6) return Status::Invalid(fmt::format("{} takes 6 numbers: {}", option, form));
   return Vec6(v.data());
@@ -133,15 +102,7 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
         !s.ok())
       return s;
   FiveBarKernelOptions o;
-  const auto mode = working_mode_from_name(a.mode);
-  if (!mode) return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or --", a.mode));
-  o.mode = *mode;
-  const auto assembly = assembly_from_name(a.assembly);
-  if (!assembly) return Status::Invalid(fmt::format("--assembly '{}' must be up or down", a.assembly));
-  o.assembly = *assembly;
-  if (a.method != "msa" && a.method != "vjm")
-    return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", a.method));
-  o.method = a.method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
+  if (Status st = parse_five_bar_modes(a.mode, a.assembly, a.method, o); !st.ok()) return st;
   MapSetup s;
   if (!a.load.empty()) {
     auto w = six_numbers(a.load, "--load", "Fx,Fy,Fz (N), Mx,My,Mz (N mm) at P");
@@ -155,7 +116,7 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
                                  box->min.x() / kMm, box->max.x() / kMm, box->min.y() / kMm, box->max.y() / kMm);
   s.range_option = "--region";
   if (!a.region.empty()) {
-    auto r = parse_ranges(a.region, 2, "--region", "x0:x1,y0:y1");
+    auto r = parse_ranges_mm(a.region, 2, "--region", "x0:x1,y0:y1");
     if (!r.ok()) return r.status();
     s.ranges = {(*r)[0], (*r)[1], MapRange{}};
   } else {
@@ -181,7 +142,7 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   if (!a.step) return Status::Invalid("--step MM is required with a model file");
   MapSetup s;
   s.range_option = "--box";
-  auto r = parse_ranges(a.box, 3, "--box", "x0:x1,y0:y1,z0:z1");
+  auto r = parse_ranges_mm(a.box, 3, "--box", "x0:x1,y0:y1,z0:z1");
   if (!r.ok()) return r.status();
   s.ranges = {(*r)[0], (*r)[1], (*r)[2]};
   OrthoglideKernelOptions o;
@@ -212,31 +173,6 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   s.kernel = make_reference_orthoglide_kernel(o);
   return s;
 }
-
-// Percentage and rate on stderr, once the run has taken a second (shorter runs stay silent).
-class Progress {
- public:
-  explicit Progress(std::ostream& err) : err_(err) {}
-  void operator()(std::size_t done, std::size_t total) {
-    const double t = std::chrono::duration<double>(Clock::now() - start_).count();
-    if (t < 1.0 || (done < total && t - last_ < 0.5)) return;
-    last_ = t;
-    shown_ = true;
-    err_ << fmt::format("\rkinestat map: {:3.0f}% ({} of {} points, {:.3g} points/s)", 100.0 * done / total, done,
-                        total, done / t)
-         << std::flush;
-  }
-  ~Progress() {
-    if (shown_) err_ << "\n";
-  }
-
- private:
-  using Clock = std::chrono::steady_clock;
-  std::ostream& err_;
-  Clock::time_point start_ = Clock::now();
-  double last_ = 0.0;
-  bool shown_ = false;
-};
 
 // "x -100:100 mm, y 0:50 mm, z = 0 mm"
 std::string ranges_text(const std::array<MapRange, 3>& ranges) {
@@ -380,7 +316,7 @@ int run_map(MapArgs& a, Context& ctx) {
   options.threads = a.threads;
   StatusOr<WorkspaceMap> map = Status::Ok();
   {
-    Progress progress(ctx.err);
+    Progress progress(ctx.err, "kinestat map", "points");
     if (!a.quiet) options.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
     map = compute_workspace_map(*setup->kernel, *grid, options);
   }

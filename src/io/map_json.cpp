@@ -15,18 +15,22 @@ json vec3(const Vec3& v) { return json::array({number(v.x()), number(v.y()), num
 
 }  // namespace
 
+json map_grid_to_json(const MapGrid& g) {
+  return {{"origin", vec3(g.origin)},
+          {"spacing", vec3(g.spacing)},
+          {"dimensions", g.dimensions},
+          {"num_points", g.num_points()},
+          {"units", "m"},
+          {"order", "x fastest: point i + nx (j + ny k) is origin + (i dx, j dy, k dz)"}};
+}
+
 json workspace_map_to_json(const WorkspaceMap& map) {
   const MapGrid& g = map.grid;
   json j;
   j["schema"] = "kinestat-workspace-map";
   j["version"] = kMapSchemaVersion;
   j["description"] = map.description;
-  j["grid"] = {{"origin", vec3(g.origin)},
-               {"spacing", vec3(g.spacing)},
-               {"dimensions", g.dimensions},
-               {"num_points", g.num_points()},
-               {"units", "m"},
-               {"order", "x fastest: point i + nx (j + ny k) is origin + (i dx, j dy, k dz)"}};
+  j["grid"] = map_grid_to_json(g);
 
   json fields = json::object(), units = json::object(), field_summary = json::object();
   for (const FieldValues& f : map.fields) {

@@ -40,26 +40,47 @@ FiveBarPosture make_posture(const FiveBarParams& p, double theta1, double theta2
 
 std::string point_text(const Vec2& point) { return fmt::format("P = ({:g}, {:g}) m", point.x(), point.y()); }
 
-// Input angle of leg `leg` putting the platform at `point`, for the sign of eq. (18).
-StatusOr<double> leg_angle(const FiveBarParams& p, const Vec2& point, int leg, int sign) {
+// Input angle of leg `leg` putting the platform at `point`, for the sign of eq. (18), without a
+// message: `failure` says why there is none (posture sweeps call this at every grid point).
+enum class LegFailure { kNone, kOutOfReach, kAtBaseJoint };
+struct LegAngle {
+  double theta = 0.0;
+  LegFailure failure = LegFailure::kNone;
+  double distance = 0.0;  // |A_iP| (m)
+};
+
+LegAngle leg_angle_value(const FiveBarParams& p, const Vec2& point, int leg, int sign) {
   const Vec2 v = point - base_joint(p, leg);
-  const double d = v.norm();
+  LegAngle out;
+  const double d = out.distance = v.norm();
   const double reach_max = p.r1 + p.r2, reach_min = std::abs(p.r1 - p.r2);
   const double tol = kLengthTol * reach_max;
   if (d > reach_max + tol || d < reach_min - tol) {
+    out.failure = LegFailure::kOutOfReach;
+  } else if (d <= tol) {
+    out.failure = LegFailure::kAtBaseJoint;
+  } else {
+    // Law of cosines in triangle A_iB_iP; equal to the roots of eq. (17)-(18).
+    const double cos_alpha = std::clamp((p.r1 * p.r1 + d * d - p.r2 * p.r2) / (2.0 * p.r1 * d), -1.0, 1.0);
+    const double theta = std::atan2(v.y(), v.x()) + sign * std::acos(cos_alpha);
+    out.theta = std::remainder(theta, 2.0 * std::numbers::pi);
+  }
+  return out;
+}
+
+StatusOr<double> leg_angle(const FiveBarParams& p, const Vec2& point, int leg, int sign) {
+  const LegAngle a = leg_angle_value(p, point, leg, sign);
+  if (a.failure == LegFailure::kOutOfReach) {
     return Status::Invalid(fmt::format(
         "five-bar inverse kinematics: {} is out of reach of leg {} (|A{}P| = {:g} m, reachable {:g} to {:g} m)",
-        point_text(point), leg, leg, d, reach_min, reach_max));
+        point_text(point), leg, leg, a.distance, std::abs(p.r1 - p.r2), p.r1 + p.r2));
   }
-  if (d <= tol) {
+  if (a.failure == LegFailure::kAtBaseJoint) {
     return Status::Invalid(fmt::format(
         "five-bar inverse kinematics: {} coincides with base joint A{} (r1 = r2): theta{} is undetermined",
         point_text(point), leg, leg));
   }
-  // Law of cosines in triangle A_iB_iP; equal to the roots of eq. (17)-(18).
-  const double cos_alpha = std::clamp((p.r1 * p.r1 + d * d - p.r2 * p.r2) / (2.0 * p.r1 * d), -1.0, 1.0);
-  const double theta = std::atan2(v.y(), v.x()) + sign * std::acos(cos_alpha);
-  return std::remainder(theta, 2.0 * std::numbers::pi);
+  return a.theta;
 }
 
 }  // namespace
@@ -92,17 +113,25 @@ Status validate(const FiveBarParams& p) {
   return Status::Ok();
 }
 
-StatusOr<FiveBarPosture> inverse_kinematics(const FiveBarParams& p, const Vec2& point, WorkingMode mode) {
-  if (Status s = validate(p); !s.ok()) return s;
-  if (!point.allFinite()) return Status::Invalid("five-bar inverse kinematics: the point has a non-finite coordinate");
-  const StatusOr<double> t1 = leg_angle(p, point, 1, mode.sign1);
-  if (!t1.ok()) return t1.status();
-  const StatusOr<double> t2 = leg_angle(p, point, 2, mode.sign2);
-  if (!t2.ok()) return t2.status();
-  FiveBarPosture q = make_posture(p, *t1, *t2, point);
+std::optional<FiveBarPosture> try_inverse_kinematics(const FiveBarParams& p, const Vec2& point, WorkingMode mode) {
+  if (!point.allFinite()) return std::nullopt;
+  const LegAngle t1 = leg_angle_value(p, point, 1, mode.sign1);
+  const LegAngle t2 = leg_angle_value(p, point, 2, mode.sign2);
+  if (t1.failure != LegFailure::kNone || t2.failure != LegFailure::kNone) return std::nullopt;
+  FiveBarPosture q = make_posture(p, t1.theta, t2.theta, point);
   // At a serial singularity both roots coincide; keep the requested label.
   q.working_mode = mode;
   return q;
+}
+
+StatusOr<FiveBarPosture> inverse_kinematics(const FiveBarParams& p, const Vec2& point, WorkingMode mode) {
+  if (Status s = validate(p); !s.ok()) return s;
+  if (!point.allFinite()) return Status::Invalid("five-bar inverse kinematics: the point has a non-finite coordinate");
+  if (std::optional<FiveBarPosture> q = try_inverse_kinematics(p, point, mode)) return *q;
+  // No posture: the first leg that fails says why.
+  for (int leg : {1, 2})
+    if (StatusOr<double> t = leg_angle(p, point, leg, leg == 1 ? mode.sign1 : mode.sign2); !t.ok()) return t.status();
+  return Status::Internal("five-bar inverse kinematics: no posture and no failing leg");
 }
 
 StatusOr<std::array<FiveBarPosture, 4>> inverse_kinematics(const FiveBarParams& p, const Vec2& point) {

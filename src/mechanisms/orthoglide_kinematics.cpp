@@ -17,15 +17,26 @@ std::string format_point(const Vec3& v) { return fmt::format("({:.6g}, {:.6g}, {
 
 // A bar orthogonal to its slider (p_i = rho_i) is a serial singularity; compare with the size of the
 // posture so that the test does not depend on the unit of length.
-Status check_serial_regular(const Vec3& p, const Vec3& rho) {
+int serial_singular_chain(const Vec3& p, const Vec3& rho) {
   const double scale = std::max(p.cwiseAbs().maxCoeff(), rho.cwiseAbs().maxCoeff());
   for (int i = 0; i < 3; ++i)
-    if (!(std::abs(p[i] - rho[i]) > 1e-12 * scale))
-      return Status::Singular(fmt::format(
-          "Orthoglide posture p = {}, rho = {}: chain {} is at a serial singularity (p_{} = rho_{}, the bar "
-          "is orthogonal to its slider); J^-1 is unbounded there",
-          format_point(p), format_point(rho), kAxis[i], kAxis[i], kAxis[i]));
+    if (!(std::abs(p[i] - rho[i]) > 1e-12 * scale)) return i;
+  return -1;
+}
+
+Status check_serial_regular(const Vec3& p, const Vec3& rho) {
+  if (const int i = serial_singular_chain(p, rho); i >= 0)
+    return Status::Singular(fmt::format(
+        "Orthoglide posture p = {}, rho = {}: chain {} is at a serial singularity (p_{} = rho_{}, the bar "
+        "is orthogonal to its slider); J^-1 is unbounded there",
+        format_point(p), format_point(rho), kAxis[i], kAxis[i], kAxis[i]));
   return Status::Ok();
+}
+
+// Eq. (3) for chain i: L^2 - p_j^2 - p_k^2, negative when p is outside the chain's cylinder.
+double radicand(const OrthoglideGeometry& g, const Vec3& p, int i) {
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  return g.link_length * g.link_length - p[j] * p[j] - p[k] * p[k];
 }
 
 }  // namespace
@@ -43,7 +54,7 @@ StatusOr<Vec3> inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p, co
     if (s[i] != 1 && s[i] != -1)
       return Status::Invalid(fmt::format("Orthoglide configuration index s_{} = {}: must be +1 or -1", kAxis[i], s[i]));
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const double r2 = g.link_length * g.link_length - p[j] * p[j] - p[k] * p[k];
+    const double r2 = radicand(g, p, i);
     if (r2 < 0.0)
       return Status::Invalid(fmt::format(
           "Orthoglide point p = {} is out of reach of chain {}: p_{}^2 + p_{}^2 exceeds L^2 = ({} m)^2", format_point(p),
@@ -52,6 +63,18 @@ StatusOr<Vec3> inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p, co
   }
   return rho;
 }
+
+std::optional<Vec3> try_inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p) {
+  Vec3 rho;
+  for (int i = 0; i < 3; ++i) {
+    const double r2 = radicand(g, p, i);
+    if (!(r2 >= 0.0)) return std::nullopt;
+    rho[i] = p[i] + std::sqrt(r2);  // eq. (3), s_i = +1
+  }
+  return rho;
+}
+
+bool serial_singular(const Vec3& p, const Vec3& rho) { return serial_singular_chain(p, rho) >= 0; }
 
 int direct_kinematics_branch(const Vec3& p, const Vec3& rho) {
   const double v = p.cwiseQuotient(rho).sum() - 1.0;

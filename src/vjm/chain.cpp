@@ -206,26 +206,12 @@ ChainJacobians jacobians(const Chain& chain, const VecX& q, const VecX& theta) {
 ChainHessians hessians(const Chain& chain, const VecX& q, const VecX& theta, const Vec6& F) {
   std::vector<FactorTwist> tw;
   const Transform pose = walk(chain, q, theta, &tw);
-  const Vec3 p = pose.translation(), f = F.head<3>(), m = F.tail<3>();
   const int n = chain.num_passive();
   // Coordinates ordered (q, theta) in one matrix, split at the end.
   MatX H = MatX::Zero(n + chain.num_virtual(), n + chain.num_virtual());
   auto slot = [n](const VariableRef& v) { return v.kind == VariableKind::kPassive ? v.index : n + v.index; };
-  for (size_t b = 0; b < tw.size(); ++b) {
-    for (size_t a = 0; a < tw.size(); ++a) {
-      // d(column b)/d(coordinate of a): a factor before b moves b's screw axis by the Lie bracket
-      // [xi_a, xi_b] = (w_a x v_b - w_b x v_a, w_a x w_b); every factor moves the tool point by
-      // its point velocity v_a + w_a x p, which changes column b's lever arm.
-      Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
-      if (a < b) {
-        dv = tw[a].w.cross(tw[b].v) - tw[b].w.cross(tw[a].v);
-        dw = tw[a].w.cross(tw[b].w);
-      }
-      const Vec3 dp = tw[a].v + tw[a].w.cross(p);
-      const Vec3 dcol_p = dv + dw.cross(p) + tw[b].w.cross(dp);
-      H(slot(tw[b].var), slot(tw[a].var)) += f.dot(dcol_p) + m.dot(dw);
-    }
-  }
+  for_each_hessian_term(tw.data(), static_cast<int>(tw.size()), pose.translation(), F,
+                        [&](int b, int a, double value) { H(slot(tw[b].var), slot(tw[a].var)) += value; });
   ChainHessians out;
   const int mv = chain.num_virtual();
   out.Hqq = H.topLeftCorner(n, n);

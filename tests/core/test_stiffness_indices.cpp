@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <utility>
+#include <vector>
 
 #include "kinestat/core/frame.hpp"
 #include "kinestat/core/stiffness_indices.hpp"
@@ -51,6 +54,51 @@ TEST(StiffnessIndices, HugeDeterminantKeptInLog) {
   EXPECT_NEAR(ix.log10_abs_det, 440.0, 1e-9);
   EXPECT_TRUE(std::isinf(ix.determinant));
   EXPECT_EQ(ix.det_sign, 1);
+}
+
+// cartesian_indices equals stiffness_indices on the common fields, and its block eigenvalues are
+// those of the 3x3 blocks: on stiffness-like matrices (mixed units, 1e7 N/m next to 1e2 N m/rad),
+// indefinite and slightly unsymmetric ones, and a singular one.
+TEST(CartesianIndices, EqualsStiffnessIndicesOnTheCommonFields) {
+  std::srand(3);
+  std::vector<Mat6> cases;
+  for (int k = 0; k < 20; ++k) {
+    const Mat6 A = Mat6::Random();
+    Vec6 scale;
+    scale << Vec3::Constant(std::pow(10.0, 3 + k % 5)), Vec3::Constant(std::pow(10.0, k % 3));
+    Mat6 K = scale.cwiseSqrt().asDiagonal() * (A * A.transpose() + 0.1 * Mat6::Identity()) *
+             scale.cwiseSqrt().asDiagonal();
+    if (k % 4 == 1) K -= 2.0 * K.trace() / 6 * Vec6::Unit(k % 6) * Vec6::Unit(k % 6).transpose();  // indefinite
+    if (k % 4 == 2) K(0, 5) *= 1.001;                                                           // unsymmetric
+    cases.push_back(K);
+  }
+  Mat6 singular = Mat6::Zero();
+  singular.diagonal() << 1e6, 2e6, 0.0, 10.0, 20.0, 30.0;
+  cases.push_back(singular);
+  const auto rel = [](double a, double b) { return a == b ? 0.0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); };
+  for (const Mat6& K : cases) {
+    const CartesianIndices c = cartesian_indices(K);
+    const StiffnessIndices s = stiffness_indices(MatX(K));
+    for (const auto& [a, b] : {std::pair{c.trace, s.trace}, {c.norm_1, s.norm_1}, {c.norm_2, s.norm_2},
+                               {c.norm_frobenius, s.norm_frobenius}, {c.norm_inf, s.norm_inf},
+                               {c.max_abs_entry, s.max_abs_entry}, {c.symmetry_error, s.symmetry_error}})
+      EXPECT_LE(rel(a, b), 1e-13) << K;
+    EXPECT_EQ(c.det_sign, s.det_sign);
+    if (s.det_sign != 0) {
+      EXPECT_NEAR(c.log10_abs_det, s.log10_abs_det, 1e-13);
+    }
+    if (std::isfinite(s.condition_number)) {
+      EXPECT_LE(rel(c.condition_number, s.condition_number), 1e-10) << K;
+    }
+    for (int i = 0; i < 6; ++i) EXPECT_NEAR(c.eigenvalues(i), s.eigenvalues(i), 1e-13 * s.norm_2);
+    const Mat6 Ks = 0.5 * (K + K.transpose());
+    const VecX t = stiffness_indices(MatX(Ks.topLeftCorner<3, 3>())).eigenvalues;
+    const VecX r = stiffness_indices(MatX(Ks.bottomRightCorner<3, 3>())).eigenvalues;
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(c.translational_eigenvalues(i), t(i), 1e-13 * t.cwiseAbs().maxCoeff());
+      EXPECT_NEAR(c.rotational_eigenvalues(i), r(i), 1e-13 * r.cwiseAbs().maxCoeff());
+    }
+  }
 }
 
 TEST(Frame, ElementAxesAreRightHandedAndContainOrientation) {

@@ -18,4 +18,7 @@ inline constexpr int kMapSchemaVersion = 1;
 
 nlohmann::json workspace_map_to_json(const mechanisms::WorkspaceMap& map);
 
+// The "grid" object: origin, spacing (m), dimensions, num_points, units, order.
+nlohmann::json map_grid_to_json(const mechanisms::MapGrid& grid);
+
 }  // namespace kinestat::io

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,16 +25,19 @@ struct PlotField2D {
 struct PlotCurve {
   std::vector<std::array<double, 2>> points;
   std::string label;  // legend entry ("workspace boundary", "parallel singularity")
-  int style = 0;      // 0: solid black, 1: dashed red, 2: dotted white (distinct on any colour map)
+  int style = 0;      // 0: solid black, 1: dashed red, 2: short-dashed magenta (none is in viridis)
 };
 
 struct PlotOptions {
-  std::string title;           // robot and mode, e.g. "five-bar ++ up: min translational stiffness"
+  std::string title;           // robot and mode, e.g. "five-bar ++ up: min translational stiffness"; '\n' breaks lines
   std::string x_label = "x (mm)";
   std::string y_label = "y (mm)";
   std::string colorbar_label;  // quantity and unit, e.g. "k_t,min (N/mm)"
   int width = 1000, height = 800;  // pixels of the whole image
   bool log_scale = false;      // colour scale in log10 (positive fields)
+  // Fixed ends of the colour scale (plot units; values beyond take the end colours); default: the
+  // range of the values.
+  std::optional<std::array<double, 2>> colour_range;
   std::vector<PlotCurve> curves;
 };
 

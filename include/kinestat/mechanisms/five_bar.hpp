@@ -76,6 +76,9 @@ Status validate(const FiveBarParams& p);
 // (P = A_i with r1 = r2).
 StatusOr<std::array<FiveBarPosture, 4>> inverse_kinematics(const FiveBarParams& p, const Vec2& point);
 StatusOr<FiveBarPosture> inverse_kinematics(const FiveBarParams& p, const Vec2& point, WorkingMode mode);
+// The same posture without a message (nullopt where inverse_kinematics fails) and without heap
+// allocation, for posture sweeps; `p` must be valid (validate).
+std::optional<FiveBarPosture> try_inverse_kinematics(const FiveBarParams& p, const Vec2& point, WorkingMode mode);
 
 // Eq. (20)-(27): the platform point for input angles (rad), both assembly modes ([0] up, [1] down).
 // Solved as the intersection of the circles of radius r2 about B1 and B2, which has no division by

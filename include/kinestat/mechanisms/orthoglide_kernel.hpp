@@ -25,6 +25,19 @@ struct OrthoglideKernelOptions {
 // Points outside the working-mode inverse kinematics are kUnreachable; a point where the stiffness
 // is not defined is kSingular; a loaded equilibrium that does not exist is kFailed.
 
+// The sweep kernel, the same model as the reference below with no heap allocation per posture.
+//  Unloaded: the chains of orthoglide_chains written out with fixed-size matrices (the springs'
+//    compliances computed once, the parallelogram's spring from its two bars per posture), each
+//    chain's stiffness by eq. (10) with the wrenches its passive joints transmit in closed form,
+//    their sum. Singular when a pivot ratio of the Cholesky factorization of the length-scaled sum
+//    is below 1e-10 (vjm's rank tolerance).
+//  Loaded: the same chains, factor by factor, in fixed-capacity storage; each chain's equilibrium
+//    (eq. 11) by Newton-Raphson from the unloaded state, the loaded stiffness (eq. 21), and under a
+//    wrench the platform's Newton iteration of vjm::platform_equilibrium_under_wrench; the tests
+//    of vjm (1e-12 residuals, 1e-10 rank tolerance). Where the reference's iterations stall (next to
+//    the flat singularity) this one may converge (see the tests).
+std::unique_ptr<PostureKernel> make_orthoglide_kernel(const OrthoglideKernelOptions& options);
+
 // Today's single-posture path: orthoglide_chains + vjm platform stiffness. The reference of tests.
 std::unique_ptr<PostureKernel> make_reference_orthoglide_kernel(const OrthoglideKernelOptions& options);
 

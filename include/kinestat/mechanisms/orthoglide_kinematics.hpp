@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
@@ -32,6 +33,10 @@ inline constexpr OrthoglideSigns kOrthoglideWorkingSigns{1, 1, 1};
 StatusOr<Vec3> inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p,
                                   const OrthoglideSigns& s = kOrthoglideWorkingSigns);
 
+// The working-mode solution of eq. (3) without a message (nullopt where inverse_kinematics fails)
+// and without heap allocation, for posture sweeps; `g` must be valid.
+std::optional<Vec3> try_inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p);
+
 // Direct-kinematics branch index of section 2.3: m = sgn(sum_i p_i / rho_i - 1). The working mode
 // (containing the zero posture) is m = -1; m = 0 is the parallel ("flat") singularity.
 inline constexpr int kOrthoglideWorkingBranch = -1;
@@ -47,6 +52,10 @@ StatusOr<Vec3> direct_kinematics(const OrthoglideGeometry& g, const Vec3& rho, i
 // Eq. (5): the inverse Jacobian d(rho)/d(p), row i = (p - rho_i e_i)^T / (p_i - rho_i).
 // kSingular at a serial singularity (a bar orthogonal to its slider axis, p_i = rho_i).
 StatusOr<Mat3> inverse_jacobian(const Vec3& p, const Vec3& rho);
+
+// True where inverse_jacobian fails: a chain at a serial singularity, |p_i - rho_i| <= 1e-12 of the
+// posture's size.
+bool serial_singular(const Vec3& p, const Vec3& rho);
 
 // Eq. (6), closed form of det(J^-1); kSingular where eq. (5) is.
 StatusOr<double> inverse_jacobian_determinant(const Vec3& p, const Vec3& rho);

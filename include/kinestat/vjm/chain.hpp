@@ -134,6 +134,30 @@ struct ChainHessians {
 };
 ChainHessians hessians(const Chain& chain, const VecX& q, const VecX& theta, const Vec6& F);
 
+// The terms of H from the unit twists of a chain's moving factors in product order (anything with
+// members v, w: the spatial twist, linear part = velocity of the point at the origin, times the
+// factor's coefficient) and the tool point p: calls add(b, a, d(column b . F)/d(coordinate of a))
+// for every pair; H sums them by coordinate. A factor before b moves b's screw axis by the Lie
+// bracket [xi_a, xi_b] = (w_a x v_b - w_b x v_a, w_a x w_b); every factor moves the tool point by
+// its point velocity v_a + w_a x p, which changes column b's lever arm. Shared with the posture
+// kernels' fixed-size chains (mechanisms).
+template <class Twist, class Add>
+void for_each_hessian_term(const Twist* tw, int count, const Vec3& p, const Vec6& F, Add&& add) {
+  const Vec3 f = F.head<3>(), m = F.tail<3>();
+  for (int b = 0; b < count; ++b) {
+    for (int a = 0; a < count; ++a) {
+      Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
+      if (a < b) {
+        dv = tw[a].w.cross(tw[b].v) - tw[b].w.cross(tw[a].v);
+        dw = tw[a].w.cross(tw[b].w);
+      }
+      const Vec3 dp = tw[a].v + tw[a].w.cross(p);
+      const Vec3 dcol_p = dv + dw.cross(p) + tw[b].w.cross(dp);
+      add(b, a, f.dot(dcol_p) + m.dot(dw));
+    }
+  }
+}
+
 // The twist that takes pose `from` to pose `to`: (p_to - p_from, rotation vector of R_to R_from^T).
 Vec6 pose_difference(const Transform& to, const Transform& from);
 // `T` displaced by the twist d: p + d_p and exp([d_r]x) R.

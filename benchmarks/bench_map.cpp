@@ -1,0 +1,174 @@
+// Workspace-map throughput: postures per second of the sweep kernels (make_five_bar_kernel,
+// make_orthoglide_kernel) over a realistic grid, on one core and on all cores (evaluate_postures
+// with threads = 1 and 0), and the ratio against today's per-posture path (the reference kernels:
+// msa::cartesian_stiffness with a reused workspace, the VJM platform stiffness of `kinestat vjm`)
+// measured in the same run on a subsample of the same grid. Ends with the process's user, system
+// and wall time (getrusage).
+//
+// Not a Google Benchmark: one line per kernel with the figures the map needs (issue 8).
+// The CPU-time rate (postures per second of the process's user + system time) is what one core
+// gives even on a busy machine; the wall-time rates are the figures to record on a quiet one.
+// Run: ./build/benchmarks/bench_map [--min-time S] [--reference-points N]
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "kinestat/mechanisms/five_bar_kernel.hpp"
+#include "kinestat/mechanisms/orthoglide_kernel.hpp"
+
+namespace kinestat::mechanisms {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Settings {
+  double min_time = 1.0;        // s of repeated sweeps per measurement (the best sweep counts)
+  int reference_points = 2000;  // subsample for the slow reference path
+};
+
+double seconds(const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; }
+
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return seconds(u.ru_utime) + seconds(u.ru_stime);
+}
+
+struct Rate {
+  double wall = 0.0;  // postures per second of wall time, best sweep
+  double cpu = 0.0;   // postures per second of the process's CPU time (user + system), all sweeps
+};
+
+// Repeated sweeps lasting together at least `min_time` (at least one).
+Rate rate(const PostureKernel& kernel, const std::vector<Vec3>& points, int threads, double min_time) {
+  std::vector<PostureResult> results;
+  Rate r;
+  double total = 0.0;
+  const double cpu0 = cpu_seconds();
+  std::size_t evaluated = 0;
+  do {
+    const auto t0 = Clock::now();
+    evaluate_postures(kernel, points, results, threads);
+    const double dt = std::chrono::duration<double>(Clock::now() - t0).count();
+    total += dt;
+    evaluated += points.size();
+    r.wall = std::max(r.wall, points.size() / dt);
+  } while (total < min_time);
+  r.cpu = evaluated / (cpu_seconds() - cpu0);
+  return r;
+}
+
+std::vector<Vec3> every_nth(const std::vector<Vec3>& points, int count) {
+  const std::size_t step = std::max<std::size_t>(1, points.size() / std::max(1, count));
+  std::vector<Vec3> out;
+  for (std::size_t i = 0; i < points.size(); i += step) out.push_back(points[i]);
+  return out;
+}
+
+void report(const PostureKernel& fast, const PostureKernel& reference, const std::vector<Vec3>& points,
+            const Settings& s) {
+  std::vector<PostureResult> results;
+  evaluate_postures(fast, points, results, 1);
+  int counts[4] = {0, 0, 0, 0};
+  for (const PostureResult& r : results) ++counts[static_cast<int>(r.status)];
+  const Rate one = rate(fast, points, 1, s.min_time);
+  const Rate all = rate(fast, points, 0, s.min_time);
+  const Rate ref = rate(reference, every_nth(points, s.reference_points), 1, 0.0);
+  fmt::print("{:<46} {:>6} {:>6} {:>5} {:>6} | {:>9.0f} {:>9.0f} {:>9.0f} {:>5.2f}x | {:>8.0f} {:>6.0f}x {:>6.0f}x\n",
+             fast.description(), points.size(), counts[0], counts[2], counts[1], one.wall, one.cpu, all.wall,
+             all.wall / one.wall, ref.wall, one.wall / ref.wall, one.cpu / ref.cpu);
+  std::fflush(stdout);
+}
+
+std::vector<Vec3> plane_grid(double x0, double x1, double y0, double y1, int n) {
+  std::vector<Vec3> pts;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) pts.emplace_back(x0 + (x1 - x0) * i / (n - 1), y0 + (y1 - y0) * j / (n - 1), 0.0);
+  return pts;
+}
+
+std::vector<Vec3> cube_grid(double lo, double hi, int n) {
+  std::vector<Vec3> pts;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const auto c = [&](int a) { return lo + (hi - lo) * a / (n - 1); };
+        pts.emplace_back(c(i), c(j), c(k));
+      }
+  return pts;
+}
+
+int run(const Settings& s) {
+  const auto t0 = Clock::now();
+  fmt::print("hardware threads: {}; best of sweeps lasting >= {:g} s; reference on <= {} points of each grid\n"
+             "columns: postures/s on 1 core (wall, best sweep; and per second of process CPU time), on all "
+             "cores (wall), their ratio; the reference path on 1 core (wall) and the speed-up (wall; CPU)\n",
+             std::thread::hardware_concurrency(), s.min_time, s.reference_points);
+  fmt::print("{:<46} {:>6} {:>6} {:>5} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>8} {:>7} {:>7}\n", "kernel", "points",
+             "ok", "sing.", "unrch.", "1 core/s", "1 cpu/s", "all/s", "ratio", "ref/s", "vs ref", "(cpu)");
+
+  // Five-bar: a 100 x 100 grid over the bounding box of its workspace (both legs' reach).
+  FiveBarKernelOptions fb;
+  const double reach = fb.params.r1 + fb.params.r2;
+  const double h = std::sqrt(reach * reach - fb.params.r3 * fb.params.r3);
+  const std::vector<Vec3> plane = plane_grid(fb.params.r3 - reach, reach - fb.params.r3, -h, h, 100);
+  for (StiffnessMethod m : {StiffnessMethod::kMsa, StiffnessMethod::kVjm}) {
+    fb.method = m;
+    report(*make_five_bar_kernel(fb), *make_reference_five_bar_kernel(fb), plane, s);
+  }
+
+  // Orthoglide: the 200 mm design cube (the tables' Q1..Q2 on the kinematics' axes) at 5 mm, 41^3 points.
+  const std::vector<Vec3> cube = cube_grid(-0.12635, 0.07365, 41);
+  for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR}) {
+    OrthoglideKernelOptions o;
+    o.architecture = a;
+    report(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), cube, s);
+  }
+  // Loaded mode (extra lines): the tables' wrench-free displacement case and a wrench.
+  Settings loaded = s;
+  loaded.reference_points = std::max(1, s.reference_points / 10);
+  const std::vector<Vec3> coarse = cube_grid(-0.12635, 0.07365, 11);
+  for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR}) {
+    OrthoglideKernelOptions o;
+    o.architecture = a;
+    o.wrench = (Vec6() << 100.0, -50.0, 80.0, 0.0, 0.0, 0.0).finished();
+    report(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), coarse, loaded);
+    o.wrench.reset();
+    o.displacement = (Vec6() << -5e-4, -5e-4, -5e-4, 0.0, 0.0, 0.0).finished();
+    report(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), coarse, loaded);
+  }
+
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  fmt::print("process: user {:.2f} s, system {:.2f} s, wall {:.2f} s\n", seconds(u.ru_utime), seconds(u.ru_stime),
+             wall);
+  return 0;
+}
+
+}  // namespace
+}  // namespace kinestat::mechanisms
+
+int main(int argc, char** argv) {
+  kinestat::mechanisms::Settings s;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (std::strcmp(argv[i], "--min-time") == 0) {
+      s.min_time = std::atof(argv[i + 1]);
+    } else if (std::strcmp(argv[i], "--reference-points") == 0) {
+      s.reference_points = std::atoi(argv[i + 1]);
+    } else {
+      fmt::print(stderr, "bench_map: unknown option {}; use --min-time S, --reference-points N\n", argv[i]);
+      return 2;
+    }
+  }
+  return kinestat::mechanisms::run(s);
+}

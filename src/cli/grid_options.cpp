@@ -1,0 +1,77 @@
+#include "cli/grid_options.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <ostream>
+
+#include <fmt/format.h>
+
+namespace kinestat::cli {
+
+using mechanisms::MapRange;
+
+namespace {
+constexpr double kMm = 1e-3;  // m per mm
+}  // namespace
+
+std::optional<double> parse_number(const std::string& s) {
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+StatusOr<MapRange> parse_range_mm(const std::string& text, const std::string& what) {
+  const std::size_t colon = text.find(':', 1);  // not the sign of a leading negative bound
+  const auto lo = parse_number(text.substr(0, colon));
+  const auto hi = colon == std::string::npos ? lo : parse_number(text.substr(colon + 1));
+  if (!lo || !hi)
+    return Status::Invalid(fmt::format("{} '{}' is not a range in mm; write lo:hi or a single value", what, text));
+  if (*lo > *hi)
+    return Status::Invalid(fmt::format("{} {} is reversed; write the smaller bound first", what, text));
+  return MapRange{*lo * kMm, *hi * kMm};
+}
+
+StatusOr<std::vector<MapRange>> parse_ranges_mm(const std::vector<std::string>& parts, std::size_t count,
+                                                const char* option, const char* form) {
+  if (parts.size() != count)
+    return Status::Invalid(fmt::format("{} takes {} ranges, {} (mm); got {}", option, count, form, parts.size()));
+  std::vector<MapRange> ranges;
+  for (std::size_t a = 0; a < count; ++a) {
+    auto r = parse_range_mm(parts[a], fmt::format("{}: the {} range", option, "xyz"[a]));
+    if (!r.ok()) return r.status();
+    ranges.push_back(*r);
+  }
+  return ranges;
+}
+
+Status parse_five_bar_modes(const std::string& mode, const std::string& assembly, const std::string& method,
+                            mechanisms::FiveBarKernelOptions& o) {
+  using namespace mechanisms;
+  const auto m = working_mode_from_name(mode);
+  if (!m) return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or -- (as --mode=--)", mode));
+  o.mode = *m;
+  const auto a = assembly_from_name(assembly);
+  if (!a) return Status::Invalid(fmt::format("--assembly '{}' must be up or down", assembly));
+  o.assembly = *a;
+  if (method != "msa" && method != "vjm") return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", method));
+  o.method = method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
+  return Status::Ok();
+}
+
+void Progress::operator()(std::size_t done, std::size_t total) {
+  const double t = std::chrono::duration<double>(Clock::now() - start_).count();
+  if (t < 1.0 || (done < total && t - last_ < 0.5) || (shown_ && done == last_done_)) return;
+  last_ = t;
+  last_done_ = done;
+  shown_ = true;
+  err_ << fmt::format("\r{}: {:3.0f}% ({} of {} {}, {:.3g} {}/s)", label_, 100.0 * done / total, done, total, unit_,
+                      done / t, unit_)
+       << std::flush;
+}
+
+Progress::~Progress() {
+  if (shown_) err_ << "\n";
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,53 @@
+// Options shared by the commands that sweep a grid (map, design fivebar): ranges in mm, the
+// five-bar's modes, and the progress line on stderr.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/mechanisms/five_bar_kernel.hpp"
+#include "kinestat/mechanisms/workspace_map.hpp"
+
+namespace kinestat::cli {
+
+// A finite number filling the whole string.
+std::optional<double> parse_number(const std::string& s);
+
+// "lo:hi" or a single value, in mm, to m. Messages start with `what` ("--r1", "--region: the x range").
+StatusOr<mechanisms::MapRange> parse_range_mm(const std::string& text, const std::string& what);
+
+// `count` ranges for the axes x, y, z of `option`, given in the form `form` ("x0:x1,y0:y1").
+StatusOr<std::vector<mechanisms::MapRange>> parse_ranges_mm(const std::vector<std::string>& parts,
+                                                            std::size_t count, const char* option,
+                                                            const char* form);
+
+// --mode ++|+-|-+|--, --assembly up|down, --method msa|vjm into `o`.
+Status parse_five_bar_modes(const std::string& mode, const std::string& assembly, const std::string& method,
+                            mechanisms::FiveBarKernelOptions& o);
+
+// Percentage and rate on stderr ("\r" updated), once the run has taken a second: shorter runs stay
+// silent. The line ends when the object goes.
+class Progress {
+ public:
+  Progress(std::ostream& err, std::string label, std::string unit) : err_(err), label_(std::move(label)), unit_(std::move(unit)) {}
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  void operator()(std::size_t done, std::size_t total);
+  ~Progress();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  std::ostream& err_;
+  std::string label_, unit_;
+  Clock::time_point start_ = Clock::now();
+  double last_ = 0.0;
+  std::size_t last_done_ = 0;  // evaluate_postures may report the end twice
+  bool shown_ = false;
+};
+
+}  // namespace kinestat::cli

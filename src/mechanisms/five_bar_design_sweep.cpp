@@ -1,0 +1,94 @@
+#include "kinestat/mechanisms/five_bar_design_sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace kinestat::mechanisms {
+namespace {
+
+constexpr int kMaxSteps = 1000;
+
+Status check_range(const MapRange& r, const char* name) {
+  if (!(std::isfinite(r.lo) && std::isfinite(r.hi) && r.lo > 0.0))
+    return Status::Invalid(fmt::format("the {} range {:g}:{:g} m: link lengths must be positive and finite", name,
+                                       r.lo, r.hi));
+  if (r.lo > r.hi)
+    return Status::Invalid(fmt::format("the {} range {:g}:{:g} m is reversed; write the smaller bound first", name,
+                                       r.lo, r.hi));
+  return Status::Ok();
+}
+
+}  // namespace
+
+bool better_design(const FiveBarDesignResult& a, const FiveBarDesignResult& b) {
+  if (a.stiff != b.stiff) return a.stiff > b.stiff;
+  const auto key = [](double w) { return std::isnan(w) ? -std::numeric_limits<double>::infinity() : w; };
+  return key(a.k_t_min_worst) > key(b.k_t_min_worst);
+}
+
+StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOptions& o) {
+  if (Status s = check_range(o.r1, "r1"); !s.ok()) return s;
+  if (Status s = check_range(o.r2, "r2"); !s.ok()) return s;
+  const bool vary1 = o.r1.hi > o.r1.lo, vary2 = o.r2.hi > o.r2.lo;
+  if ((vary1 || vary2) && (o.steps < 2 || o.steps > kMaxSteps))
+    return Status::Invalid(fmt::format("{} designs per length: a range needs 2 to {} (a single value needs none)",
+                                       o.steps, kMaxSteps));
+  const std::size_t n_region = o.region.num_points();
+  if (n_region == 0) return Status::Invalid("the region has no points");
+  if (!(o.near_singular_threshold >= 0.0 && o.near_singular_threshold <= 1.0))
+    return Status::Invalid(fmt::format("near-singular threshold {:g}: must lie in [0, 1]", o.near_singular_threshold));
+  if (o.min_stiffness && !(*o.min_stiffness >= 0.0 && std::isfinite(*o.min_stiffness)))
+    return Status::Invalid(fmt::format("minimum stiffness {:g} N/m: must be finite and >= 0", *o.min_stiffness));
+
+  FiveBarDesignSweep out;
+  MapGrid& d = out.designs;
+  d.origin = Vec3(o.r1.lo, o.r2.lo, 0.0);
+  d.dimensions = {vary1 ? o.steps : 1, vary2 ? o.steps : 1, 1};
+  const double s1 = vary1 ? (o.r1.hi - o.r1.lo) / (o.steps - 1) : 0.0;
+  const double s2 = vary2 ? (o.r2.hi - o.r2.lo) / (o.steps - 1) : 0.0;
+  // An axis of one design gets the other's spacing (or 1 mm): a grid's spacing is positive.
+  d.spacing = Vec3(vary1 ? s1 : (vary2 ? s2 : 1e-3), vary2 ? s2 : (vary1 ? s1 : 1e-3), 1e-3);
+  out.region = o.region;
+  out.near_singular_threshold = o.near_singular_threshold;
+  out.min_stiffness = o.min_stiffness;
+
+  const auto make_kernel = o.make_kernel ? o.make_kernel : make_reference_five_bar_kernel;
+  MapOptions map_options;
+  map_options.near_singular_threshold = o.near_singular_threshold;
+  map_options.threads = o.threads;
+  map_options.max_points = n_region;
+  const std::size_t n_designs = d.num_points(), total = n_designs * n_region;
+  out.results.reserve(n_designs);
+  for (std::size_t k = 0; k < n_designs; ++k) {
+    FiveBarKernelOptions design = o.base;
+    design.params.r1 = d.point(k).x();
+    design.params.r2 = d.point(k).y();
+    const std::unique_ptr<PostureKernel> kernel = make_kernel(design);
+    if (k == 0) out.description = kernel->description();
+    if (o.progress)
+      map_options.progress = [&, k](std::size_t done, std::size_t) { o.progress(k * n_region + done, total); };
+    auto map = compute_workspace_map(*kernel, o.region, map_options);
+    if (!map.ok()) return map.status();
+    FiveBarDesignResult r{design.params.r1, design.params.r2};
+    const std::vector<double>& k_t_min = map->find(MapField::kTranslationalMin)->values;
+    double worst = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n_region; ++i) {
+      const MapPointStatus s = map->status[i];
+      if (s == MapPointStatus::kUnreachable) continue;
+      ++r.reachable;
+      if (s != MapPointStatus::kOk) continue;
+      ++r.singularity_free;
+      worst = std::min(worst, k_t_min[i]);
+      if (!o.min_stiffness || k_t_min[i] >= *o.min_stiffness) ++r.stiff;
+    }
+    if (r.singularity_free > 0) r.k_t_min_worst = worst;
+    if (!out.results.empty() && better_design(r, out.results[out.best])) out.best = k;
+    out.results.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace kinestat::mechanisms

@@ -1,0 +1,110 @@
+// The loaded mode of the VJM posture kernels on the stack: a serial chain of eq. (1) with fixed
+// capacity (the factors, walk, Jacobians of eq. 5 and derivatives of J^T F of eq. 19-20 of
+// vjm::Chain, vjm::jacobians and vjm::hessians), its loaded equilibrium (eq. 11) and loaded
+// stiffness (eq. 21), and the platform under a prescribed displacement or wrench, as
+// vjm::platform_equilibrium(_under_wrench) and vjm::platform_loaded_stiffness compute them for
+// regular postures. A kernel rebuilds its chains in place at every posture: no heap allocation.
+//
+// Differences from the vjm library, which the tests bound: the chain equilibrium is found by
+// Newton-Raphson on all of eq. (11) from the unloaded state (vjm first runs the paper's eq. (15)
+// iteration; both stop at the same 1e-12 residuals), with LU solves where vjm uses rank-revealing
+// decompositions that only matter at singular postures.
+#pragma once
+
+#include <array>
+
+#include <Eigen/Dense>
+
+#include "kinestat/core/types.hpp"
+#include "kinestat/mechanisms/posture_kernel.hpp"
+
+namespace kinestat::mechanisms::fixed_vjm {
+
+inline constexpr int kMaxFactors = 24;
+inline constexpr int kMaxCoordinates = 18;  // passive + virtual
+inline constexpr int kMaxChains = 3;
+
+using CoordinateVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxCoordinates, 1>;
+using CoordinateMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxCoordinates, kMaxCoordinates>;
+using ChainJacobian = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxCoordinates>;
+
+struct Pose {
+  Mat3 R = Mat3::Identity();
+  Vec3 p = Vec3::Zero();
+};
+
+// Coordinates x = (q, theta): the passive joints, then the springs' virtual coordinates.
+class FixedChain {
+ public:
+  void clear();
+  void add_transform(const Mat3& R, const Vec3& p);
+  // A prismatic actuator along `axis` at `value` with a 1-dof spring (a virtual coordinate).
+  void add_prismatic_actuator(const Vec3& axis, double value, double stiffness);
+  // A 6-dof spring of stiffness K in the current frame (virtual translations x y z, rotations x y z).
+  void add_spring(const Mat6& K);
+  // Revolute passive joint about `axis` (unit) at `nominal`; returns its index.
+  int add_passive(const Vec3& axis, double nominal);
+  // A revolute factor repeating passive joint `index` times `coefficient` (eq. 22's parallelogram).
+  void add_coupled(const Vec3& axis, int index, double coefficient);
+
+  int num_passive() const { return n_; }
+  int num_virtual() const { return m_; }
+  CoordinateVector nominal() const;  // (q0, 0)
+  // K_theta (m x m).
+  auto spring_stiffness() const { return K_.topLeftCorner(m_, m_); }
+  // vjm::Chain::length_scale: the constant translations and the prismatic offsets.
+  double length_scale() const;
+
+  // Tool pose at x, the Jacobian [J_q J_theta] (eq. 5) and, with F, H = d(J^T F)/dx (eq. 19-20).
+  Pose kinematics(const CoordinateVector& x, ChainJacobian& J, const Vec6* F = nullptr,
+                  CoordinateMatrix* H = nullptr) const;
+
+ private:
+  enum class Kind : std::uint8_t { kConstant, kRevolute, kPrismatic };
+  struct Factor {
+    Kind kind = Kind::kConstant;
+    Mat3 R = Mat3::Identity();  // constant factor
+    Vec3 p = Vec3::Zero();
+    Vec3 axis = Vec3::UnitZ();  // motion factor
+    double offset = 0.0;
+    bool passive = false;  // which coordinate drives it (index < 0: none)
+    int index = -1;
+    double coefficient = 1.0;
+  };
+  void add_motion(Kind kind, const Vec3& axis, double offset, bool passive, int index, double coefficient);
+
+  std::array<Factor, kMaxFactors> f_;
+  int size_ = 0, n_ = 0, m_ = 0;
+  std::array<double, kMaxCoordinates> q0_{};
+  CoordinateMatrix K_ = CoordinateMatrix::Zero(kMaxCoordinates, kMaxCoordinates);
+};
+
+// One chain's loaded state (vjm::ChainState without the report).
+struct FixedChainState {
+  CoordinateVector x;
+  Vec6 wrench = Vec6::Zero();
+};
+
+// The platform in loaded mode: its chains, built by the kernel for each posture.
+struct LoadedPlatform {
+  std::array<FixedChain, kMaxChains> chains;
+  int num_chains = 0;
+  double equilibrium_tolerance = 1e-12;  // vjm::EquilibriumOptions
+  int max_iterations = 50;
+  double rank_tolerance = 1e-10;  // vjm::StiffnessOptions
+
+  // The loaded stiffness and deflection with the platform displaced by `displacement` or under
+  // `wrench` (exactly one given), into r: kFailed where the equilibrium is not found, kSingular
+  // where the loaded stiffness does not exist or has a free direction, else kOk.
+  void evaluate(const Vec6* displacement, const Vec6* wrench, PostureResult& r);
+
+ private:
+  bool solve_chain(int i, const Pose& target, FixedChainState& s) const;
+  bool loaded_stiffness(int i, const FixedChainState& s, Mat6& K) const;
+  bool platform_stiffness(Mat6& K) const;
+  std::array<FixedChainState, kMaxChains> states_;
+  std::array<Pose, kMaxChains> nominal_;
+  double length_scale_ = 1.0;
+};
+
+}  // namespace kinestat::mechanisms::fixed_vjm
