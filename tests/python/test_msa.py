@@ -1,6 +1,9 @@
 """MSA through Python: the same oracles as the C++ tests (Table 1 row 14 of Goncalves et al. 2010,
 the cantilever formula), the errors and the arrays' shapes and units."""
 import math
+import os
+import pathlib
+import subprocess
 
 import numpy as np
 import pytest
@@ -91,6 +94,45 @@ beams:
     assert "'C'" in message
     assert e.value.code == ks.StatusCode.INVALID_INPUT
     assert isinstance(e.value, ValueError) and isinstance(e.value, ks.KinestatError)
+
+
+SINGULAR_CANTILEVER = """units: SI
+nodes:
+  - {id: A, xyz: [0, 0, 0]}
+  - {id: B, xyz: [1, 0, 0]}
+materials:
+  - {id: steel, E: 210e9, nu: 0.3}
+sections:
+  - {id: bar, type: rectangle, b: 0.02, h: 0.04}
+beams:
+  - {id: arm, nodes: [A, B], material: steel, section: bar}
+supports:
+  - {node: A, fixed: [ux, uy, uz, rx, ry]}
+load_cases:
+  - {LOAD_CASE: tip, loads: [{node: B, force: [0, 0, -1000]}]}
+"""
+
+
+def test_errors_carry_the_messages_the_cli_prints(tmp_path):
+    cli = pathlib.Path(os.environ.get("KINESTAT_BINARY_DIR", "build")) / "src" / "cli" / "kinestat"
+    if not cli.exists():
+        pytest.skip(f"{cli} is not built")
+    # Bad input: the CLI prints "kinestat solve: MESSAGE" and exits 2; Python raises InputError(MESSAGE).
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(SINGULAR_CANTILEVER.replace("LOAD_CASE", "id"))
+    with pytest.raises(ks.InputError) as e:
+        ks.io.read_structure_yaml(str(bad))
+    run = subprocess.run([str(cli), "solve", str(bad)], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 2 and run.stderr == f"kinestat solve: {e.value}\n"
+    assert str(e.value).startswith(f"{bad}:14: load case #1: unknown key 'id'")
+    # Singular (the rotation about z is free): exit 3 with the diagnosis; Python raises it as SingularError.
+    singular = tmp_path / "singular.yaml"
+    singular.write_text(SINGULAR_CANTILEVER.replace("LOAD_CASE", "name"))
+    with pytest.raises(ks.SingularError) as e:
+        ks.msa.solve(ks.io.read_structure_yaml(str(singular)))
+    run = subprocess.run([str(cli), "solve", str(singular)], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 3 and str(e.value) in run.stdout
+    assert "node 'B' translates along +y (1) and rotates about +z" in str(e.value)
 
 
 def test_structure_in_code_is_validated_like_a_file():
