@@ -74,29 +74,8 @@ def test_arrays_shapes_and_units(source_dir):
     assert np.abs(K - K.T).max() <= 1e-9 * np.abs(K).max()
 
 
-def test_bad_structure_file_raises_input_error_with_line(tmp_path):
-    path = tmp_path / "bad.yaml"
-    path.write_text("""units: SI
-nodes:
-  - {id: A, xyz: [0, 0, 0]}
-  - {id: B, xyz: [1, 0, 0]}
-materials:
-  - {id: steel, E: 210e9, nu: 0.3}
-sections:
-  - {id: bar, type: rectangle, b: 0.02, h: 0.04}
-beams:
-  - {id: arm, nodes: [A, C], material: steel, section: bar}
-""")
-    with pytest.raises(ks.InputError) as e:
-        ks.io.read_structure_yaml(str(path))
-    message = str(e.value)
-    assert message.startswith(f"{path}:10: "), message
-    assert "'C'" in message
-    assert e.value.code == ks.StatusCode.INVALID_INPUT
-    assert isinstance(e.value, ValueError) and isinstance(e.value, ks.KinestatError)
-
-
-SINGULAR_CANTILEVER = """units: SI
+# A steel beam A-B, 1 m along x, without supports or loads.
+BEAM = """units: SI
 nodes:
   - {id: A, xyz: [0, 0, 0]}
   - {id: B, xyz: [1, 0, 0]}
@@ -106,7 +85,23 @@ sections:
   - {id: bar, type: rectangle, b: 0.02, h: 0.04}
 beams:
   - {id: arm, nodes: [A, B], material: steel, section: bar}
-supports:
+"""
+
+
+def test_bad_structure_file_raises_input_error_with_line(tmp_path):
+    path = tmp_path / "bad.yaml"
+    path.write_text(BEAM.replace("[A, B]", "[A, C]"))
+    with pytest.raises(ks.InputError) as e:
+        ks.io.read_structure_yaml(str(path))
+    message = str(e.value)
+    assert message.startswith(f"{path}:10: "), message
+    assert "'C'" in message
+    assert e.value.code == ks.StatusCode.INVALID_INPUT
+    assert isinstance(e.value, ValueError) and isinstance(e.value, ks.KinestatError)
+
+
+# Free to rotate about z at A (a missing support), with a tip load.
+SINGULAR_CANTILEVER = BEAM + """supports:
   - {node: A, fixed: [ux, uy, uz, rx, ry]}
 load_cases:
   - {LOAD_CASE: tip, loads: [{node: B, force: [0, 0, -1000]}]}
