@@ -198,16 +198,16 @@ void bind_map_files(py::module_& m) {
       "'status'; points without values hidden (vtkGhostType) unless hide_masked_points is False.");
   m.def(
       "write_workspace_map_png",
-      [](const std::string& path, const mechanisms::WorkspaceMap& map, const py::object& field) {
+      [](const std::string& path, const mechanisms::WorkspaceMap& map, const MapFieldArg& field) {
         const mechanisms::MapField f = map_field(field);
         check(without_gil([&] { return io::write_workspace_map_png(path, map, f); }));
       },
-      py::arg("path"), py::arg("map"), py::arg("field") = "k_t_min",
+      py::arg("path"), py::arg("map"), py::arg("field") = std::string("k_t_min"),
       "The PNG of `kinestat map --png --field FIELD`: axes in mm, values in display units (map_field_display), "
       "the map's curves over it; a box gives a sheet of z slices.");
   m.def(
       "map_field_display",
-      [](const py::object& field) {
+      [](const MapFieldArg& field) {
         const io::MapFieldDisplay d = io::map_field_display(map_field(field));
         return py::make_tuple(d.unit, d.scale);
       },

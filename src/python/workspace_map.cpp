@@ -156,7 +156,7 @@ void bind_map(py::module_& m) {
       .def_readonly("unit", &MapFieldInfo::unit, "SI")
       .def_readonly("description", &MapFieldInfo::description);
   m.def(
-      "field_info", [](const py::object& f) { return field_info(map_field(f)); }, py::arg("field"),
+      "field_info", [](const MapFieldArg& f) { return field_info(map_field(f)); }, py::arg("field"),
       py::return_value_policy::reference);
   m.def("field_from_name", &field_from_name, py::arg("name"), "The MapField named 'k_t_min', ..., or None.");
 
@@ -211,12 +211,12 @@ void bind_map(py::module_& m) {
           "(nz, ny, nx) bool, True where the point has no stiffness values (for numpy.ma)")
       .def(
           "field",
-          [](const WorkspaceMap& w, const py::object& f) {
+          [](const WorkspaceMap& w, const MapFieldArg& f) {
             return grid_array<double>(w.grid, map_field_values(w, map_field(f)).values);
           },
           py::arg("field"), "(nz, ny, nx) float64 in SI units (field_info(f).unit), NaN where no value.")
       .def(
-          "summary", [](const WorkspaceMap& w, const py::object& f) { return map_field_values(w, map_field(f)).summary; },
+          "summary", [](const WorkspaceMap& w, const MapFieldArg& f) { return map_field_values(w, map_field(f)).summary; },
           py::arg("field"))
       .def_property_readonly(
           "field_names",
@@ -322,13 +322,11 @@ void bind_design_sweep(py::module_& m) {
 
 }  // namespace
 
-MapField map_field(const py::handle& f) {
-  if (py::isinstance<py::str>(f)) {
-    const std::string name = f.cast<std::string>();
-    if (const auto field = field_from_name(name)) return *field;
-    raise_status(Status::Invalid(fmt::format("field '{}' is not a map field; use one of {}", name, field_names())));
-  }
-  return f.cast<MapField>();
+MapField map_field(const MapFieldArg& f) {
+  if (const auto* field = std::get_if<MapField>(&f)) return *field;
+  const std::string& name = std::get<std::string>(f);
+  if (const auto field = field_from_name(name)) return *field;
+  raise_status(Status::Invalid(fmt::format("field '{}' is not a map field; use one of {}", name, field_names())));
 }
 
 void bind_workspace_maps(py::module_& m) {
