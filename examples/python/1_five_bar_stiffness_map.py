@@ -2,7 +2,7 @@
 
 k_t_min, the stiffness of the platform point P in its weakest direction (N/mm), over the plane, for
 the ++ working mode and the up assembly mode: what `kinestat map fivebar --step 1` computes.
-compute_workspace_map runs the MSA posture kernel on every point of the grid (all cores, the GIL
+compute_workspace_map runs the MSA sweep kernel on every point of the grid (all cores, the GIL
 released) and returns fields as NumPy arrays of shape (nz, ny, nx), NaN (blank) where P is out of
 reach. The same map is also written as the CLI writes it (PNG with the singular loci drawn over
 it, VTI for ParaView, JSON).
@@ -16,7 +16,7 @@ import kinestat as ks
 
 m = ks.mechanisms
 grid = m.make_map_grid([(-0.11, 0.11), (-0.03, 0.17), 0.0], step=0.001)         # x, y ranges and z (m)
-stiffness_map = m.compute_workspace_map(m.make_reference_five_bar_kernel(), grid)  # ++ up, MSA
+stiffness_map = m.compute_workspace_map(m.make_five_bar_kernel(), grid)  # ++ up, MSA (the sweep kernel)
 x, y, _ = grid.axes
 plt.pcolormesh(x * 1e3, y * 1e3, stiffness_map.field("k_t_min")[0] / 1e3, shading="auto", cmap="viridis")
 plt.colorbar(label="k_t_min: stiffness in the weakest direction (N/mm)")

@@ -21,10 +21,12 @@ def weakest_translational_stiffness(C):
     return np.linalg.eigvalsh(np.linalg.inv(C[:3, :3])).min()
 
 
-@pytest.fixture(scope="module")
-def five_bar_map():
+# The sweep kernels (what `kinestat map` runs) and the reference kernels (posture by posture).
+@pytest.fixture(scope="module", params=["sweep", "reference"])
+def five_bar_map(request):
     grid = mech.make_map_grid([(-0.1, 0.1), (-0.03, 0.17), 0.0], 0.01)  # m
-    return mech.compute_workspace_map(mech.make_reference_five_bar_kernel(), grid)
+    make = mech.make_five_bar_kernel if request.param == "sweep" else mech.make_reference_five_bar_kernel
+    return mech.compute_workspace_map(make(), grid)
 
 
 def test_map_arrays_have_the_grid_shape(five_bar_map):
@@ -50,11 +52,20 @@ def test_map_values_equal_single_posture_solves(five_bar_map):
     kt, trace = m.field("k_t_min")[0], m.field("trace")[0]
     ok = np.argwhere(m.status[0] == mech.MapPointStatus.OK.value)
     assert len(ok) > 100
+    # The reference kernel is the nodal MSA path itself; the sweep kernel solves the same model without
+    # the ~7 digits the nodal form loses to the 2e11 N/m joint springs (five_bar_kernel.hpp), so it
+    # meets the nodal MSA within that accuracy and the VJM route (which loses none) closely.
+    sweep = "reference" not in m.description
     for j, i in ok[:: len(ok) // 7]:
         s = mech.make_five_bar_structure(params, [x[i], y[j]], mech.WorkingMode(1, 1))
         c = ks.msa.cartesian_stiffness(s, mech.FIVE_BAR_PLATFORM_NODE)
-        assert kt[j, i] == pytest.approx(weakest_translational_stiffness(c.compliance), rel=1e-8)
-        assert trace[j, i] == pytest.approx(np.trace(c.stiffness), rel=1e-8)
+        rel = 1e-6 if sweep else 1e-9
+        assert kt[j, i] == pytest.approx(weakest_translational_stiffness(c.compliance), rel=rel)
+        assert trace[j, i] == pytest.approx(np.trace(c.stiffness), rel=rel)
+        if sweep:
+            posture = mech.inverse_kinematics(params, [x[i], y[j]], mech.WorkingMode(1, 1))
+            v = ks.vjm.platform_unloaded_stiffness(mech.five_bar_vjm_chains(params, posture))
+            assert kt[j, i] == pytest.approx(weakest_translational_stiffness(v.compliance), rel=1e-9)
 
 
 def test_unreachable_points_are_nan_and_masked(five_bar_map):
@@ -77,12 +88,14 @@ def test_unreachable_points_are_nan_and_masked(five_bar_map):
     assert s.count == np.count_nonzero(has) and s.min == pytest.approx(np.nanmin(m.field("k_t_min")))
 
 
-def test_orthoglide_map_equals_the_vjm_model(source_dir):
+@pytest.mark.parametrize("make", [mech.make_orthoglide_kernel, mech.make_reference_orthoglide_kernel],
+                         ids=["sweep", "reference"])
+def test_orthoglide_map_equals_the_vjm_model(source_dir, make):
     model = ks.io.read_vjm_model_yaml(str(source_dir / "models/orthoglide_puu.yaml"))
     options = mech.OrthoglideKernelOptions()
     options.model, options.architecture = model.orthoglide, model.architecture
     grid = mech.make_map_grid([(-0.04, 0.04), (-0.04, 0.04), (-0.02, 0.02)], 0.02)  # a 3D box (m)
-    m = mech.compute_workspace_map(mech.make_reference_orthoglide_kernel(options), grid)
+    m = mech.compute_workspace_map(make(options), grid)
     assert m.shape == (3, 5, 5)
     kt = m.field("k_t_min")
     for k, j, i in [(0, 0, 0), (1, 2, 2), (2, 4, 1)]:
