@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/mechanisms/five_bar_design_sweep.hpp"
 #include "kinestat/mechanisms/five_bar_loci.hpp"
 #include "kinestat/mechanisms/workspace_map.hpp"
@@ -60,15 +61,15 @@ const FieldValues& map_field_values(const WorkspaceMap& m, MapField f) {
 MapGrid make_grid(const Vec3& origin, const Vec3& spacing, const std::array<int, 3>& dimensions) {
   double points = 1.0;
   for (int a = 0; a < 3; ++a) {
+    const std::string axis = fmt::format("MapGrid: the {} axis's ", "xyz"[a]);
     if (dimensions[a] < 1)
-      raise_status(Status::Invalid(fmt::format("MapGrid: dimensions[{}] = {}: every axis has at least one point", a, dimensions[a])));
-    if (!(spacing(a) > 0.0 && std::isfinite(spacing(a))))
-      raise_status(Status::Invalid(fmt::format("MapGrid: spacing[{}] = {:g} m: it must be positive and finite", a, spacing(a))));
+      raise_status(Status::Invalid(fmt::format("{}dimension {}: every axis has at least one point", axis, dimensions[a])));
+    check(check_quantity(spacing(a), Quantity::kLength, axis + "spacing", {}, Sign::kPositive));
+    check(check_quantity(origin(a), Quantity::kLength, axis + "origin"));
     points *= dimensions[a];
   }
-  if (!origin.allFinite()) raise_status(Status::Invalid("MapGrid: the origin must be finite (m)"));
-  if (points > static_cast<double>(MapOptions{}.max_points))
-    raise_status(Status::Invalid(fmt::format("MapGrid: {:.3g} points, more than the limit of {}", points, MapOptions{}.max_points)));
+  check(check_size(points, static_cast<double>(MapOptions{}.max_points), "MapGrid", "points",
+                   "use fewer points per axis"));
   return MapGrid{origin, spacing, dimensions};
 }
 
@@ -310,9 +311,8 @@ void bind_design_sweep(py::module_& m) {
   m.def(
       "sweep_five_bar_designs",
       [](const FiveBarDesignSweepOptions& o) {
-        if (o.region.num_points() > MapOptions{}.max_points)
-          raise_status(Status::Invalid(fmt::format("the region has {} points, more than the limit of {}",
-                                                   o.region.num_points(), MapOptions{}.max_points)));
+        check(check_size(static_cast<double>(o.region.num_points()), static_cast<double>(MapOptions{}.max_points),
+                         "the region", "points", "use a larger step"));
         return unwrap(without_gil([&] { return sweep_five_bar_designs(o); }));
       },
       py::arg("options"),

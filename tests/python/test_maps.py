@@ -128,8 +128,12 @@ def test_bad_grids_raise_input_error():
         mech.make_map_grid([(0.1, -0.1), (0, 0.1), 0.0], 0.01)
     with pytest.raises(ks.InputError, match="more than the limit"):
         mech.make_map_grid([(-1, 1), (-1, 1), 0.0], 1e-5)
-    with pytest.raises(ks.InputError, match="dimensions"):
+    with pytest.raises(ks.InputError, match="y axis's dimension -1"):
         mech.MapGrid([0, 0, 0], [1, 1, 1], [10, -1, 1])
+    with pytest.raises(ks.InputError, match="above the limit"):
+        mech.MapGrid([0, 0, 0], [1, 1, 1], [100000, 100000, 1])
+    with pytest.raises(ks.InputError, match="z axis's spacing"):
+        mech.MapGrid([0, 0, 0], [1, 1, float("nan")], [10, 10, 1])
 
 
 def small_sweep():
@@ -156,7 +160,7 @@ def test_design_sweep_counts_equal_separate_maps(sweep):
         for i in range(3):
             design = mech.FiveBarKernelOptions()
             design.params.r1, design.params.r2 = sweep.r1[j, i], sweep.r2[j, i]
-            m = mech.compute_workspace_map(mech.make_reference_five_bar_kernel(design), o.region)
+            m = mech.compute_workspace_map(mech.make_five_bar_kernel(design), o.region)  # the sweep's kernel
             ok = m.status == mech.MapPointStatus.OK.value
             assert sweep.reachable_share[j, i] == np.count_nonzero(m.status != mech.MapPointStatus.UNREACHABLE.value) / n
             assert sweep.singularity_free_share[j, i] == np.count_nonzero(ok) / n
