@@ -2,15 +2,20 @@
 #include "solver/cholmod_cholesky.hpp"
 
 #include <cholmod.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <limits>
+#include <mutex>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "kinestat/core/huge_page_allocator.hpp"
 #include "kinestat/solver/library_versions.hpp"
+#include "solver/available_memory.hpp"
 
 namespace kinestat::solver {
 namespace {
@@ -32,9 +37,59 @@ const char* ordering_name(int ordering) {
   }
 }
 
+// CHOLMOD's allocations (the factor L, its update workspace) through allocate_large: L's hundreds of
+// MB are touched first inside the numeric factorization, one 2 MB page fault instead of 512 small
+// ones. Process-wide (SuiteSparse_config is one global), set once before the first CHOLMOD call.
+void* cholmod_calloc(std::size_t count, std::size_t size) {
+  if (size != 0 && count > static_cast<std::size_t>(-1) / size) return nullptr;
+  void* p = allocate_large(count * size);
+  if (p) std::memset(p, 0, count * size);
+  return p;
+}
+
+void use_huge_pages_for_cholmod() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    SuiteSparse_config.malloc_func = allocate_large;
+    SuiteSparse_config.calloc_func = cholmod_calloc;
+    SuiteSparse_config.realloc_func = std::realloc;
+    SuiteSparse_config.free_func = std::free;
+  });
+}
+
+// The process's thread decision for a factorization: the BLAS (OpenBLAS, its own pthreads) uses the
+// cores; CHOLMOD's OpenMP loops run on the calling thread only. Debian's CHOLMOD 3.0.14 scatters each
+// supernode's update in `omp parallel` regions with a fixed team of 4, whatever OMP_NUM_THREADS says:
+// on 2 cores the ~90 000 regions of an 88k-dof factorization cost 90 000 futex sleeps and ~2 s of
+// system time, and the team's spinning threads take the cores from OpenBLAS's (benchmarks/README.md,
+// "Factorization rate"). max-active-levels 0 makes every parallel region inactive (a team of one).
+// kinestat itself uses no OpenMP (TBB for its loops), so this is set, not saved and restored; it is
+// set on each call because newer OpenMP runtimes keep it per thread. The runtime is the one CHOLMOD
+// loaded, found at run time; a CHOLMOD without OpenMP leaves nothing to do.
+void serialize_openmp_regions() {
+  using SetLevels = void (*)(int);
+  static const auto set = reinterpret_cast<SetLevels>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+  if (set) set(0);
+}
+
+// Bytes the numeric factorization of `A` (lower triangle, nnz_lower entries) will hold at its
+// peak, from the symbolic factor L: a supernodal L stores xsize values (nnz(L) plus the zeros of
+// relaxed amalgamation) and ssize row indices, and the factorization adds the largest supernode
+// update (maxcsize values); a simplicial L one value and one index per entry of L. Both add CHOLMOD's
+// permuted copy of A (value + index per entry) and O(n) workspace.
+double numeric_factorization_bytes(const cholmod_factor& L, const cholmod_common& c, double nnz_lower) {
+  constexpr double kValue = sizeof(double), kIndex = sizeof(int);
+  const double n = static_cast<double>(L.n);
+  const double factor = L.is_super ? kValue * static_cast<double>(L.xsize + L.maxcsize) +
+                                         kIndex * static_cast<double>(L.ssize + 4 * L.nsuper)
+                                   : (kValue + kIndex) * c.lnz + 2 * kIndex * n;
+  return factor + (kValue + kIndex) * nnz_lower + 16 * kValue * n;
+}
+
 class CholmodCholesky final : public SparseCholesky {
  public:
   explicit CholmodCholesky(const SparseCholeskyOptions& options) : options_(options) {
+    use_huge_pages_for_cholmod();
     cholmod_start(&common_);
     common_.print = 0;               // failures are reported through FactorizationReport
     common_.error_handler = nullptr;
@@ -81,16 +136,33 @@ class CholmodCholesky final : public SparseCholesky {
       last_flops_ = common_.fl;
       last_lnz_ = common_.lnz;
       last_ordering_ = ordering_name(common_.method[common_.selected].ordering);
+      last_bytes_ = numeric_factorization_bytes(*factor_, common_, static_cast<double>(lower_.nonZeros()));
+      last_available_ = options_.memory_limit_bytes > 0.0 ? options_.memory_limit_bytes : available_memory_bytes();
     }
     r.reused_symbolic = same_pattern;
     r.analyze_seconds = same_pattern ? 0.0 : seconds_since(t0);
     r.flops = last_flops_;
     r.nnz_factor = static_cast<long>(last_lnz_);
     r.ordering = last_ordering_;
+    r.factor_bytes = last_bytes_;
+    r.memory_available_bytes = last_available_;
+    if (r.refused_for_memory()) {
+      // Before cholmod_factorize allocates the factor: the symbolic factor is kept (a retry with
+      // the same pattern does not redo the analysis).
+      return Status::Invalid(fmt::format("sparse Cholesky of {} unknowns: the factorization needs about {:.3g} GB "
+                                         "(nnz(L) = {:.3g}), {:.3g} GB of memory are available; make the model smaller or use the "
+                                         "distributed backend (--solver petsc)",
+                                         n, r.factor_bytes * 1e-9, last_lnz_, r.memory_available_bytes * 1e-9));
+    }
+    if (options_.progress)
+      options_.progress(fmt::format("factorizing: {:.3g} Gflop, {:.3g} GB of {:.3g} GB available", r.flops * 1e-9,
+                                    r.factor_bytes * 1e-9, r.memory_available_bytes * 1e-9));
 
     const auto t1 = std::chrono::steady_clock::now();
+    serialize_openmp_regions();
     cholmod_factorize(&M, factor_, &common_);
     r.factor_seconds = seconds_since(t1);
+    r.peak_bytes = static_cast<double>(common_.memory_usage);
     r.supernodal = factor_->is_super != 0;
     if (common_.status < CHOLMOD_OK)
       return Status::Internal(fmt::format("CHOLMOD factorization failed (status {}, out of memory?)", common_.status));
@@ -205,7 +277,7 @@ class CholmodCholesky final : public SparseCholesky {
   cholmod_factor* factor_ = nullptr;
   SparseMatrix lower_;
   std::vector<int> pattern_outer_, pattern_inner_;
-  double last_flops_ = 0.0, last_lnz_ = 0.0;
+  double last_flops_ = 0.0, last_lnz_ = 0.0, last_bytes_ = 0.0, last_available_ = 0.0;
   std::string last_ordering_;
   int analyses_ = 0;
   bool factor_ok_ = false;
