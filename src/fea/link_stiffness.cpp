@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "fea/elasticity_assembly.hpp"
 #include "kinestat/fea/tet_element.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
@@ -63,12 +64,12 @@ double mean_edge_length(const TetMesh& mesh) {
 Status memory_refusal(const TetMesh& mesh, int dofs, const solver::FactorizationReport& f) {
   const double ratio = f.factor_bytes / f.memory_available_bytes;
   const double h = mean_edge_length(mesh), coarser = std::pow(1.2 * ratio, 1.0 / 4.3);
-  return Status::Invalid(fmt::format(
-      "link stiffness: {} dofs need about {:.3g} GB for the Cholesky factor, {:.3g} GB of memory are available; "
-      "a mesh about {:.2g} times coarser (mean edge now {:.3g} mm: --size {:.3g} mm, ~{:.2g} dofs) would fit, or "
-      "use the iterative or distributed backend (--solver petsc, docs/fea.md \"Large meshes\")",
-      dofs, f.factor_bytes * 1e-9, f.memory_available_bytes * 1e-9, coarser, h * 1e3, h * coarser * 1e3,
-      dofs / std::pow(coarser, 3.0)));
+  return check_size(
+      f.factor_bytes * 1e-9, f.memory_available_bytes * 1e-9,
+      fmt::format("link stiffness: {} dofs, memory for the Cholesky factor", dofs), "GB (the memory available)",
+      fmt::format("a mesh about {:.2g} times coarser would fit (mean edge now {:.3g} mm: --size {:.3g} mm, ~{:.2g} "
+                  "dofs), or use the iterative or distributed backend (--solver petsc, docs/fea.md \"Large meshes\")",
+                  coarser, h * 1e3, h * coarser * 1e3, dofs / std::pow(coarser, 3.0)));
 }
 
 }  // namespace

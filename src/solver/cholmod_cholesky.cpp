@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/huge_page_allocator.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/solver/library_versions.hpp"
 #include "solver/available_memory.hpp"
 
@@ -146,14 +147,13 @@ class CholmodCholesky final : public SparseCholesky {
     r.ordering = last_ordering_;
     r.factor_bytes = last_bytes_;
     r.memory_available_bytes = last_available_;
-    if (r.refused_for_memory()) {
-      // Before cholmod_factorize allocates the factor: the symbolic factor is kept (a retry with
-      // the same pattern does not redo the analysis).
-      return Status::Invalid(fmt::format("sparse Cholesky of {} unknowns: the factorization needs about {:.3g} GB "
-                                         "(nnz(L) = {:.3g}), {:.3g} GB of memory are available; make the model smaller or use the "
-                                         "distributed backend (--solver petsc)",
-                                         n, r.factor_bytes * 1e-9, last_lnz_, r.memory_available_bytes * 1e-9));
-    }
+    // Refused before cholmod_factorize allocates the factor; the symbolic factor is kept (a retry with
+    // the same pattern does not redo the analysis).
+    if (r.refused_for_memory())
+      return check_size(r.factor_bytes * 1e-9, r.memory_available_bytes * 1e-9,
+                        fmt::format("sparse Cholesky of {} unknowns (nnz(L) = {:.3g}): memory", n, last_lnz_),
+                        "GB (the memory available)",
+                        "make the model smaller or use the distributed backend (--solver petsc)");
     if (options_.progress)
       options_.progress(fmt::format("factorizing: {:.3g} Gflop, {:.3g} GB of {:.3g} GB available", r.flops * 1e-9,
                                     r.factor_bytes * 1e-9, r.memory_available_bytes * 1e-9));
