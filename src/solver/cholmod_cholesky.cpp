@@ -114,30 +114,37 @@ class CholmodCholesky final : public SparseCholesky {
     r = FactorizationReport{};
     factor_ok_ = false;
     if (A.rows() != A.cols()) return Status::Internal("sparse Cholesky: matrix is not square");
-    lower_ = A.triangularView<Eigen::Lower>();
-    lower_.makeCompressed();
-    const int n = static_cast<int>(lower_.rows());
+    // The lower triangle CHOLMOD reads: A itself when it stores nothing else (the FEA and MSA
+    // assemblies keep the lower triangle only), else a copy; at 1M dofs the copy would be ~0.5 GB.
+    const bool lower_only = is_compressed_sorted_lower(A);
+    SparseMatrix copy;
+    if (!lower_only) {
+      copy = A.triangularView<Eigen::Lower>();
+      copy.makeCompressed();
+    }
+    const SparseMatrix& lower = lower_only ? A : copy;
+    const int n = static_cast<int>(lower.rows());
     r.n = n;
-    r.nnz_matrix = lower_.nonZeros();
-    cholmod_sparse M = view(lower_);
+    r.nnz_matrix = lower.nonZeros();
+    cholmod_sparse M = view(lower);
 
     const auto t0 = std::chrono::steady_clock::now();
-    const bool same_pattern = factor_ != nullptr && lower_.rows() == static_cast<long>(pattern_outer_.size()) - 1 &&
-                              std::equal(pattern_outer_.begin(), pattern_outer_.end(), lower_.outerIndexPtr()) &&
-                              static_cast<long>(pattern_inner_.size()) == lower_.nonZeros() &&
-                              std::equal(pattern_inner_.begin(), pattern_inner_.end(), lower_.innerIndexPtr());
+    const bool same_pattern = factor_ != nullptr && lower.rows() == static_cast<long>(pattern_outer_.size()) - 1 &&
+                              std::equal(pattern_outer_.begin(), pattern_outer_.end(), lower.outerIndexPtr()) &&
+                              static_cast<long>(pattern_inner_.size()) == lower.nonZeros() &&
+                              std::equal(pattern_inner_.begin(), pattern_inner_.end(), lower.innerIndexPtr());
     if (!same_pattern) {
       if (factor_) cholmod_free_factor(&factor_, &common_);
       factor_ = cholmod_analyze(&M, &common_);
       if (!factor_ || common_.status < CHOLMOD_OK)
         return Status::Internal(fmt::format("CHOLMOD analysis failed (status {})", common_.status));
       ++analyses_;
-      pattern_outer_.assign(lower_.outerIndexPtr(), lower_.outerIndexPtr() + n + 1);
-      pattern_inner_.assign(lower_.innerIndexPtr(), lower_.innerIndexPtr() + lower_.nonZeros());
+      pattern_outer_.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + n + 1);
+      pattern_inner_.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
       last_flops_ = common_.fl;
       last_lnz_ = common_.lnz;
       last_ordering_ = ordering_name(common_.method[common_.selected].ordering);
-      last_bytes_ = numeric_factorization_bytes(*factor_, common_, static_cast<double>(lower_.nonZeros()));
+      last_bytes_ = numeric_factorization_bytes(*factor_, common_, static_cast<double>(lower.nonZeros()));
       last_available_ = options_.memory_limit_bytes > 0.0 ? options_.memory_limit_bytes : available_memory_bytes();
     }
     r.reused_symbolic = same_pattern;
@@ -170,7 +177,7 @@ class CholmodCholesky final : public SparseCholesky {
     const int computed = (common_.status == CHOLMOD_NOT_POSDEF) ? static_cast<int>(factor_->minor) : n;
     const int* perm = static_cast<const int*>(factor_->Perm);
     if (computed < n) r.failed_column = perm ? perm[computed] : computed;
-    check_pivots(computed, r);
+    check_pivots(lower, computed, r);
     if (r.singular()) {
       return Status::Singular(r.failed_column >= 0
                                   ? fmt::format("pivot of column {} is not positive", r.failed_column)
@@ -214,14 +221,26 @@ class CholmodCholesky final : public SparseCholesky {
     common_.postorder = 1;
   }
 
-  static cholmod_sparse view(SparseMatrix& S) {
+  // Every column's row indices strictly increasing and on or below the diagonal.
+  static bool is_compressed_sorted_lower(const SparseMatrix& A) {
+    if (!A.isCompressed()) return false;
+    const int* p = A.outerIndexPtr();
+    const int* i = A.innerIndexPtr();
+    for (int j = 0; j < A.outerSize(); ++j)
+      for (int k = p[j]; k < p[j + 1]; ++k)
+        if (i[k] < j || (k > p[j] && i[k] <= i[k - 1])) return false;
+    return true;
+  }
+
+  // CHOLMOD's analysis and factorization read the matrix only (cholmod_sparse has no const view).
+  static cholmod_sparse view(const SparseMatrix& S) {
     cholmod_sparse M{};
     M.nrow = S.rows();
     M.ncol = S.cols();
     M.nzmax = S.nonZeros();
-    M.p = S.outerIndexPtr();
-    M.i = S.innerIndexPtr();
-    M.x = S.valuePtr();
+    M.p = const_cast<int*>(S.outerIndexPtr());
+    M.i = const_cast<int*>(S.innerIndexPtr());
+    M.x = const_cast<double*>(S.valuePtr());
     M.stype = -1;  // symmetric, lower triangle stored
     M.itype = CHOLMOD_INT;
     M.xtype = CHOLMOD_REAL;
@@ -232,7 +251,7 @@ class CholmodCholesky final : public SparseCholesky {
   }
 
   // Pivot d_j of each computed column (diag(L)^2 for LL', D for LDL'), against A_jj.
-  void check_pivots(int computed, FactorizationReport& r) const {
+  void check_pivots(const SparseMatrix& lower, int computed, FactorizationReport& r) const {
     const int n = static_cast<int>(factor_->n);
     std::vector<double> pivot(n, 0.0);
     const double* x = static_cast<const double*>(factor_->x);
@@ -258,7 +277,7 @@ class CholmodCholesky final : public SparseCholesky {
     r.min_pivot_ratio = std::numeric_limits<double>::infinity();
     for (int j = 0; j < computed; ++j) {
       const int col = perm ? perm[j] : j;
-      const double ajj = lower_.coeff(col, col);
+      const double ajj = lower.coeff(col, col);
       const double ratio = ajj > 0 ? pivot[j] / ajj : 0.0;
       if (ratio < r.min_pivot_ratio) {
         r.min_pivot_ratio = ratio;
@@ -275,7 +294,6 @@ class CholmodCholesky final : public SparseCholesky {
   SparseCholeskyOptions options_;
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
-  SparseMatrix lower_;
   std::vector<int> pattern_outer_, pattern_inner_;
   double last_flops_ = 0.0, last_lnz_ = 0.0, last_bytes_ = 0.0, last_available_ = 0.0;
   std::string last_ordering_;
