@@ -64,14 +64,54 @@ void use_huge_pages_for_cholmod() {
 // on 2 cores the ~90 000 regions of an 88k-dof factorization cost 90 000 futex sleeps and ~2 s of
 // system time, and the team's spinning threads take the cores from OpenBLAS's (benchmarks/README.md,
 // "Factorization rate"). max-active-levels 0 makes every parallel region inactive (a team of one).
-// kinestat itself uses no OpenMP (TBB for its loops), so this is set, not saved and restored; it is
-// set on each call because newer OpenMP runtimes keep it per thread. The runtime is the one CHOLMOD
-// loaded, found at run time; a CHOLMOD without OpenMP leaves nothing to do.
-void serialize_openmp_regions() {
-  using SetLevels = void (*)(int);
-  static const auto set = reinterpret_cast<SetLevels>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
-  if (set) set(0);
-}
+// kinestat itself uses TBB, not OpenMP, but a program around it (the Python module's users) may:
+// the previous value comes back when the last concurrent factorization ends (GCC 12's libgomp keeps
+// the value process-wide, hence the count; it is set on every entry for runtimes that keep it per
+// thread). The runtime is the one CHOLMOD loaded, found at run time; without one, nothing to do.
+class SerialOpenMpRegions {
+ public:
+  SerialOpenMpRegions() {
+    const Runtime& rt = runtime();
+    if (!rt.set) return;
+    std::lock_guard lock(mutex());
+    if (depth()++ == 0) saved() = rt.get();
+    rt.set(0);
+  }
+  ~SerialOpenMpRegions() {
+    const Runtime& rt = runtime();
+    if (!rt.set) return;
+    std::lock_guard lock(mutex());
+    if (--depth() == 0) rt.set(saved());
+  }
+  SerialOpenMpRegions(const SerialOpenMpRegions&) = delete;
+  SerialOpenMpRegions& operator=(const SerialOpenMpRegions&) = delete;
+
+ private:
+  struct Runtime {
+    int (*get)() = nullptr;
+    void (*set)(int) = nullptr;
+  };
+  static const Runtime& runtime() {
+    static const Runtime r = [] {
+      auto* get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+      auto* set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+      return get && set ? Runtime{get, set} : Runtime{};
+    }();
+    return r;
+  }
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& depth() {
+    static int d = 0;
+    return d;
+  }
+  static int& saved() {
+    static int v = 0;
+    return v;
+  }
+};
 
 // Bytes the numeric factorization of `A` (lower triangle, nnz_lower entries) will hold at its
 // peak, from the symbolic factor L: a supernodal L stores xsize values (nnz(L) plus the zeros of
@@ -166,8 +206,10 @@ class CholmodCholesky final : public SparseCholesky {
                                     r.factor_bytes * 1e-9, r.memory_available_bytes * 1e-9));
 
     const auto t1 = std::chrono::steady_clock::now();
-    serialize_openmp_regions();
-    cholmod_factorize(&M, factor_, &common_);
+    {
+      SerialOpenMpRegions serial;
+      cholmod_factorize(&M, factor_, &common_);
+    }
     r.factor_seconds = seconds_since(t1);
     r.peak_bytes = static_cast<double>(common_.memory_usage);
     r.supernodal = factor_->is_super != 0;

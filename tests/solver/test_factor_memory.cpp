@@ -1,8 +1,11 @@
-// The memory estimate made after the symbolic analysis, and the refusal it allows before the numeric
-// factorization allocates anything.
+// The memory estimate made after the symbolic analysis, the refusal it allows before the numeric
+// factorization allocates anything, and the factorization's threads.
 #include <gtest/gtest.h>
 
-#include <iostream>
+#include <dlfcn.h>
+
+#include <fstream>
+#include <string>
 
 #include "kinestat/solver/linear_solver_factory.hpp"
 
@@ -34,8 +37,6 @@ TEST(FactorMemory, EstimateBoundsTheFactorAndMatchesCholmodsPeak) {
   FactorizationReport r;
   ASSERT_TRUE(chol->Factorize(A, &r).ok());
   ASSERT_TRUE(r.supernodal);
-  std::cout << "nnz(L) " << r.nnz_factor << ", estimate " << r.factor_bytes << " B, CHOLMOD's peak " << r.peak_bytes
-            << " B\n";
   const double values = 8.0 * static_cast<double>(r.nnz_factor);
   EXPECT_GT(r.factor_bytes, values);
   EXPECT_LT(r.factor_bytes, 2.5 * values);  // indices and the supernodes' padding: 1.94 here
@@ -72,6 +73,28 @@ TEST(FactorMemory, RefusedBeforeTheNumericFactorizationWhenItDoesNotFit) {
   ASSERT_TRUE(roomy->Factorize(A, &r).ok());
   ASSERT_EQ(stages.size(), 1u);
   EXPECT_NE(stages[0].find("Gflop"), std::string::npos) << stages[0];
+}
+
+int thread_count() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("Threads:", 0) == 0) return std::stoi(line.substr(8));
+  return -1;
+}
+
+// CHOLMOD's OpenMP regions run on the calling thread (cholmod_cholesky.cpp): a supernodal
+// factorization starts no OpenMP team (its workers would stay alive afterwards), and the OpenMP
+// setting of the program around it is given back.
+TEST(FactorThreads, CholmodStartsNoOpenMpTeamAndRestoresTheSetting) {
+  auto* get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+  if (get == nullptr) GTEST_SKIP() << "CHOLMOD is built without OpenMP here";
+  const int levels = get();
+  const int threads = thread_count();
+  FactorizationReport r;
+  ASSERT_TRUE(make_sparse_cholesky()->Factorize(grid_laplacian(24), &r).ok());
+  ASSERT_TRUE(r.supernodal);
+  EXPECT_EQ(thread_count(), threads);
+  EXPECT_EQ(get(), levels);
 }
 
 }  // namespace
