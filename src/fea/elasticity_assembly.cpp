@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/huge_page_allocator.hpp"
 #include "kinestat/fea/tet_element.hpp"
 
 namespace kinestat::fea {
@@ -57,11 +58,13 @@ std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduce
 StatusOr<solver::SparseMatrix> assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D,
                                                   const std::vector<int>& material, const DofMap& map) {
   using Triplet = Eigen::Triplet<double, int>;
+  // Hundreds of MB at 100k dofs: huge pages (core/huge_page_allocator.hpp).
+  using Triplets = std::vector<Triplet, HugePageAllocator<Triplet>>;
   const int npe = mesh.nodes_per_element, ndof = 3 * npe;
-  tbb::enumerable_thread_specific<std::vector<Triplet>> local;
+  tbb::enumerable_thread_specific<Triplets> local;
   std::atomic<int> bad_element{-1};
   tbb::parallel_for(tbb::blocked_range<int>(0, mesh.num_elements(), 512), [&](const tbb::blocked_range<int>& range) {
-    std::vector<Triplet>& out = local.local();
+    Triplets& out = local.local();
     std::array<Vec3, 10> x;
     for (int e = range.begin(); e != range.end(); ++e) {
       const int* v = mesh.element(e);
@@ -89,13 +92,13 @@ StatusOr<solver::SparseMatrix> assemble_stiffness(const TetMesh& mesh, const std
     return Status::Invalid(fmt::format("tetrahedral mesh: element {} has a non-positive Jacobian (inverted or "
                                        "degenerate); remesh the link",
                                        bad_element.load()));
-  std::vector<Triplet> all;
+  Triplets all;
   size_t total = 0;
   for (const auto& part : local) total += part.size();
   all.reserve(total);
   for (auto& part : local) {
     all.insert(all.end(), part.begin(), part.end());
-    std::vector<Triplet>().swap(part);
+    Triplets().swap(part);
   }
   solver::SparseMatrix K(map.num_dofs, map.num_dofs);
   K.setFromTriplets(all.begin(), all.end());

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -9,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "fea/elasticity_assembly.hpp"
 #include "kinestat/fea/tet_element.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
@@ -43,6 +45,31 @@ std::vector<double> centroid_von_mises(const TetMesh& mesh, const std::vector<Ma
     vm[e] = von_mises(D[material.empty() ? 0 : material[e]] * (B * ue));
   });
   return vm;
+}
+
+// Mean length of the elements' corner edges (m): the mesh size the user chose, as meshed.
+double mean_edge_length(const TetMesh& mesh) {
+  double sum = 0.0;
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    const int* v = mesh.element(e);
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) sum += (mesh.nodes[v[a]] - mesh.nodes[v[b]]).norm();
+  }
+  return mesh.num_elements() > 0 ? sum / (6.0 * mesh.num_elements()) : 0.0;
+}
+
+// A factorization refused for memory, with what fits: the factor's memory grows as dofs^1.43
+// (nnz(L) of the bench bars, benchmarks/README.md) and the dofs as h^-3, so the memory as h^-4.3;
+// the size that fits keeps a 20 % margin.
+Status memory_refusal(const TetMesh& mesh, int dofs, const solver::FactorizationReport& f) {
+  const double ratio = f.factor_bytes / f.memory_available_bytes;
+  const double h = mean_edge_length(mesh), coarser = std::pow(1.2 * ratio, 1.0 / 4.3);
+  return check_size(
+      f.factor_bytes * 1e-9, f.memory_available_bytes * 1e-9,
+      fmt::format("link stiffness: {} dofs, memory for the Cholesky factor", dofs), "GB (the memory available)",
+      fmt::format("a mesh about {:.2g} times coarser would fit (mean edge now {:.3g} mm: --size {:.3g} mm, ~{:.2g} "
+                  "dofs), or use the iterative or distributed backend (--solver petsc, docs/fea.md \"Large meshes\")",
+                  coarser, h * 1e3, h * coarser * 1e3, dofs / std::pow(coarser, 3.0)));
 }
 
 }  // namespace
@@ -169,10 +196,13 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   }
 
   const auto t1 = std::chrono::steady_clock::now();
-  progress(fmt::format("factorizing {} dofs", map.num_dofs));
-  auto cholesky = solver::make_sparse_cholesky(options.cholesky);
+  progress(fmt::format("analysing {} dofs ({} matrix entries)", map.num_dofs, K->nonZeros()));
+  solver::SparseCholeskyOptions cholesky_options = options.cholesky;
+  if (!cholesky_options.progress) cholesky_options.progress = options.progress;
+  auto cholesky = solver::make_sparse_cholesky(cholesky_options);
   r.backend = cholesky->backend_description();
   if (Status s = cholesky->Factorize(*K, &r.factorization); !s.ok()) {
+    if (r.factorization.refused_for_memory()) return memory_refusal(mesh, map.num_dofs, r.factorization);
     if (s.code() == StatusCode::kSingular)
       return Status::Singular("link stiffness: the clamped link still has a free motion (" + s.message() +
                               "); the clamp region must hold at least three non-collinear nodes");

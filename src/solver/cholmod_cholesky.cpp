@@ -2,15 +2,21 @@
 #include "solver/cholmod_cholesky.hpp"
 
 #include <cholmod.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <limits>
+#include <mutex>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "kinestat/core/huge_page_allocator.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/solver/library_versions.hpp"
+#include "solver/available_memory.hpp"
 
 namespace kinestat::solver {
 namespace {
@@ -32,9 +38,99 @@ const char* ordering_name(int ordering) {
   }
 }
 
+// CHOLMOD's allocations (the factor L, its update workspace) through allocate_large: L's hundreds of
+// MB are touched first inside the numeric factorization, one 2 MB page fault instead of 512 small
+// ones. Process-wide (SuiteSparse_config is one global), set once before the first CHOLMOD call.
+void* cholmod_calloc(std::size_t count, std::size_t size) {
+  if (size != 0 && count > static_cast<std::size_t>(-1) / size) return nullptr;
+  void* p = allocate_large(count * size);
+  if (p) std::memset(p, 0, count * size);
+  return p;
+}
+
+void use_huge_pages_for_cholmod() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    SuiteSparse_config.malloc_func = allocate_large;
+    SuiteSparse_config.calloc_func = cholmod_calloc;
+    SuiteSparse_config.realloc_func = std::realloc;
+    SuiteSparse_config.free_func = std::free;
+  });
+}
+
+// The process's thread decision for a factorization: the BLAS (OpenBLAS, its own pthreads) uses the
+// cores; CHOLMOD's OpenMP loops run on the calling thread only. Debian's CHOLMOD 3.0.14 scatters each
+// supernode's update in `omp parallel` regions with a fixed team of 4, whatever OMP_NUM_THREADS says:
+// on 2 cores the ~90 000 regions of an 88k-dof factorization cost 90 000 futex sleeps and ~2 s of
+// system time, and the team's spinning threads take the cores from OpenBLAS's (benchmarks/README.md,
+// "Factorization rate"). max-active-levels 0 makes every parallel region inactive (a team of one).
+// kinestat itself uses TBB, not OpenMP, but a program around it (the Python module's users) may:
+// the previous value comes back when the last concurrent factorization ends (GCC 12's libgomp keeps
+// the value process-wide, hence the count; it is set on every entry for runtimes that keep it per
+// thread). The runtime is the one CHOLMOD loaded, found at run time; without one, nothing to do.
+class SerialOpenMpRegions {
+ public:
+  SerialOpenMpRegions() {
+    const Runtime& rt = runtime();
+    if (!rt.set) return;
+    std::lock_guard lock(mutex());
+    if (depth()++ == 0) saved() = rt.get();
+    rt.set(0);
+  }
+  ~SerialOpenMpRegions() {
+    const Runtime& rt = runtime();
+    if (!rt.set) return;
+    std::lock_guard lock(mutex());
+    if (--depth() == 0) rt.set(saved());
+  }
+  SerialOpenMpRegions(const SerialOpenMpRegions&) = delete;
+  SerialOpenMpRegions& operator=(const SerialOpenMpRegions&) = delete;
+
+ private:
+  struct Runtime {
+    int (*get)() = nullptr;
+    void (*set)(int) = nullptr;
+  };
+  static const Runtime& runtime() {
+    static const Runtime r = [] {
+      auto* get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+      auto* set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels"));
+      return get && set ? Runtime{get, set} : Runtime{};
+    }();
+    return r;
+  }
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& depth() {
+    static int d = 0;
+    return d;
+  }
+  static int& saved() {
+    static int v = 0;
+    return v;
+  }
+};
+
+// Bytes the numeric factorization of `A` (lower triangle, nnz_lower entries) will hold at its
+// peak, from the symbolic factor L: a supernodal L stores xsize values (nnz(L) plus the zeros of
+// relaxed amalgamation) and ssize row indices, and the factorization adds the largest supernode
+// update (maxcsize values); a simplicial L one value and one index per entry of L. Both add CHOLMOD's
+// permuted copy of A (value + index per entry) and O(n) workspace.
+double numeric_factorization_bytes(const cholmod_factor& L, const cholmod_common& c, double nnz_lower) {
+  constexpr double kValue = sizeof(double), kIndex = sizeof(int);
+  const double n = static_cast<double>(L.n);
+  const double factor = L.is_super ? kValue * static_cast<double>(L.xsize + L.maxcsize) +
+                                         kIndex * static_cast<double>(L.ssize + 4 * L.nsuper)
+                                   : (kValue + kIndex) * c.lnz + 2 * kIndex * n;
+  return factor + (kValue + kIndex) * nnz_lower + 16 * kValue * n;
+}
+
 class CholmodCholesky final : public SparseCholesky {
  public:
   explicit CholmodCholesky(const SparseCholeskyOptions& options) : options_(options) {
+    use_huge_pages_for_cholmod();
     cholmod_start(&common_);
     common_.print = 0;               // failures are reported through FactorizationReport
     common_.error_handler = nullptr;
@@ -58,39 +154,64 @@ class CholmodCholesky final : public SparseCholesky {
     r = FactorizationReport{};
     factor_ok_ = false;
     if (A.rows() != A.cols()) return Status::Internal("sparse Cholesky: matrix is not square");
-    lower_ = A.triangularView<Eigen::Lower>();
-    lower_.makeCompressed();
-    const int n = static_cast<int>(lower_.rows());
+    // The lower triangle CHOLMOD reads: A itself when it stores nothing else (the FEA and MSA
+    // assemblies keep the lower triangle only), else a copy; at 1M dofs the copy would be ~0.5 GB.
+    const bool lower_only = is_compressed_sorted_lower(A);
+    SparseMatrix copy;
+    if (!lower_only) {
+      copy = A.triangularView<Eigen::Lower>();
+      copy.makeCompressed();
+    }
+    const SparseMatrix& lower = lower_only ? A : copy;
+    const int n = static_cast<int>(lower.rows());
     r.n = n;
-    r.nnz_matrix = lower_.nonZeros();
-    cholmod_sparse M = view(lower_);
+    r.nnz_matrix = lower.nonZeros();
+    cholmod_sparse M = view(lower);
 
     const auto t0 = std::chrono::steady_clock::now();
-    const bool same_pattern = factor_ != nullptr && lower_.rows() == static_cast<long>(pattern_outer_.size()) - 1 &&
-                              std::equal(pattern_outer_.begin(), pattern_outer_.end(), lower_.outerIndexPtr()) &&
-                              static_cast<long>(pattern_inner_.size()) == lower_.nonZeros() &&
-                              std::equal(pattern_inner_.begin(), pattern_inner_.end(), lower_.innerIndexPtr());
+    const bool same_pattern = factor_ != nullptr && lower.rows() == static_cast<long>(pattern_outer_.size()) - 1 &&
+                              std::equal(pattern_outer_.begin(), pattern_outer_.end(), lower.outerIndexPtr()) &&
+                              static_cast<long>(pattern_inner_.size()) == lower.nonZeros() &&
+                              std::equal(pattern_inner_.begin(), pattern_inner_.end(), lower.innerIndexPtr());
     if (!same_pattern) {
       if (factor_) cholmod_free_factor(&factor_, &common_);
       factor_ = cholmod_analyze(&M, &common_);
       if (!factor_ || common_.status < CHOLMOD_OK)
         return Status::Internal(fmt::format("CHOLMOD analysis failed (status {})", common_.status));
       ++analyses_;
-      pattern_outer_.assign(lower_.outerIndexPtr(), lower_.outerIndexPtr() + n + 1);
-      pattern_inner_.assign(lower_.innerIndexPtr(), lower_.innerIndexPtr() + lower_.nonZeros());
+      pattern_outer_.assign(lower.outerIndexPtr(), lower.outerIndexPtr() + n + 1);
+      pattern_inner_.assign(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
       last_flops_ = common_.fl;
       last_lnz_ = common_.lnz;
       last_ordering_ = ordering_name(common_.method[common_.selected].ordering);
+      last_bytes_ = numeric_factorization_bytes(*factor_, common_, static_cast<double>(lower.nonZeros()));
+      last_available_ = options_.memory_limit_bytes > 0.0 ? options_.memory_limit_bytes : available_memory_bytes();
     }
     r.reused_symbolic = same_pattern;
     r.analyze_seconds = same_pattern ? 0.0 : seconds_since(t0);
     r.flops = last_flops_;
     r.nnz_factor = static_cast<long>(last_lnz_);
     r.ordering = last_ordering_;
+    r.factor_bytes = last_bytes_;
+    r.memory_available_bytes = last_available_;
+    // Refused before cholmod_factorize allocates the factor; the symbolic factor is kept (a retry with
+    // the same pattern does not redo the analysis).
+    if (r.refused_for_memory())
+      return check_size(r.factor_bytes * 1e-9, r.memory_available_bytes * 1e-9,
+                        fmt::format("sparse Cholesky of {} unknowns (nnz(L) = {:.3g}): memory", n, last_lnz_),
+                        "GB (the memory available)",
+                        "make the model smaller or use the distributed backend (--solver petsc)");
+    if (options_.progress)
+      options_.progress(fmt::format("factorizing: {:.3g} Gflop, {:.3g} GB of {:.3g} GB available", r.flops * 1e-9,
+                                    r.factor_bytes * 1e-9, r.memory_available_bytes * 1e-9));
 
     const auto t1 = std::chrono::steady_clock::now();
-    cholmod_factorize(&M, factor_, &common_);
+    {
+      SerialOpenMpRegions serial;
+      cholmod_factorize(&M, factor_, &common_);
+    }
     r.factor_seconds = seconds_since(t1);
+    r.peak_bytes = static_cast<double>(common_.memory_usage);
     r.supernodal = factor_->is_super != 0;
     if (common_.status < CHOLMOD_OK)
       return Status::Internal(fmt::format("CHOLMOD factorization failed (status {}, out of memory?)", common_.status));
@@ -98,7 +219,7 @@ class CholmodCholesky final : public SparseCholesky {
     const int computed = (common_.status == CHOLMOD_NOT_POSDEF) ? static_cast<int>(factor_->minor) : n;
     const int* perm = static_cast<const int*>(factor_->Perm);
     if (computed < n) r.failed_column = perm ? perm[computed] : computed;
-    check_pivots(computed, r);
+    check_pivots(lower, computed, r);
     if (r.singular()) {
       return Status::Singular(r.failed_column >= 0
                                   ? fmt::format("pivot of column {} is not positive", r.failed_column)
@@ -142,14 +263,26 @@ class CholmodCholesky final : public SparseCholesky {
     common_.postorder = 1;
   }
 
-  static cholmod_sparse view(SparseMatrix& S) {
+  // Every column's row indices strictly increasing and on or below the diagonal.
+  static bool is_compressed_sorted_lower(const SparseMatrix& A) {
+    if (!A.isCompressed()) return false;
+    const int* p = A.outerIndexPtr();
+    const int* i = A.innerIndexPtr();
+    for (int j = 0; j < A.outerSize(); ++j)
+      for (int k = p[j]; k < p[j + 1]; ++k)
+        if (i[k] < j || (k > p[j] && i[k] <= i[k - 1])) return false;
+    return true;
+  }
+
+  // CHOLMOD's analysis and factorization read the matrix only (cholmod_sparse has no const view).
+  static cholmod_sparse view(const SparseMatrix& S) {
     cholmod_sparse M{};
     M.nrow = S.rows();
     M.ncol = S.cols();
     M.nzmax = S.nonZeros();
-    M.p = S.outerIndexPtr();
-    M.i = S.innerIndexPtr();
-    M.x = S.valuePtr();
+    M.p = const_cast<int*>(S.outerIndexPtr());
+    M.i = const_cast<int*>(S.innerIndexPtr());
+    M.x = const_cast<double*>(S.valuePtr());
     M.stype = -1;  // symmetric, lower triangle stored
     M.itype = CHOLMOD_INT;
     M.xtype = CHOLMOD_REAL;
@@ -160,7 +293,7 @@ class CholmodCholesky final : public SparseCholesky {
   }
 
   // Pivot d_j of each computed column (diag(L)^2 for LL', D for LDL'), against A_jj.
-  void check_pivots(int computed, FactorizationReport& r) const {
+  void check_pivots(const SparseMatrix& lower, int computed, FactorizationReport& r) const {
     const int n = static_cast<int>(factor_->n);
     std::vector<double> pivot(n, 0.0);
     const double* x = static_cast<const double*>(factor_->x);
@@ -186,7 +319,7 @@ class CholmodCholesky final : public SparseCholesky {
     r.min_pivot_ratio = std::numeric_limits<double>::infinity();
     for (int j = 0; j < computed; ++j) {
       const int col = perm ? perm[j] : j;
-      const double ajj = lower_.coeff(col, col);
+      const double ajj = lower.coeff(col, col);
       const double ratio = ajj > 0 ? pivot[j] / ajj : 0.0;
       if (ratio < r.min_pivot_ratio) {
         r.min_pivot_ratio = ratio;
@@ -203,9 +336,8 @@ class CholmodCholesky final : public SparseCholesky {
   SparseCholeskyOptions options_;
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
-  SparseMatrix lower_;
   std::vector<int> pattern_outer_, pattern_inner_;
-  double last_flops_ = 0.0, last_lnz_ = 0.0;
+  double last_flops_ = 0.0, last_lnz_ = 0.0, last_bytes_ = 0.0, last_available_ = 0.0;
   std::string last_ordering_;
   int analyses_ = 0;
   bool factor_ok_ = false;

@@ -79,6 +79,28 @@ TEST(SparseCholesky, StiffSpringsAreNotMistakenForMechanisms) {
 }
 
 // The factory makes the backend the options name, configured by them, and knows its names.
+// A lower-triangle-only matrix (what the assemblies store) is read in place, a full one through a
+// copy of its lower half: the same solution, and the dense solver's.
+TEST(SparseCholesky, LowerTriangleInPlaceAndFullMatrixGiveTheSameSolution) {
+  const SparseMatrix full = spring_chain(40, 1e3, 1e3);
+  const SparseMatrix lower = [&] {
+    SparseMatrix l = full.triangularView<Eigen::Lower>();
+    l.makeCompressed();
+    return l;
+  }();
+  const MatX B = MatX::Random(full.rows(), 2);
+  const MatX expected = MatX(full).llt().solve(B);
+  for (const SparseMatrix* A : {&full, &lower}) {
+    auto chol = make_sparse_cholesky();
+    FactorizationReport r;
+    ASSERT_TRUE(chol->Factorize(*A, &r).ok());
+    EXPECT_EQ(r.nnz_matrix, lower.nonZeros());
+    MatX X;
+    ASSERT_TRUE(chol->Solve(B, &X).ok());
+    EXPECT_LT((X - expected).norm(), 1e-12 * expected.norm());
+  }
+}
+
 TEST(LinearSolverFactory, MakesTheNamedBackendWithTheCallersOptions) {
   for (Backend b : available_backends()) EXPECT_EQ(backend_from_name(backend_name(b)), b);
   EXPECT_EQ(backend_from_name("cholmod"), Backend::kCholmod);

@@ -4,6 +4,7 @@
 // implementation of this class and a factory entry, not a change to the methods.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ struct SparseCholeskyOptions {
   // mechanism's null mode gives ~1e-16, and stiff-spring models (joint springs 1e9 times stiffer
   // than the beams) still pass with ~1e-10.
   double singular_pivot_ratio = 1e-12;
+  // Memory the numeric factorization may take, bytes; 0: MemAvailable of /proc/meminfo at the time
+  // of the symbolic analysis. A factorization estimated above it (FactorizationReport::factor_bytes)
+  // is refused after the analysis, before its memory is allocated (kInvalidInput naming both).
+  double memory_limit_bytes = 0.0;
+  // Told, when set, what the numeric factorization is about to do (its flops and memory) once the
+  // analysis is done: progress for large models (the caller prints it on stderr).
+  std::function<void(const std::string& stage)> progress = nullptr;
 };
 
 // What a factorization did and found; printed by the MSA/FEA summaries.
@@ -45,6 +53,13 @@ struct FactorizationReport {
   std::string ordering;         // "AMD", "METIS", "natural", ...
   double analyze_seconds = 0.0;
   double factor_seconds = 0.0;
+  // Memory: the analysis's estimate for the numeric factorization (the factor with its supernodes'
+  // padding, the update workspace, the permuted matrix), what was available, and what the backend
+  // counted at its peak (0 when it does not count).
+  double factor_bytes = 0.0;
+  double memory_available_bytes = 0.0;
+  double peak_bytes = 0.0;
+  bool refused_for_memory() const { return factor_bytes > memory_available_bytes && memory_available_bytes > 0.0; }
   // Pivot check, in the user's (unpermuted) column numbering.
   int failed_column = -1;       // first column whose pivot was not positive (factorization stopped)
   std::vector<int> weak_columns;  // columns with pivot ratio below the tolerance (free motions)
