@@ -18,8 +18,10 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 enum class Ordering { kAuto, kAmd, kMetis, kNatural };
 
-// The implementations behind SparseCholesky (solver/linear_solver_factory.hpp makes them).
-enum class Backend { kCholmod };
+// The implementations behind SparseCholesky (solver/linear_solver_factory.hpp makes them):
+// CHOLMOD (shared memory), and PETSc over MPI (docs/fea.md, "Large meshes"): MUMPS's distributed
+// Cholesky, or conjugate gradients preconditioned by smoothed-aggregation multigrid (GAMG).
+enum class Backend { kCholmod, kPetscMumps, kPetscCg };
 
 // What the caller chooses; passed unchanged to every factorization made for that caller
 // (its solves, the null-space diagnosis, a regularized solve), only the pivot check varies.
@@ -32,6 +34,21 @@ struct SparseCholeskyOptions {
   // mechanism's null mode gives ~1e-16, and stiff-spring models (joint springs 1e9 times stiffer
   // than the beams) still pass with ~1e-10.
   double singular_pivot_ratio = 1e-12;
+  // kPetscCg: stop when ||b - A x|| <= relative_tolerance ||b|| (true residual) for each right-hand
+  // side. The compliance C = F^T X is a functional of x, so its error is of order cond(A) * tol^2
+  // relative in the energy norm; 1e-10 keeps the bundled links' 6x6 within 1e-7 of CHOLMOD's
+  // (tests/mpi/compare_link_stiffness.py checks 1e-6) with margin for meshes 100x larger.
+  double relative_tolerance = 1e-10;
+  int max_iterations = 20000;
+};
+
+// What a solve did, per right-hand side (iterative backends; a direct one reports 0 iterations and
+// the residual of its solution).
+struct SolveReport {
+  std::vector<int> iterations;             // per column of B
+  std::vector<double> relative_residual;   // ||b - A x|| / ||b|| per column
+  double relative_tolerance = 0.0;         // the stopping tolerance (0: direct solve)
+  double seconds = 0.0;
 };
 
 // What a factorization did and found; printed by the MSA/FEA summaries.
@@ -65,6 +82,14 @@ class SparseCholesky {
 
   // Solves A X = B for all columns of B with the last successful factorization.
   virtual Status Solve(const MatX& B, MatX* X) const = 0;
+
+  // Solve, and what it took per column. The default (direct backends) reports no iterations.
+  virtual Status SolveAndReport(const MatX& B, MatX* X, SolveReport* report) const;
+
+  // The rigid-body modes of A's unconstrained structure (n x 6, the columns need not be orthonormal),
+  // used by multigrid preconditioners as near-null space; ignored by direct backends. Call before
+  // Factorize.
+  virtual void SetNearNullSpace(const MatX& /*modes*/) {}
 
   // How many symbolic analyses this object has done (a posture sweep should do one).
   virtual int num_symbolic_analyses() const = 0;
