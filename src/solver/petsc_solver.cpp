@@ -101,7 +101,7 @@ class PetscSolver final : public SparseCholesky {
               "the matrix is singular or not positive definite (a free motion), or give a larger --max-iterations",
               backend_name(options_.backend), k + 1, iterations, KSPConvergedReasons[reason], relative,
               options_.relative_tolerance));
-        rep.iterations.push_back(static_cast<int>(iterations));
+        rep.iterations.push_back(iterative() ? static_cast<int>(iterations) : 0);  // preonly counts the one solve
         rep.relative_residual.push_back(relative);
         KINESTAT_PETSC(VecScatterBegin(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
         KINESTAT_PETSC(VecScatterEnd(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
@@ -202,6 +202,11 @@ class PetscSolver final : public SparseCholesky {
       KINESTAT_PETSC(KSPSetType(ksp_, KSPPREONLY));
       KINESTAT_PETSC(PCSetType(pc, PCCHOLESKY));
       KINESTAT_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+      // Null-pivot detection (MUMPS ICNTL(24)): a free motion must stop here, not give numbers.
+      KINESTAT_PETSC(PCFactorSetUpMatSolverType(pc));
+      Mat factor;
+      KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
+      KINESTAT_PETSC(MatMumpsSetIcntl(factor, 24, 1));
       r->ordering = "MUMPS automatic";
     }
     // PETSC_OPTIONS (e.g. "-ksp_monitor -pc_gamg_threshold 0.01") may tune the solver further.
@@ -217,9 +222,16 @@ class PetscSolver final : public SparseCholesky {
     }
     if (!iterative()) {
       Mat factor;
-      PetscInt entries = 0;
+      PetscInt entries = 0, null_pivots = 0;
       PetscReal flops = 0.0;
       KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
+      KINESTAT_PETSC(MatMumpsGetInfog(factor, 28, &null_pivots));
+      if (null_pivots > 0) {
+        r->failed_column = 0;  // MUMPS does not say which
+        Release();
+        return Status::Singular(fmt::format("MUMPS found {} null pivot{}: the matrix is singular (a free motion)",
+                                            null_pivots, null_pivots == 1 ? "" : "s"));
+      }
       KINESTAT_PETSC(MatMumpsGetInfog(factor, 29, &entries));  // entries of the factor (< 0: millions)
       KINESTAT_PETSC(MatMumpsGetRinfog(factor, 3, &flops));    // flops of the elimination (estimated)
       r->nnz_factor = entries >= 0 ? static_cast<long>(entries) : -1000000L * static_cast<long>(entries);

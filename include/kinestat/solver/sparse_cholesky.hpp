@@ -35,9 +35,11 @@ struct SparseCholeskyOptions {
   // than the beams) still pass with ~1e-10.
   double singular_pivot_ratio = 1e-12;
   // kPetscCg: stop when ||b - A x|| <= relative_tolerance ||b|| (true residual) for each right-hand
-  // side. The compliance C = F^T X is a functional of x, so its error is of order cond(A) * tol^2
-  // relative in the energy norm; 1e-10 keeps the bundled links' 6x6 within 1e-7 of CHOLMOD's
-  // (tests/mpi/compare_link_stiffness.py checks 1e-6) with margin for meshes 100x larger.
+  // side. The 6x6 of a link is read off the solutions, so its relative error follows the residual's:
+  // on meshes/bar.off (5 289 dofs) max |dC_ij| / sqrt(C_ii C_jj) was 0.07-0.2 x the tolerance (7e-6
+  // at 1e-4, 1.2e-7 at 1e-6, 1.7e-9 at 1e-8). The bound grows with the condition number (finer
+  // meshes), so the default 1e-10 keeps the 6x6 within 1e-6 with four orders of margin, for ~30 %
+  // more iterations than 1e-7 (tests/mpi/compare_link_stiffness.py checks 1e-6 against CHOLMOD).
   double relative_tolerance = 1e-10;
   int max_iterations = 20000;
 };
