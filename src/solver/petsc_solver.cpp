@@ -151,9 +151,9 @@ class PetscSolver final : public SparseCholesky {
     const auto t0 = std::chrono::steady_clock::now();
     n_ = static_cast<int>(lower.rows());
     r->n = n_;
-    // Both triangles: column i is then row i, the row this rank gives PETSc.
-    const SparseMatrix full = lower.selfadjointView<Eigen::Lower>();
-    r->nnz_matrix = (full.nonZeros() + n_) / 2;
+    // PETSc wants both triangles of its rows. The lower triangle (column-major) holds row c's upper
+    // part in column c, and row r's strictly lower part spread over the columns c < r: counted and
+    // inserted in one pass each, without a second (full) copy of the matrix.
     // Rows in blocks of 3 (x, y, z of a node) when the dofs come in triples, as GAMG's aggregates want.
     const PetscInt bs = n_ % 3 == 0 ? 3 : 1;
     PetscInt local = PETSC_DECIDE, global = n_;
@@ -162,10 +162,18 @@ class PetscSolver final : public SparseCholesky {
     MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
     rstart_ = end - local;
     rend_ = end;
+    auto owned = [&](PetscInt row) { return row >= rstart_ && row < rend_; };
     std::vector<PetscInt> diagonal_nnz(local, 0), off_nnz(local, 0);
-    for (PetscInt i = rstart_; i < rend_; ++i)
-      for (SparseMatrix::InnerIterator it(full, static_cast<int>(i)); it; ++it)
-        ++(it.row() >= rstart_ && it.row() < rend_ ? diagonal_nnz : off_nnz)[i - rstart_];
+    auto count = [&](PetscInt row, PetscInt col) {
+      ++(owned(col) ? diagonal_nnz : off_nnz)[row - rstart_];
+    };
+    for (int c = 0; c < n_; ++c)
+      for (SparseMatrix::InnerIterator it(lower, c); it; ++it) {
+        if (it.row() < c) continue;  // an upper entry: ignored
+        ++r->nnz_matrix;
+        if (owned(it.row())) count(it.row(), c);
+        if (it.row() != c && owned(c)) count(c, it.row());
+      }
     KINESTAT_PETSC(MatCreate(PETSC_COMM_WORLD, &A_));
     KINESTAT_PETSC(MatSetSizes(A_, local, local, n_, n_));
     KINESTAT_PETSC(MatSetType(A_, MATAIJ));
@@ -173,11 +181,19 @@ class PetscSolver final : public SparseCholesky {
     KINESTAT_PETSC(MatSeqAIJSetPreallocation(A_, 0, diagonal_nnz.data()));
     KINESTAT_PETSC(MatMPIAIJSetPreallocation(A_, 0, diagonal_nnz.data(), 0, off_nnz.data()));
     std::vector<PetscInt> columns;
-    for (PetscInt i = rstart_; i < rend_; ++i) {
-      const auto begin = full.outerIndexPtr()[i], count = full.outerIndexPtr()[i + 1] - begin;
-      columns.assign(full.innerIndexPtr() + begin, full.innerIndexPtr() + begin + count);
-      KINESTAT_PETSC(MatSetValues(A_, 1, &i, static_cast<PetscInt>(count), columns.data(), full.valuePtr() + begin,
-                                  INSERT_VALUES));
+    std::vector<PetscScalar> values;
+    for (PetscInt c = 0; c < n_; ++c) {
+      columns.clear();
+      values.clear();
+      for (SparseMatrix::InnerIterator it(lower, static_cast<int>(c)); it; ++it) {
+        if (it.row() < c) continue;
+        if (owned(c)) columns.push_back(it.row()), values.push_back(it.value());  // row c, upper part
+        if (it.row() != c && owned(it.row()))  // row r, lower part
+          KINESTAT_PETSC(MatSetValue(A_, it.row(), c, it.value(), INSERT_VALUES));
+      }
+      if (!columns.empty())
+        KINESTAT_PETSC(MatSetValues(A_, 1, &c, static_cast<PetscInt>(columns.size()), columns.data(), values.data(),
+                                    INSERT_VALUES));
     }
     KINESTAT_PETSC(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
     KINESTAT_PETSC(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
