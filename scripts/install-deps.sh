@@ -26,6 +26,12 @@ PACKAGES=(
   plplot-driver-cairo      # ... through PLplot's pngcairo device
 )
 
+# Optional: the distributed backends petsc-mumps and petsc-cg (docs/fea.md, "Large meshes").
+# Installed with --petsc (scripts/test.sh, so CI covers them); demo.sh does without.
+if [ "${1:-}" = "--petsc" ]; then
+  PACKAGES+=(libpetsc-real-dev)  # PETSc 3.18 with Open MPI (mpiexec), MUMPS and hypre
+fi
+
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -3,7 +3,8 @@
 # installed package with an outside project (scripts/check_install.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/build.sh
+# PETSc too, so that the distributed backends are built and tested on 1 and 2 MPI ranks.
+KINESTAT_PETSC=1 scripts/build.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 (cd build && ctest --output-on-failure -j"$jobs" --timeout 600)
 scripts/check_install.sh

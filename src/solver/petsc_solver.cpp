@@ -198,7 +198,9 @@ class PetscSolver final : public SparseCholesky {
     KINESTAT_PETSC(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
     KINESTAT_PETSC(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
     KINESTAT_PETSC(MatSetOption(A_, MAT_SYMMETRIC, PETSC_TRUE));
-    KINESTAT_PETSC(MatSetOption(A_, MAT_SPD, PETSC_TRUE));
+    // SPD only for CG: MUMPS then runs its symmetric-indefinite LDL^T (SYM=2), the one mode with
+    // null-pivot detection and a count of negative pivots, which check positive definiteness below.
+    if (iterative()) KINESTAT_PETSC(MatSetOption(A_, MAT_SPD, PETSC_TRUE));
     if (iterative() && near_null_.rows() == n_ && near_null_.cols() > 0) KINESTAT_PETSC(AttachNearNullSpace());
     r->analyze_seconds = seconds_since(t0);
 
@@ -218,11 +220,15 @@ class PetscSolver final : public SparseCholesky {
       KINESTAT_PETSC(KSPSetType(ksp_, KSPPREONLY));
       KINESTAT_PETSC(PCSetType(pc, PCCHOLESKY));
       KINESTAT_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-      // Null-pivot detection (MUMPS ICNTL(24)): a free motion must stop here, not give numbers.
+      // Null-pivot detection (MUMPS ICNTL(24)): a free motion must stop here, not give numbers. A
+      // pivot below CNTL(3) * ||A|| (of MUMPS's scaled matrix) is null: the mechanism's pivot is
+      // round-off, which MUMPS's default threshold (1e-5 eps ||A||) lets pass; the same ratio as
+      // CHOLMOD's pivot check.
       KINESTAT_PETSC(PCFactorSetUpMatSolverType(pc));
       Mat factor;
       KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
       KINESTAT_PETSC(MatMumpsSetIcntl(factor, 24, 1));
+      KINESTAT_PETSC(MatMumpsSetCntl(factor, 3, options_.singular_pivot_ratio));
       r->ordering = "MUMPS automatic";
     }
     // PETSC_OPTIONS (e.g. "-ksp_monitor -pc_gamg_threshold 0.01") may tune the solver further.
@@ -238,15 +244,17 @@ class PetscSolver final : public SparseCholesky {
     }
     if (!iterative()) {
       Mat factor;
-      PetscInt entries = 0, null_pivots = 0;
+      PetscInt entries = 0, null_pivots = 0, negative_pivots = 0;
       PetscReal flops = 0.0;
       KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
       KINESTAT_PETSC(MatMumpsGetInfog(factor, 28, &null_pivots));
-      if (null_pivots > 0) {
+      KINESTAT_PETSC(MatMumpsGetInfog(factor, 12, &negative_pivots));
+      if (null_pivots > 0 || negative_pivots > 0) {
         r->failed_column = 0;  // MUMPS does not say which
         Release();
-        return Status::Singular(fmt::format("MUMPS found {} null pivot{}: the matrix is singular (a free motion)",
-                                            null_pivots, null_pivots == 1 ? "" : "s"));
+        return Status::Singular(fmt::format("MUMPS found {} null and {} negative pivots: the matrix is singular (a "
+                                            "free motion) or not positive definite",
+                                            null_pivots, negative_pivots));
       }
       KINESTAT_PETSC(MatMumpsGetInfog(factor, 29, &entries));  // entries of the factor (< 0: millions)
       KINESTAT_PETSC(MatMumpsGetRinfog(factor, 3, &flops));    // flops of the elimination (estimated)
