@@ -24,6 +24,7 @@ PACKAGES=(
   python3-matplotlib       # the Python examples' pictures (examples/python)
   libplplot-dev            # PNG maps (kinestat map/design --png) ...
   plplot-driver-cairo      # ... through PLplot's pngcairo device
+  clang-16 libclang-rt-16-dev libfuzzer-16-dev  # scripts/sanitize.sh, scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 
 # Optional: the distributed backends petsc-mumps and petsc-cg (docs/fea.md, "Large meshes").

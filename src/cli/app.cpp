@@ -38,6 +38,9 @@ int exit_code_for(const Status& status) {
   switch (status.code()) {
     case StatusCode::kOk: return kExitOk;
     case StatusCode::kInvalidInput: return kExitBadInput;
+    // An iterative method that does not converge on the user's input (a load beyond the buckling load,
+    // targets no model meets): a property of the input, reported with its reason.
+    case StatusCode::kNotConverged: return kExitBadInput;
     case StatusCode::kSingular: return kExitSingular;
     default: return kExitInternal;
   }

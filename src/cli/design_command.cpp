@@ -25,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "cli/command_output.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/io/orthoglide_results_json.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
@@ -48,6 +49,7 @@ struct DesignArgs {
   int vtk_grid = 21;
   int search_points = 41;
   std::vector<double> encoder_offsets_mm = {5.0, 10.0};  // section 6's examples
+  double max_points = 2e6;
   OutputOptions out;
 };
 
@@ -120,8 +122,9 @@ void print_paper_analyses(std::ostream& out, const mechanisms::MinimumSwitchPoin
 int run_design(const DesignArgs& a, Context& ctx) {
   auto fail = [&ctx](const Status& s) { return report_failure(ctx, "design orthoglide", s); };
   // Checked here too, to name the option and its unit in the message.
-  if (!(std::isfinite(a.cube_mm) && a.cube_mm > 0.0))
-    return fail(Status::Invalid(fmt::format("--cube {} mm: the cube edge must be positive", a.cube_mm)));
+  if (Status s = check_quantity(a.cube_mm, Quantity::kLength, "--cube (the cube edge)", {kMm, "mm"}, Sign::kPositive);
+      !s.ok())
+    return fail(s);
   if (!(a.mu > 0.0 && a.mu < 1.0))
     return fail(Status::Invalid(
         fmt::format("--mu {}: must lie strictly between 0 and 1 (the factors are bounded to [mu, 1/mu])", a.mu)));
@@ -129,6 +132,16 @@ int run_design(const DesignArgs& a, Context& ctx) {
     return fail(Status::Invalid(fmt::format("--strategy {}: must be 1, 2 or 3", *a.strategy)));
   if (a.vtk_grid < 2 || a.search_points < 2)
     return fail(Status::Invalid("--vtk-grid and --search-points must be at least 2"));
+  // Sizes estimated before anything is allocated or searched.
+  const double n = a.search_points;
+  for (const Status& s : {check_size(std::pow(static_cast<double>(a.vtk_grid), 3.0), a.max_points,
+                                     fmt::format("--vtk-grid {}", a.vtk_grid), "joint-grid points (N^3)",
+                                     "give a smaller --vtk-grid or raise the limit with --max-points"),
+                          check_size(7.0 * n * n + std::pow(n / 4.0, 3.0), a.max_points,
+                                     fmt::format("--search-points {}", a.search_points),
+                                     "points searched per design (~7 N^2 + N^3/64)",
+                                     "give a smaller --search-points or raise the limit with --max-points")})
+    if (!s.ok()) return fail(s);
   for (double e : a.encoder_offsets_mm)
     if (!std::isfinite(e))
       return fail(Status::Invalid(fmt::format("--encoder-offsets {} mm: every offset must be a finite number", e)));
@@ -152,7 +165,8 @@ int run_design(const DesignArgs& a, Context& ctx) {
     print_design(out.report(), designs[i], checks[i]);
     if (!a.vtk_dir.empty()) {
       std::vector<std::string> written;
-      if (Status st = io::write_orthoglide_workspace_vtk(designs[i], a.vtk_grid, a.vtk_dir, &written); !st.ok())
+      if (Status st = io::write_orthoglide_workspace_vtk(designs[i], a.vtk_grid, a.vtk_dir, &written, a.max_points);
+          !st.ok())
         return fail(st);
       for (const auto& path : written) out.report() << "  wrote " << path << " (lengths in m)\n";
     }
@@ -407,6 +421,9 @@ void register_design_command(CLI::App& app, Context& ctx) {
                   "encoder offsets, in mm, whose effect on the cube's factors is reported: every slider that much "
                   "further out than commanded (default 5,10)")
       ->delimiter(',');
+  cmd->add_option("--max-points", args->max_points,
+                  "refuse --vtk-grid N (N^3 points) or --search-points N (~7 N^2 + N^3/64 points) above this")
+      ->capture_default_str();
   add_output_options(*cmd, args->out, "kinestat-orthoglide-design");
   cmd->callback([args, &ctx] { ctx.exit_code = run_design(*args, ctx); });
   add_five_bar_design(design, ctx);

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "cli/command_output.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/mesh_convergence.hpp"
@@ -54,7 +55,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   struct Args {
     std::string mesh, material = "steel", clamp, reference, unit = "mm", model = "rigid", vtk_dir, cache_dir;
     std::string reference_point, solver = "cholmod";
-    double size_mm = 0.0, stiff_ratio = 1e4;
+    std::optional<double> size_mm;  // absent: the default size; given: checked, never replaced
+    double stiff_ratio = 1e4, max_elements = fea::MeshingOptions{}.max_elements;
     double cg_rtol = solver::SparseCholeskyOptions{}.relative_tolerance;
     int max_iterations = solver::SparseCholeskyOptions{}.max_iterations;
     bool linear = false;
@@ -78,6 +80,10 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->check(CLI::IsMember({"mm", "m"}))
       ->capture_default_str();
   cmd->add_option("--size", args->size_mm, "tetrahedron size (mm; default: 1/20 of the part's largest extent)");
+  cmd->add_option("--max-elements", args->max_elements,
+                  "refuse to mesh when more tetrahedra than this are estimated (4 V/h^3 + 1.3 A/h^2, "
+                  "docs/reliability.md)")
+      ->capture_default_str();
   cmd->add_flag("--linear", args->linear, "4-node tetrahedra (default 10-node; linear ones lock in bending)");
   cmd->add_flag("--convergence", args->convergence,
                 "also solve three meshes of size h, h/1.5, h/2.25 (h: --size, at most 1/3 of the part's thinnest "
@@ -124,7 +130,12 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     fea::LinkStiffnessRequest request;
     request.mesh_file = args->mesh;
     request.unit_scale = scale;
-    request.mesh_size = args->size_mm * kMm;  // 0: the default size
+    if (args->size_mm) {
+      if (Status s = check_quantity(*args->size_mm, Quantity::kLength, "--size", {kMm, "mm"}, Sign::kPositive); !s.ok())
+        return fail(s);
+      request.mesh_size = *args->size_mm * kMm;
+    }
+    request.max_elements = args->max_elements;
     request.quadratic = !args->linear;
     request.cache_dir = args->cache_dir;
     auto material = fea::parse_material(args->material, "--material " + args->material, kMPa);
@@ -140,9 +151,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     options.reference_model = args->model == "rigid" ? fea::ReferenceModel::kRigidCoupling : fea::ReferenceModel::kStiffBody;
     options.stiff_body_ratio = args->stiff_ratio;
     if (!args->reference_point.empty()) {
-      auto p = fea::parse_numbers(args->reference_point, 3, "--reference-point");
+      auto p = fea::parse_point(args->reference_point, scale, "--reference-point");
       if (!p.ok()) return fail(p.status());
-      options.reference_point = Vec3((*p)[0], (*p)[1], (*p)[2]) * scale;
+      options.reference_point = *p;
     }
     options.cholesky.backend = backend;
     options.cholesky.relative_tolerance = args->cg_rtol;

@@ -128,7 +128,7 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
                      std::ceil(box->max(i) / kMm / step - 1e-9) * step * kMm};
   }
   s.curves = five_bar_singular_loci(o.params, o.mode, o.assembly);
-  s.kernel = make_reference_five_bar_kernel(o);
+  s.kernel = make_five_bar_kernel(o);
   return s;
 }
 
@@ -170,7 +170,7 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   o.architecture = model->architecture;
   s.workspace_hint = fmt::format("every point is outside a leg's reach (L = {:.1f} mm about the slider axes)",
                                  o.model.link_length / kMm);
-  s.kernel = make_reference_orthoglide_kernel(o);
+  s.kernel = make_orthoglide_kernel(o);
   return s;
 }
 

@@ -25,6 +25,7 @@ struct VjmArgs {
   std::vector<double> point;   // mm
   std::vector<double> load;    // mm, deg
   std::vector<double> wrench;  // N, N mm
+  int max_coordinates = vjm::kDefaultMaxChainCoordinates;
   OutputOptions out;
 };
 
@@ -71,7 +72,11 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   if (Status s = io::resolve_fea_springs(*model, progress); !s.ok()) return bad(s);
   StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, point);
   if (!chains.ok()) return bad(chains.status());
-  StatusOr<CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains);
+  vjm::StiffnessOptions stiffness_options;
+  stiffness_options.max_chain_coordinates = a.max_coordinates;
+  vjm::EquilibriumOptions equilibrium_options;
+  equilibrium_options.max_chain_coordinates = a.max_coordinates;
+  StatusOr<CartesianStiffness> K0 = vjm::platform_unloaded_stiffness(*chains, stiffness_options);
   if (!K0.ok()) return bad(K0.status());
 
   io::VjmResults results;
@@ -89,8 +94,9 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   Status result = K0->status;
 
   if (displacement || wrench) {
-    StatusOr<vjm::PlatformState> state = displacement ? vjm::platform_equilibrium(*chains, *displacement)
-                                                      : vjm::platform_equilibrium_under_wrench(*chains, *wrench);
+    StatusOr<vjm::PlatformState> state =
+        displacement ? vjm::platform_equilibrium(*chains, *displacement, equilibrium_options)
+                     : vjm::platform_equilibrium_under_wrench(*chains, *wrench, equilibrium_options);
     if (!state.ok()) return bad(state.status());
     const Vec6& t = state->displacement;
     const Vec6& F = state->wrench;
@@ -100,7 +106,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
                  << fmt::format("  wrench F = ({:.6e}, {:.6e}, {:.6e}) N, M = ({:.6e}, {:.6e}, {:.6e}) N mm\n", F(0),
                                 F(1), F(2), F(3) / kMm, F(4) / kMm, F(5) / kMm);
     results.state = *state;
-    StatusOr<CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state);
+    StatusOr<CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state, stiffness_options);
     if (!KF.ok()) return bad(KF.status());
     results.loaded = *KF;
     out.report() << stiffness_report(*KF, "loaded, eq. 21");
@@ -127,6 +133,10 @@ void register_vjm_command(CLI::App& app, Context& ctx) {
                   "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N mm) about the tool point: loaded mode")
       ->delimiter(',')
       ->excludes(load);
+  cmd->add_option("--max-coordinates", args->max_coordinates,
+                  "refuse a chain with more coordinates (passive and virtual) than this: its dense matrices grow "
+                  "as the square")
+      ->capture_default_str();
   add_output_options(*cmd, args->out, "kinestat-vjm-results");
   cmd->callback([args, &ctx] { ctx.exit_code = run_vjm(*args, ctx); });
 }

@@ -1,11 +1,14 @@
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 
-#include <cstdio>
+#include <cmath>
+#include <optional>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 
 #include <fmt/format.h>
+
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::fea {
 
@@ -21,9 +24,34 @@ StatusOr<std::vector<double>> parse_numbers(const std::string& text, size_t coun
     } catch (const std::exception&) {
       return Status::Invalid(fmt::format("{}: '{}' is not a number", what, item));
     }
+    // stod reads "nan" and "inf" (and overflows to inf): not a value of any option.
+    if (!std::isfinite(v.back())) return Status::Invalid(fmt::format("{}: '{}' is not a finite number", what, item));
   }
-  if (v.size() != count) return Status::Invalid(fmt::format("{}: expected {} comma-separated numbers", what, count));
+  if (v.size() != count || (!text.empty() && text.back() == ','))
+    return Status::Invalid(fmt::format("{}: expected {} comma-separated numbers", what, count));
   return v;
+}
+
+namespace {
+
+// Lengths written in the mesh unit (`scale` m), returned in m and checked in range.
+StatusOr<Vec3> lengths(const std::vector<double>& v, size_t first, double scale, const std::string& what) {
+  const UnitOfInput unit{scale, scale == 1.0 ? "m" : scale == 1e-3 ? "mm" : ""};
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) {
+    const double x = v[first + static_cast<size_t>(k)];
+    if (Status s = check_quantity(x, Quantity::kLength, what, unit); !s.ok()) return s;
+    p[k] = x * scale;
+  }
+  return p;
+}
+
+}  // namespace
+
+StatusOr<Vec3> parse_point(const std::string& text, double scale, const std::string& what) {
+  auto v = parse_numbers(text, 3, what);
+  if (!v.ok()) return v.status();
+  return lengths(*v, 0, scale, what);
 }
 
 StatusOr<Region> parse_region(const std::string& text, double scale, const std::string& what) {
@@ -31,9 +59,11 @@ StatusOr<Region> parse_region(const std::string& text, double scale, const std::
     auto v = parse_numbers(text.substr(2), 1, what);
     if (!v.ok()) return v.status();
     const int axis = text[0] - 'x';
-    Vec3 p = Vec3::Zero();
-    p(axis) = (*v)[0] * scale;
-    return Region::plane(p, Vec3::Unit(axis));
+    std::vector<double> xyz(3, 0.0);
+    xyz[static_cast<size_t>(axis)] = (*v)[0];
+    StatusOr<Vec3> point = lengths(xyz, 0, scale, what);
+    if (!point.ok()) return point.status();
+    return Region::plane(*point, Vec3::Unit(axis));
   }
   const auto colon = text.find(':');
   const std::string kind = text.substr(0, colon);
@@ -41,24 +71,44 @@ StatusOr<Region> parse_region(const std::string& text, double scale, const std::
     return Status::Invalid(what + ": give x=V, y=V, z=V, plane:PX,PY,PZ,NX,NY,NZ or box:X0,Y0,Z0,X1,Y1,Z1 (mesh units)");
   auto v = parse_numbers(text.substr(colon + 1), 6, what);
   if (!v.ok()) return v.status();
-  const Vec3 a = Vec3((*v)[0], (*v)[1], (*v)[2]), b = Vec3((*v)[3], (*v)[4], (*v)[5]);
+  StatusOr<Vec3> a = lengths(*v, 0, scale, what);
+  if (!a.ok()) return a.status();
   if (kind == "plane") {
-    if (b.norm() == 0.0) return Status::Invalid(what + ": the plane's normal is zero");
-    return Region::plane(a * scale, b);
+    const Vec3 n((*v)[3], (*v)[4], (*v)[5]);
+    if (Status s = check_direction(n, what + ": the plane's normal"); !s.ok()) return s;
+    return Region::plane(*a, n.stableNormalized());
   }
-  if ((b.array() < a.array()).any()) return Status::Invalid(what + ": the box's first corner must be its minimum");
-  return Region::box(a * scale, b * scale);
+  StatusOr<Vec3> b = lengths(*v, 3, scale, what);
+  if (!b.ok()) return b.status();
+  if ((b->array() < a->array()).any()) return Status::Invalid(what + ": the box's first corner must be its minimum");
+  return Region::box(*a, *b);
 }
 
 StatusOr<Material> parse_material(const std::string& text, const std::string& what, double modulus_unit) {
   if (text == "steel") return Material::from_E_nu("steel", 210e9, 0.3);
   if (text == "aluminium" || text == "aluminum") return Material::from_E_nu("aluminium", 70e9, 0.33);
-  double E = 0.0, nu = -2.0;
-  if (std::sscanf(text.c_str(), "E=%lf,nu=%lf", &E, &nu) == 2 && E > 0.0 && nu > -1.0 && nu < 0.5)
-    return Material::from_E_nu(text, E * modulus_unit, nu);
-  const std::string unit = modulus_unit == 1e6 ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("{:g} Pa", modulus_unit);
-  return Status::Invalid(
-      fmt::format("{}: give steel, aluminium or E=VALUE,nu=V (E > 0 in {}, -1 < nu < 0.5)", what, unit));
+  const std::string unit = modulus_unit == 1e6 ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("x {:g} Pa", modulus_unit);
+  const std::string form = fmt::format("give steel, aluminium or E=VALUE,nu=V (E > 0 in {}, -1 < nu < 0.5)", unit);
+  std::optional<double> E, nu;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto eq = item.find('=');
+    const std::string key = item.substr(0, eq);
+    if (eq == std::string::npos || (key != "E" && key != "nu"))
+      return Status::Invalid(fmt::format("{}: unknown item '{}'; {}", what, item, form));
+    std::optional<double>& slot = key == "E" ? E : nu;
+    if (slot) return Status::Invalid(fmt::format("{}: '{}' is given twice; give it once", what, key));
+    auto value = parse_numbers(item.substr(eq + 1), 1, fmt::format("{}: {}", what, key));
+    if (!value.ok()) return value.status();
+    slot = (*value)[0];
+  }
+  if (!E || !nu || text.back() == ',') return Status::Invalid(fmt::format("{}: {}", what, form));
+  if (Status s = check_quantity(*E, Quantity::kModulus, what + ": E", {modulus_unit, unit}, Sign::kPositive); !s.ok())
+    return s;
+  if (!(*nu > -1.0 && *nu < 0.5))
+    return Status::Invalid(fmt::format("{}: nu = {:g} is not in (-1, 0.5); give Poisson's ratio", what, *nu));
+  return Material::from_E_nu(text, *E * modulus_unit, *nu);
 }
 
 double default_mesh_size(const SurfaceInfo& surface, double unit_scale) {

@@ -13,6 +13,7 @@ MeshingOptions meshing_options(const LinkStiffnessRequest& r, double size) {
   m.unit_scale = r.unit_scale;
   m.quadratic = r.quadratic;
   m.size = size;
+  m.max_elements = r.max_elements;
   return m;
 }
 

@@ -12,6 +12,7 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -21,6 +22,9 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/make_mesh_3.h>
 #include <fmt/format.h>
+
+#include "kinestat/core/input_checks.hpp"
+#include "fea/surface_file_checks.hpp"
 
 namespace kinestat::fea {
 
@@ -63,17 +67,39 @@ Status check_edges(const std::string& path, const std::vector<Point>& points,
   return Status::Ok();
 }
 
+// Coordinates beyond this (in the file's unit, m or mm) are refused before any geometry runs on them:
+// 1e6 m in mm. Predicates on them would still be exact, but the mesher's constructions overflow.
+constexpr double kMaxCoordinate = 1e9;
+// estimate_tetrahedra's coefficients, fitted to the bundled bar (sizes 3 to 10 mm, 883 to 20 012
+// tetrahedra); the tube and the foot then come out 1 to 1.7 times their real counts (docs/reliability.md).
+constexpr double kTetsPerVolume = 4.0, kTetsPerArea = 1.3;
+// A solid thinner on average (3 V / A: the radius of a ball, 1.5 x a plate's thickness) than this share
+// of its bounding-box diagonal is a needle or a sheet: Mesh_3 would protect its close feature edges
+// with ever smaller balls for minutes and make no usable tetrahedron.
+constexpr double kMinThicknessRatio = 1e-4;
+
 StatusOr<Surface> read_checked_surface(const std::string& path) {
   // Checked here because CGAL's reader prints its own complaint about a missing file to stdout.
   if (std::error_code ec; !std::filesystem::is_regular_file(path, ec))
     return Status::Invalid(path + ": no such file; check the mesh path");
+  if (Status s = check_surface_file_structure(path); !s.ok()) return s;
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
   if (!CGAL::IO::read_polygon_soup(path, points, polygons) || polygons.empty())
     return Status::Invalid(path + ": cannot read a triangle surface (STL, OFF, OBJ or PLY) from this file");
-  for (const auto& p : polygons)
+  for (const auto& p : polygons) {
     if (p.size() != 3)
       return Status::Invalid(fmt::format("{}: a face has {} vertices; triangulate the surface", path, p.size()));
+    for (std::size_t v : p)
+      if (v >= points.size())
+        return Status::Invalid(fmt::format("{}: a face refers to vertex {} of {}; repair the file", path, v,
+                                           points.size()));
+  }
+  for (const Point& p : points)
+    if (!(std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate && std::abs(p.z()) <= kMaxCoordinate))
+      return Status::Invalid(fmt::format("{}: the vertex {} is not finite or beyond {:g} (mm or m); check the file's "
+                                         "unit and content",
+                                         path, point_text(p), kMaxCoordinate));
   // STL repeats every vertex per triangle: merge duplicates first (this also drops degenerate faces).
   PMP::repair_polygon_soup(points, polygons);
   if (Status s = check_edges(path, points, polygons); !s.ok()) return s;
@@ -82,7 +108,30 @@ StatusOr<Surface> read_checked_surface(const std::string& path) {
   if (PMP::does_self_intersect(surface))
     return Status::Invalid(path + ": the surface intersects itself; repair the geometry (no overlapping solids)");
   if (!PMP::is_outward_oriented(surface)) PMP::reverse_face_orientations(surface);
+  const double volume = PMP::volume(surface), area = PMP::area(surface);
+  const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+  const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
+  if (!(volume > 0.0 && 3.0 * volume >= kMinThicknessRatio * diagonal * area))
+    return Status::Invalid(fmt::format("{}: the solid is {:.3g} thick on average (3 volume / area) for a size of {:.3g} "
+                                       "(file units): a needle or a sheet that tetrahedra cannot resolve; model it as "
+                                       "a beam or thicken it",
+                                       path, 3.0 * volume / area, diagonal));
   return surface;
+}
+
+SurfaceInfo surface_info(const Surface& s) {
+  SurfaceInfo info;
+  info.triangles = static_cast<int>(s.number_of_faces());
+  info.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  info.hi = -info.lo;
+  for (auto v : s.vertices()) {
+    const Point& p = s.point(v);
+    info.lo = info.lo.cwiseMin(Vec3(p.x(), p.y(), p.z()));
+    info.hi = info.hi.cwiseMax(Vec3(p.x(), p.y(), p.z()));
+  }
+  info.volume = PMP::volume(s);
+  info.area = PMP::area(s);
+  return info;
 }
 
 }  // namespace
@@ -90,16 +139,14 @@ StatusOr<Surface> read_checked_surface(const std::string& path) {
 StatusOr<SurfaceInfo> check_surface_file(const std::string& path) {
   StatusOr<Surface> s = read_checked_surface(path);
   if (!s.ok()) return s.status();
-  SurfaceInfo info;
-  info.triangles = static_cast<int>(s->number_of_faces());
-  info.lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  info.hi = -info.lo;
-  for (auto v : s->vertices()) {
-    const Point& p = s->point(v);
-    info.lo = info.lo.cwiseMin(Vec3(p.x(), p.y(), p.z()));
-    info.hi = info.hi.cwiseMax(Vec3(p.x(), p.y(), p.z()));
-  }
-  return info;
+  return surface_info(*s);
+}
+
+double estimate_tetrahedra(const SurfaceInfo& surface, double unit_scale, double size) {
+  // Walls thinner than the size are still filled with tetrahedra: the mesher refines to 2 V / A, the
+  // thickness of a plate or a tube's wall.
+  const double h = std::min(size / unit_scale, 2.0 * surface.volume / surface.area);  // in the file's unit
+  return kTetsPerVolume * surface.volume / (h * h * h) + kTetsPerArea * surface.area / (h * h);
 }
 
 StatusOr<TetMesh> mesh_surface_file(const std::string& path, const MeshingOptions& o) {
@@ -108,8 +155,22 @@ StatusOr<TetMesh> mesh_surface_file(const std::string& path, const MeshingOption
     return Status::Invalid(fmt::format("meshing options: need unit scale > 0, size > 0 m, facet distance >= 0 m, "
                                        "0 < facet angle <= 30 deg, radius-edge ratio >= 2 (got {:g}, {:g}, {:g}, {:g}, {:g})",
                                        o.unit_scale, o.size, o.facet_distance, o.facet_angle, o.cell_radius_edge_ratio));
+  if (Status st = check_quantity(o.size, Quantity::kLength, path + ": mesh size", {}, Sign::kPositive); !st.ok())
+    return st;
   StatusOr<Surface> surface = read_checked_surface(path);
   if (!surface.ok()) return surface.status();
+  const SurfaceInfo info = surface_info(*surface);
+  for (int k = 0; k < 3; ++k)
+    for (double x : {info.lo[k], info.hi[k]})
+      if (Status st = check_quantity(x * o.unit_scale, Quantity::kLength, path + ": a vertex coordinate"); !st.ok())
+        return st;
+  if (Status st = check_size(estimate_tetrahedra(info, o.unit_scale, o.size), o.max_elements,
+                             fmt::format("{}: meshing with size {:g} m", path, o.size),
+                             "tetrahedra (volume / size^3 and area / size^2, docs/reliability.md)",
+                             "give a larger size, or raise the limit (link-stiffness --max-elements, max_elements in a "
+                             "model file's fea spring)");
+      !st.ok())
+    return st;
   for (auto v : surface->vertices()) {
     const Point& p = surface->point(v);
     surface->point(v) = Point(p.x() * o.unit_scale, p.y() * o.unit_scale, p.z() * o.unit_scale);

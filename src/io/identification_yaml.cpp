@@ -45,20 +45,25 @@ class TargetsParser : public YamlFields {
       const std::string item = fmt::format("target #{}", index + 1);
       check_map(n, item, {"label", "architecture", "point", "row", "col", "value"});
       mechanisms::ComplianceTarget c;
+      c.source = source(n);
       c.label = n["label"].IsDefined() ? text(n["label"], item, "label") : item;
       const YAML::Node a = require(n, item, "architecture");
       const auto arch = mechanisms::architecture_from_name(text(a, item, "architecture"));
       if (!arch) fail(a, item, fmt::format("unknown architecture '{}'; write 3-PUU or 3-PRPaR", a.Scalar()));
       c.architecture = *arch;
-      c.point = vec3(require(n, item, "point"), item, "point") * u.length;
+      c.point = vec3(require(n, item, "point"), item, "point", Quantity::kLength, u.of(Quantity::kLength));
       c.row = dof(n, item, "row");
       c.col = dof(n, item, "col");
-      const double v = number(require(n, item, "value"), item, "value");
-      if (v == 0.0) fail(n["value"], item, "'value' is zero; give a measured, non-zero compliance");
       // Translation rows/columns carry length / force, rotation ones 1 / (force length) together.
       const int rotations = (c.row >= 3) + (c.col >= 3);
-      const double scale = rotations == 0 ? u.length / u.force : rotations == 1 ? 1.0 / u.force : 1.0 / u.moment();
-      c.value = v * scale;
+      const bool si = u.length == 1.0;
+      const UnitOfInput unit = rotations == 0   ? UnitOfInput{u.length / u.force, si ? "m/N" : "mm/N"}
+                               : rotations == 1 ? UnitOfInput{1.0 / u.force, "1/N"}
+                                                : UnitOfInput{1.0 / (u.force * u.length), si ? "rad/(N m)" : "rad/(N mm)"};
+      // A diagonal term of a compliance is positive (C is positive definite); another one is non-zero.
+      const YAML::Node v = require(n, item, "value");
+      c.value = value(v, item, "value", Quantity::kCompliance, unit, c.row == c.col ? Sign::kPositive : Sign::kAny);
+      if (c.value == 0.0) fail(v, item, "'value' is zero; give a measured, non-zero compliance");
       t.targets.push_back(std::move(c));
     });
     if (t.targets.size() < t.inputs.size())

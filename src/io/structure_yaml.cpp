@@ -33,6 +33,7 @@ class Parser : public YamlFields {
                {"units", "title", "nodes", "materials", "sections", "beams", "joints", "rigid_links", "supports",
                 "load_cases", "report"});
     units_ = units(root["units"]);
+    s_.set_source(file());
     if (const YAML::Node t = root["title"]; t.IsDefined()) s_.set_title(text(t, "file", "title"));
     for_each(root, "nodes", true, [&](const YAML::Node& n, int i) { parse_node(n, i); });
     zero_length_ = 1e-9 * s_.length_scale();  // as Structure::validate() judges coincidence
@@ -72,15 +73,14 @@ class Parser : public YamlFields {
   // {x: [...], z: [...]}: the frame's x and z axes in global coordinates, perpendicular.
   Mat3 frame(const YAML::Node& v, const std::string& item) {
     check_map(v, item + " frame", {"x", "z"});
-    const Vec3 x = vec3(require(v, item + " frame", "x"), item, "frame x");
-    const Vec3 z = vec3(require(v, item + " frame", "z"), item, "frame z");
-    if (x.norm() == 0.0 || z.norm() == 0.0) fail(v, item, "frame axes x and z must be non-zero vectors");
-    if (std::abs(x.normalized().dot(z.normalized())) > 1e-6) {
+    const Vec3 x = direction(require(v, item + " frame", "x"), item, "frame x");
+    const Vec3 z = direction(require(v, item + " frame", "z"), item, "frame z");
+    if (std::abs(x.dot(z)) > 1e-6) {
       fail(v, item, "frame axes x and z are not perpendicular; give two perpendicular directions");
     }
     Mat3 R;
-    R.col(0) = x.normalized();
-    R.col(2) = z.normalized();
+    R.col(0) = x;
+    R.col(2) = z;
     R.col(1) = R.col(2).cross(R.col(0));
     return R;
   }
@@ -108,19 +108,24 @@ class Parser : public YamlFields {
     const std::string id = entry_id(n, "node", i, node_ids_);
     const std::string item = fmt::format("node '{}'", id);
     check_keys(n, item, {"id", "xyz"});
-    node_index_[id] = s_.add_node(id, vec3(require(n, item, "xyz"), item, "xyz") * units_.length);
+    node_index_[id] =
+        s_.add_node(id, vec3(require(n, item, "xyz"), item, "xyz", Quantity::kLength, units_.of(Quantity::kLength)),
+                    source(n));
   }
 
   void parse_material(const YAML::Node& n, int i) {
     const std::string id = entry_id(n, "material", i, material_ids_);
     const std::string item = fmt::format("material '{}'", id);
     check_keys(n, item, {"id", "E", "G", "nu"});
-    const double E = positive(require(n, item, "E"), item, "E") * units_.stress();
+    auto modulus = [&](const YAML::Node& v, const char* key) {
+      return value(v, item, key, Quantity::kModulus, units_.of(Quantity::kModulus), Sign::kPositive);
+    };
+    const double E = modulus(require(n, item, "E"), "E");
     const YAML::Node G = n["G"], nu = n["nu"];
     if (G.IsDefined() == nu.IsDefined())
       fail(n, item, "give exactly one of G (shear modulus) and nu (Poisson's ratio)");
     if (G.IsDefined()) {
-      s_.add_material(Material{id, E, positive(G, item, "G") * units_.stress()});
+      s_.add_material(Material{id, E, modulus(G, "G")});
     } else {
       const double v = number(nu, item, "nu");
       if (!(v > -1.0 && v <= 0.5)) fail(nu, item, fmt::format("nu = {} is outside (-1, 0.5]; steel is 0.3", v));
@@ -131,48 +136,32 @@ class Parser : public YamlFields {
   void parse_section(const YAML::Node& n, int i) {
     const std::string id = entry_id(n, "section", i, section_ids_);
     const std::string item = fmt::format("section '{}'", id);
-    // A required positive value in file units, converted by `scale`.
-    auto value = [&](const char* key, double scale) { return positive(require(n, item, key), item, key) * scale; };
-    auto dim = [&](const char* key) { return value(key, units_.length); };
-    auto shear_area = [&](const char* key) {
+    // A required positive property in file units, returned in SI.
+    auto property = [&](const char* key, Quantity q) {
+      return value(require(n, item, key), item, key, q, units_.of(q), Sign::kPositive);
+    };
+    auto shear_area = [&](const char* key) {  // 0 = no shear deformation
       const YAML::Node a = n[key];
       if (!a.IsDefined()) return 0.0;
-      const double x = number(a, item, key);
-      if (x < 0.0) fail(a, item, fmt::format("'{}' must not be negative (0 = no shear deformation)", key));
-      return x * units_.area();
+      return value(a, item, key, Quantity::kArea, units_.of(Quantity::kArea), Sign::kNonNegative);
     };
     Section s;
     const YAML::Node type = n["type"];
     const std::string t = type.IsDefined() ? text(type, item, "type") : "";
     if (!type.IsDefined()) {
       check_keys(n, item, {"id", "A", "Iy", "Iz", "J", "Asy", "Asz"});
-      s.A = value("A", units_.area());
-      s.Iy = value("Iy", units_.inertia());
-      s.Iz = value("Iz", units_.inertia());
-      s.J = value("J", units_.inertia());
+      s.A = property("A", Quantity::kArea);
+      s.Iy = property("Iy", Quantity::kInertia);
+      s.Iz = property("Iz", Quantity::kInertia);
+      s.J = property("J", Quantity::kInertia);
       s.Asy = shear_area("Asy");
       s.Asz = shear_area("Asz");
-    } else if (t == "circle") {
-      check_keys(n, item, {"id", "type", "d"});
-      s = circle_section(dim("d"));
-    } else if (t == "tube") {
-      check_keys(n, item, {"id", "type", "d", "t"});
-      const double d = dim("d"), wall = dim("t");
-      if (!(2.0 * wall < d)) fail(n["t"], item, "wall thickness t must be less than half the outer diameter d");
-      s = tube_section(d, wall);
-    } else if (t == "rectangle") {
-      check_keys(n, item, {"id", "type", "b", "h"});
-      s = rectangle_section(dim("b"), dim("h"));
-    } else if (t == "hollow_rectangle") {
-      check_keys(n, item, {"id", "type", "b", "h", "t"});
-      const double b = dim("b"), h = dim("h"), wall = dim("t");
-      if (!(2.0 * wall < std::min(b, h))) fail(n["t"], item, "wall thickness t must be less than half of b and of h");
-      s = hollow_rectangle_section(b, h, wall);
     } else {
-      fail(type, item,
-           fmt::format("unknown section type '{}'; use circle, tube, rectangle, hollow_rectangle, or omit type and "
-                       "give A, Iy, Iz, J",
-                       t));
+      if (t == "circle") check_keys(n, item, {"id", "type", "d"});
+      if (t == "tube") check_keys(n, item, {"id", "type", "d", "t"});
+      if (t == "rectangle") check_keys(n, item, {"id", "type", "b", "h"});
+      if (t == "hollow_rectangle") check_keys(n, item, {"id", "type", "b", "h", "t"});
+      s = shape_section(n, item, type, units_, ", or omit type and give A, Iy, Iz, J");
     }
     s.id = id;
     s_.add_section(s);
@@ -184,6 +173,7 @@ class Parser : public YamlFields {
     check_keys(n, item, {"id", "nodes", "material", "section", "orientation", "theory", "releases"});
     msa::Beam b;
     b.id = id;
+    b.source = source(n);
     std::tie(b.node1, b.node2) = node_pair(require(n, item, "nodes"), item);
     const YAML::Node m = require(n, item, "material"), sec = require(n, item, "section");
     const auto mat = s_.find_material(text(m, item, "material"));
@@ -200,7 +190,7 @@ class Parser : public YamlFields {
            "the beam has zero length (its nodes are at the same place); connect two distinct points or use a joint");
     }
     if (const YAML::Node o = n["orientation"]; o.IsDefined()) {
-      b.orientation = vec3(o, item, "orientation");
+      b.orientation = direction(o, item, "orientation");
       Mat3 axes;
       if (!element_axes(p1, p2, b.orientation, axes)) {
         fail(o, item,
@@ -248,15 +238,15 @@ class Parser : public YamlFields {
     check_keys(n, item, {"id", "nodes", "stiffness", "frame"});
     msa::Joint j;
     j.id = id;
+    j.source = source(n);
     std::tie(j.node1, j.node2) = node_pair(require(n, item, "nodes"), item);
     const YAML::Node k = require(n, item, "stiffness");
     // Six values in the joint frame: N/m along x, y, z, then N m/rad about them (file units).
     auto component = [&](const YAML::Node& v, int d) {
       if (v.IsScalar() && v.Scalar() == "rigid") return msa::kRigid;
-      const double x = number(v, item, fmt::format("stiffness {}", dof_name(d)));
-      if (x < 0.0)
-        fail(v, item, fmt::format("stiffness {} = {} is negative; use 0 for a free dof or rigid", dof_name(d), x));
-      return x * (d < 3 ? units_.translational_stiffness() : units_.rotational_stiffness());
+      // 0 = a free dof; rigid = constrained.
+      const Quantity q = d < 3 ? Quantity::kTranslationalStiffness : Quantity::kRotationalStiffness;
+      return value(v, item, fmt::format("stiffness {}", dof_name(d)), q, units_.of(q), Sign::kNonNegative);
     };
     if (k.IsSequence() && k.size() == 6) {
       for (int d = 0; d < kDofsPerNode; ++d) j.stiffness[d] = component(k[d], d);
@@ -279,6 +269,7 @@ class Parser : public YamlFields {
     check_keys(n, item, {"id", "master", "slave", "dofs", "frame"});
     msa::RigidLink r;
     r.id = id;
+    r.source = source(n);
     r.master = node_ref(require(n, item, "master"), item, "master");
     r.slave = node_ref(require(n, item, "slave"), item, "slave");
     if (r.master == r.slave) fail(n["slave"], item, "master and slave are the same node; link two different nodes");
@@ -291,6 +282,7 @@ class Parser : public YamlFields {
     const std::string fallback = fmt::format("support #{}", i + 1);
     check_map(n, fallback, {"node", "fixed", "frame"});
     msa::Support sup;
+    sup.source = source(n);
     sup.node = node_ref(require(n, fallback, "node"), fallback, "node");
     const std::string item = fmt::format("support at node '{}'", s_.nodes()[sup.node].id);
     sup.fixed = dof_mask(require(n, item, "fixed"), item);
@@ -302,6 +294,7 @@ class Parser : public YamlFields {
     const std::string fallback = fmt::format("load case #{}", i + 1);
     check_map(n, fallback, {"name", "loads", "prescribed"});
     msa::LoadCase lc;
+    lc.source = source(n);
     lc.name = text(require(n, fallback, "name"), fallback, "name");
     const std::string item = fmt::format("load case '{}'", lc.name);
     if (!case_names_.insert(lc.name).second)
@@ -309,20 +302,30 @@ class Parser : public YamlFields {
     for_each(n, "loads", false, [&](const YAML::Node& l, int) {
       check_map(l, item + " load", {"node", "force", "moment"});
       msa::NodalLoad load;
+      load.source = source(l);
       load.node = node_ref(require(l, item, "node"), item, "node");
       const YAML::Node f = l["force"], m = l["moment"];
       if (!f.IsDefined() && !m.IsDefined())
         fail(l, item, "a load needs 'force: [Fx, Fy, Fz]' and/or 'moment: [Mx, My, Mz]'");
-      if (f.IsDefined()) load.wrench.head<3>() = vec3(f, item, "force") * units_.force;
-      if (m.IsDefined()) load.wrench.tail<3>() = vec3(m, item, "moment") * units_.moment();
+      if (f.IsDefined()) load.wrench.head<3>() = vec3(f, item, "force", Quantity::kForce, units_.of(Quantity::kForce));
+      if (m.IsDefined())
+        load.wrench.tail<3>() = vec3(m, item, "moment", Quantity::kMoment, units_.of(Quantity::kMoment));
       lc.loads.push_back(load);
     });
     for_each(n, "prescribed", false, [&](const YAML::Node& p, int) {
       check_map(p, item + " prescribed", {"node", "dof", "value"});
       msa::PrescribedDisplacement pd;
+      pd.source = source(p);
       pd.node = node_ref(require(p, item, "node"), item, "node");
       pd.dof = dof(require(p, item, "dof"), item);
-      pd.value = number(require(p, item, "value"), item, "value") * (pd.dof < 3 ? units_.length : 1.0);
+      // Translations in the file's length unit, rotations in rad.
+      const Quantity q = pd.dof < 3 ? Quantity::kLength : Quantity::kAngle;
+      pd.value = value(require(p, item, "value"), item, "value", q, units_.of(q));
+      for (const msa::PrescribedDisplacement& other : lc.prescribed)
+        if (other.node == pd.node && other.dof == pd.dof)
+          fail(p, item,
+               fmt::format("dof {} of node '{}' is already prescribed (at {}); give one value per dof",
+                           dof_name(pd.dof), s_.nodes()[pd.node].id, other.source));
       bool supported = false;
       for (const auto& sup : s_.supports())
         supported = supported || (sup.node == pd.node && sup.fixed[static_cast<std::size_t>(pd.dof)]);
@@ -350,7 +353,8 @@ StatusOr<msa::Structure> read_structure_yaml_string(const std::string& text, con
   StatusOr<msa::Structure> s = parse_yaml_text<msa::Structure>(
       text, display_name, "docs/structure-format.md", [&](const YAML::Node& root) { return Parser(display_name).parse(root); });
   if (!s.ok()) return s;
-  if (const Status st = s->validate(); !st.ok()) return Status(st.code(), display_name + ": " + st.message());
+  // Its messages start with the item's "FILE:LINE" (or the file name for the whole structure).
+  if (const Status st = s->validate(); !st.ok()) return st;
   return s;
 }
 

@@ -21,6 +21,8 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr const char* kDoc = "docs/vjm.md";
+const UnitOfInput kDegrees{kDeg, "deg"};
+constexpr int kNoSizeLimit = std::numeric_limits<int>::max();
 
 class VjmParser : public YamlFields {
  public:
@@ -47,7 +49,8 @@ class VjmParser : public YamlFields {
     for_each(root, "chains", true,
              [&](const YAML::Node& c, int i) { m.chains.push_back(parse_chain(c, i, m.fea_springs)); });
     if (m.chains.empty()) fail(root["chains"], "chains", "the list is empty; give at least one chain");
-    if (const Status s = vjm::validate_platform(m.chains); !s.ok())
+    // No size limit here: the computations check the chains' size against their options.
+    if (const Status s = vjm::validate_platform(m.chains, kNoSizeLimit); !s.ok())
       fail(root["chains"], "chains", s.message() + "; check the chains' transforms and joint values");
     // Until resolve_fea_springs computes them, FEA springs are NaN: a chain used before that fails
     // its checks instead of giving numbers.
@@ -60,29 +63,12 @@ class VjmParser : public YamlFields {
   Material material(const YAML::Node& n, const std::string& item) const {
     const double nu = number(require(n, item, "nu"), item, "nu");
     if (!(nu > -1.0 && nu < 0.5)) fail(n["nu"], item, fmt::format("'nu' = {} is not in (-1, 0.5); give Poisson's ratio", nu));
-    return Material::from_E_nu(item, positive(require(n, item, "E"), item, "E") * u_.stress(), nu);
+    return Material::from_E_nu(item, quantity(require(n, item, "E"), item, "E", Quantity::kModulus, Sign::kPositive), nu);
   }
 
   Section section(const YAML::Node& n, const std::string& item) const {
     check_map(n, item + " section", {"type", "d", "t", "b", "h"});
-    const std::string type = text(require(n, item + " section", "type"), item + " section", "type");
-    auto dim = [&](const char* key) { return positive(require(n, item + " section", key), item + " section", key) * u_.length; };
-    Section s;
-    if (type == "circle") {
-      s = circle_section(dim("d"));
-    } else if (type == "tube") {
-      s = tube_section(dim("d"), dim("t"));
-    } else if (type == "rectangle") {
-      s = rectangle_section(dim("b"), dim("h"));
-    } else if (type == "hollow_rectangle") {
-      s = hollow_rectangle_section(dim("b"), dim("h"), dim("t"));
-    } else {
-      fail(n["type"], item + " section",
-           fmt::format("unknown type '{}'; use circle, tube, rectangle or hollow_rectangle", type));
-    }
-    if (!(s.A > 0 && s.Iy > 0 && s.Iz > 0 && s.J > 0))
-      fail(n, item + " section", "the dimensions give a non-positive area or inertia; a wall t must be below half the width");
-    return s;
+    return shape_section(n, item + " section", require(n, item + " section", "type"), u_, "");
   }
 
   void parse_orthoglide(const YAML::Node& n, VjmModel& m) const {
@@ -97,7 +83,7 @@ class VjmParser : public YamlFields {
     m.architecture = *known;
     mechanisms::OrthoglideStiffnessModel o;
     auto length = [&](const YAML::Node& map, const std::string& it, const char* key) {
-      return positive(require(map, it, key), it, key) * u_.length;
+      return quantity(require(map, it, key), it, key, Quantity::kLength, Sign::kPositive);
     };
     o.link_length = length(n, item, "link_length");
     if (m.architecture == mechanisms::OrthoglideArchitecture::kPRPaR)
@@ -105,12 +91,11 @@ class VjmParser : public YamlFields {
     else if (n["parallelogram_width"].IsDefined())
       fail(n["parallelogram_width"], item, "a 3-PUU has no parallelogram; remove 'parallelogram_width'");
     if (const YAML::Node d = n["platform_offset"]; d.IsDefined()) {  // optional, default 0
-      const double v = number(d, item, "platform_offset");
-      if (v < 0) fail(d, item, "'platform_offset' must be >= 0 (the legs' attachment distance from the tool point)");
-      o.platform_offset = v * u_.length;
+      // The legs' attachment distance from the tool point.
+      o.platform_offset = quantity(d, item, "platform_offset", Quantity::kLength, Sign::kNonNegative);
     }
-    o.actuator_stiffness =
-        positive(require(n, item, "actuator_stiffness"), item, "actuator_stiffness") * u_.translational_stiffness();
+    o.actuator_stiffness = quantity(require(n, item, "actuator_stiffness"), item, "actuator_stiffness",
+                                    Quantity::kTranslationalStiffness, Sign::kPositive);
     const YAML::Node bar = require(n, item, "bar");
     check_map(bar, "orthoglide bar", {"E", "nu", "section"});
     o.bar_material = material(bar, "orthoglide bar");
@@ -120,6 +105,8 @@ class VjmParser : public YamlFields {
     o.foot_material = material(foot, "orthoglide foot");
     o.foot_section = section(require(foot, "orthoglide foot", "section"), "orthoglide foot");
     o.foot_length = length(foot, "orthoglide foot", "length");
+    // The model's own checks, here where the block's line is known.
+    if (const Status s = mechanisms::validate_stiffness_model(o); !s.ok()) fail(n, item, s.message());
     m.orthoglide = o;
   }
 
@@ -132,15 +119,13 @@ class VjmParser : public YamlFields {
   }
 
   Vec3 axis(const YAML::Node& n, const std::string& item) const {
-    const YAML::Node a = require(n, item, "axis");
-    const Vec3 v = vec3(a, item, "axis");
-    if (v.norm() == 0.0) fail(a, item, "'axis' is the zero vector; give a direction such as [0, 0, 1]");
-    return v.normalized();
+    return direction(require(n, item, "axis"), item, "axis");
   }
 
   // A joint coordinate: length units for prismatic, degrees for revolute.
   double coordinate(const YAML::Node& v, vjm::JointType t, const std::string& item, const std::string& key) const {
-    return number(v, item, key) * (t == vjm::JointType::kPrismatic ? u_.length : kDeg);
+    if (t == vjm::JointType::kPrismatic) return quantity(v, item, key, Quantity::kLength);
+    return value(v, item, key, Quantity::kAngle, kDegrees);
   }
 
   // A path in the file, relative to the model file's folder.
@@ -154,7 +139,9 @@ class VjmParser : public YamlFields {
   // are the current frame's axes and the reference point is the current frame's origin, i.e. the
   // spring sits at the link's far end, after the `translate` along the link, exactly like `cantilever`.
   fea::LinkStiffnessRequest fea_request(const YAML::Node& f, const std::string& it) const {
-    check_map(f, it, {"mesh", "material", "E", "nu", "clamp", "reference", "reference_point", "unit", "size", "cache"});
+    check_map(f, it,
+              {"mesh", "material", "E", "nu", "clamp", "reference", "reference_point", "unit", "size", "max_elements",
+               "cache"});
     fea::LinkStiffnessRequest r;
     // The mesh file's length unit (also of the regions, reference point and size): the model's by default.
     r.unit_scale = u_.length;
@@ -163,9 +150,11 @@ class VjmParser : public YamlFields {
       if (s != "mm" && s != "m") fail(u, it, fmt::format("unknown unit '{}'; write mm or m (the mesh file's unit)", s));
       r.unit_scale = s == "mm" ? 1e-3 : 1.0;
     }
+    const UnitOfInput mesh_unit{r.unit_scale, r.unit_scale == 1.0 ? "m" : "mm"};
     if (const YAML::Node m = f["material"]; m.IsDefined()) {
       if (f["E"].IsDefined() || f["nu"].IsDefined()) fail(m, it, "give either 'material' or 'E' and 'nu', not both");
-      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'", u_.stress());
+      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'",
+                                                    u_.of(Quantity::kModulus).scale);
       if (!parsed.ok()) fail(m, it, parsed.status().message());
       r.material = *parsed;
     } else {
@@ -180,8 +169,11 @@ class VjmParser : public YamlFields {
     r.options.clamp = region("clamp");
     r.options.reference = region("reference");
     if (const YAML::Node p = f["reference_point"]; p.IsDefined())
-      r.options.reference_point = vec3(p, it, "reference_point") * r.unit_scale;
-    if (const YAML::Node s = f["size"]; s.IsDefined()) r.mesh_size = positive(s, it, "size") * r.unit_scale;
+      r.options.reference_point = vec3(p, it, "reference_point", Quantity::kLength, mesh_unit);
+    if (const YAML::Node n = f["size"]; n.IsDefined())
+      r.mesh_size = value(n, it, "size", Quantity::kLength, mesh_unit, Sign::kPositive);
+    if (const YAML::Node n = f["max_elements"]; n.IsDefined())  // the estimated tetrahedra allowed
+      r.max_elements = value(n, it, "max_elements", Quantity::kRatio, {}, Sign::kPositive);
     const YAML::Node mesh = require(f, it, "mesh");
     r.mesh_file = path_in_file(mesh, it, "mesh");
     if (!std::filesystem::is_regular_file(r.mesh_file))
@@ -208,7 +200,15 @@ class VjmParser : public YamlFields {
       for (int i = 0; i < 6; ++i) {
         const YAML::Node row = k[static_cast<std::size_t>(i)];
         if (!row.IsSequence() || row.size() != 6) fail(row, item, fmt::format("'matrix' row {} must have 6 numbers", i + 1));
-        for (int j = 0; j < 6; ++j) K(i, j) = number(row[static_cast<std::size_t>(j)], item, "matrix") * u_.force * d(i) * d(j);
+        for (int j = 0; j < 6; ++j) {
+          // Translation block N/m, rotation block N m/rad, coupling N (in the file's units).
+          const Quantity q = i < 3 && j < 3   ? Quantity::kTranslationalStiffness
+                             : i >= 3 && j >= 3 ? Quantity::kRotationalStiffness
+                                                : Quantity::kForce;
+          UnitOfInput unit = u_.of(q);
+          unit.scale = u_.force * d(i) * d(j);
+          K(i, j) = value(row[static_cast<std::size_t>(j)], item, fmt::format("matrix ({}, {})", i + 1, j + 1), q, unit);
+        }
       }
       return K;
     }
@@ -223,9 +223,11 @@ class VjmParser : public YamlFields {
       }
       // `bars`: identical bars side by side on the same axis (the paper's doubled leg section).
       double bars = 1.0;
-      if (const YAML::Node b = c["bars"]; b.IsDefined()) bars = positive(b, it, "bars");
+      if (const YAML::Node b = c["bars"]; b.IsDefined()) bars = value(b, it, "bars", Quantity::kRatio, {}, Sign::kPositive);
       return bars * vjm::cantilever_spring(material(c, it), section(require(c, it, "section"), it),
-                                           positive(require(c, it, "length"), it, "length") * u_.length, theory);
+                                           quantity(require(c, it, "length"), it, "length", Quantity::kLength,
+                                                    Sign::kPositive),
+                                           theory);
     }
     const YAML::Node p = n["parallelogram"];
     const std::string it = item + " parallelogram";
@@ -233,9 +235,10 @@ class VjmParser : public YamlFields {
     mechanisms::OrthoglideStiffnessModel o;
     o.bar_material = material(p, it);
     o.bar_section = section(require(p, it, "section"), it);
-    o.link_length = positive(require(p, it, "length"), it, "length") * u_.length;
-    o.parallelogram_width = positive(require(p, it, "width"), it, "width") * u_.length;
-    StatusOr<Mat6> K = mechanisms::parallelogram_spring(o, number(require(p, it, "q"), it, "q") * kDeg);
+    o.link_length = quantity(require(p, it, "length"), it, "length", Quantity::kLength, Sign::kPositive);
+    o.parallelogram_width = quantity(require(p, it, "width"), it, "width", Quantity::kLength, Sign::kPositive);
+    StatusOr<Mat6> K =
+        mechanisms::parallelogram_spring(o, value(require(p, it, "q"), it, "q", Quantity::kAngle, kDegrees));
     if (!K.ok()) fail(p, it, K.status().message());
     return *K;
   }
@@ -260,10 +263,11 @@ class VjmParser : public YamlFields {
       const YAML::Node v = el[kind];
       const std::string vit = fmt::format("{} ({})", it, kind);
       if (kind == "translate") {
-        chain.add_translation(vec3(v, vit, "translate") * u_.length, label);
+        chain.add_translation(vec3(v, vit, "translate", Quantity::kLength, u_.of(Quantity::kLength)), label);
       } else if (kind == "rotate") {
         check_map(v, vit, {"axis", "angle"});
-        chain.add_rotation(axis(v, vit), number(require(v, vit, "angle"), vit, "angle") * kDeg, label);
+        chain.add_rotation(axis(v, vit), value(require(v, vit, "angle"), vit, "angle", Quantity::kAngle, kDegrees),
+                           label);
       } else if (kind == "spring") {
         std::optional<FeaSpring> fea;
         const Mat6 K = spring(v, vit, &fea);
@@ -279,9 +283,10 @@ class VjmParser : public YamlFields {
         const YAML::Node k = require(v, vit, "stiffness");
         const double stiff = k.IsScalar() && k.Scalar() == "locked"
                                  ? std::numeric_limits<double>::infinity()
-                                 : positive(k, vit, "stiffness") * (t == vjm::JointType::kPrismatic
-                                                                         ? u_.translational_stiffness()
-                                                                         : u_.rotational_stiffness());
+                                 : quantity(k, vit, "stiffness",
+                                            t == vjm::JointType::kPrismatic ? Quantity::kTranslationalStiffness
+                                                                            : Quantity::kRotationalStiffness,
+                                            Sign::kPositive);
         chain.add_actuator(t, axis(v, vit), coordinate(require(v, vit, "value"), t, vit, "value"), stiff, label);
       } else if (kind == "passive") {
         check_map(v, vit, {"id", "type", "axis", "q"});
@@ -297,11 +302,17 @@ class VjmParser : public YamlFields {
           fail(to, vit, fmt::format("no passive joint with id '{}' before this element; give that joint 'id: {}'",
                                     to.Scalar(), to.Scalar()));
         chain.add_coupled(joint_type(v, vit), axis(v, vit), k->second,
-                          number(require(v, vit, "coefficient"), vit, "coefficient"), label);
+                          value(require(v, vit, "coefficient"), vit, "coefficient", Quantity::kRatio, {}), label);
       }
     }
-    if (const Status s = chain.validate(); !s.ok()) fail(c, item, s.message());
+    if (const Status s = chain.validate(kNoSizeLimit); !s.ok()) fail(c, item, s.message());
     return chain;
+  }
+
+  // A value of quantity `q` in the file's unit of it, returned in SI.
+  double quantity(const YAML::Node& v, const std::string& item, const std::string& key, Quantity q,
+                  Sign sign = Sign::kAny) const {
+    return value(v, item, key, q, u_.of(q), sign);
   }
 
   FileUnits u_;

@@ -3,6 +3,7 @@
 #include "io/vtk_files.hpp"
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <system_error>
 
@@ -14,6 +15,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
+
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -115,8 +118,12 @@ Status write_cube(const mechanisms::OrthoglideDesign& d, const std::string& path
 }  // namespace
 
 Status write_orthoglide_workspace_vtk(const mechanisms::OrthoglideDesign& d, int n, const std::string& dir,
-                                      std::vector<std::string>* written) {
+                                      std::vector<std::string>* written, double max_points) {
   if (n < 2) return Status::Invalid(fmt::format("VTK workspace grid of {} points per joint: need at least 2", n));
+  if (Status st = check_size(std::pow(n, 3.0), max_points, fmt::format("VTK workspace grid of {} points per joint", n),
+                             "points (n^3)", "give fewer points per joint or raise the point limit");
+      !st.ok())
+    return st;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) return Status::Invalid(fmt::format("{}: cannot create the output directory ({})", dir, ec.message()));

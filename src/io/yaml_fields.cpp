@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -15,9 +16,13 @@ std::string join_keys(std::initializer_list<const char*> names) {
   return out;
 }
 
-std::string YamlFields::where(const YAML::Node& at, const std::string& item) const {
+std::string YamlFields::source(const YAML::Node& at) const {
   const int line = (at.IsDefined() && !at.Mark().is_null()) ? at.Mark().line + 1 : 0;
-  return line > 0 ? fmt::format("{}:{}: {}", file_, line, item) : fmt::format("{}: {}", file_, item);
+  return line > 0 ? fmt::format("{}:{}", file_, line) : file_;
+}
+
+std::string YamlFields::where(const YAML::Node& at, const std::string& item) const {
+  return fmt::format("{}: {}", source(at), item);
 }
 
 void YamlFields::fail(const YAML::Node& at, const std::string& item, const std::string& what) const {
@@ -62,11 +67,11 @@ double YamlFields::number(const YAML::Node& v, const std::string& item, const st
   return x;
 }
 
-double YamlFields::positive(const YAML::Node& v, const std::string& item, const std::string& key) const {
+double YamlFields::value(const YAML::Node& v, const std::string& item, const std::string& key, Quantity q,
+                         const UnitOfInput& unit, Sign sign) const {
   const double x = number(v, item, key);
-  if (!(x > 0.0))
-    fail(v, item, fmt::format("'{}' must be positive, got {}; give a value > 0 in the file's units", key, x));
-  return x;
+  if (const Status s = check_quantity(x, q, "'" + key + "'", unit, sign); !s.ok()) fail(v, item, s.message());
+  return x * unit.scale;
 }
 
 std::string YamlFields::text(const YAML::Node& v, const std::string& item, const std::string& key) const {
@@ -74,9 +79,67 @@ std::string YamlFields::text(const YAML::Node& v, const std::string& item, const
   return v.Scalar();
 }
 
-Vec3 YamlFields::vec3(const YAML::Node& v, const std::string& item, const std::string& key) const {
+Vec3 YamlFields::vec3(const YAML::Node& v, const std::string& item, const std::string& key, Quantity q,
+                      const UnitOfInput& unit) const {
   if (!v.IsSequence() || v.size() != 3) fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
-  return {number(v[0], item, key), number(v[1], item, key), number(v[2], item, key)};
+  return {value(v[0], item, key, q, unit), value(v[1], item, key, q, unit), value(v[2], item, key, q, unit)};
+}
+
+Vec3 YamlFields::direction(const YAML::Node& v, const std::string& item, const std::string& key) const {
+  if (!v.IsSequence() || v.size() != 3) fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
+  const Vec3 d(number(v[0], item, key), number(v[1], item, key), number(v[2], item, key));
+  if (const Status s = check_direction(d, "'" + key + "'"); !s.ok()) fail(v, item, s.message());
+  return d.stableNormalized();
+}
+
+Section YamlFields::shape_section(const YAML::Node& n, const std::string& item, const YAML::Node& type_node,
+                                 const FileUnits& units, const std::string& other_form) const {
+  const std::string type = text(type_node, item, "type");
+  const UnitOfInput lu = units.of(Quantity::kLength);
+  const std::string un = lu.name.empty() ? "m" : lu.name;
+  auto dim = [&](const char* key) {
+    return value(require(n, item, key), item, key, Quantity::kLength, lu, Sign::kPositive);
+  };
+  // A wall of half the outer size or more leaves no hole (and a negative inner size would still give
+  // a positive area): refused rather than computed.
+  auto wall = [&](double outer, const char* outer_name) {
+    const double t = dim("t");
+    if (!(2.0 * t < outer))
+      fail(n["t"], item, fmt::format("the wall t must be less than half of {} (t = {:g} {}, {} = {:g} {})", outer_name,
+                                     t / lu.scale, un, outer_name, outer / lu.scale, un));
+    return t;
+  };
+  if (type == "circle") return circle_section(dim("d"));
+  if (type == "tube") {
+    const double d = dim("d");
+    return tube_section(d, wall(d, "d"));
+  }
+  if (type == "rectangle") {
+    const double b = dim("b");
+    return rectangle_section(b, dim("h"));
+  }
+  if (type == "hollow_rectangle") {
+    const double b = dim("b"), h = dim("h");
+    return hollow_rectangle_section(b, h, wall(std::min(b, h), b < h ? "b" : "h"));
+  }
+  fail(type_node, item,
+       fmt::format("unknown section type '{}'; use circle, tube, rectangle, hollow_rectangle{}", type, other_form));
+}
+
+UnitOfInput FileUnits::of(Quantity q) const {
+  if (length == 1.0 && force == 1.0) return {};  // SI: the quantity's own unit
+  const double area = length * length;
+  switch (q) {
+    case Quantity::kLength: return {length, "mm"};
+    case Quantity::kForce: return {force, "N"};
+    case Quantity::kMoment: return {force * length, "N mm"};
+    case Quantity::kModulus: return {force / area, "MPa"};
+    case Quantity::kArea: return {area, "mm^2"};
+    case Quantity::kInertia: return {area * area, "mm^4"};
+    case Quantity::kTranslationalStiffness: return {force / length, "N/mm"};
+    case Quantity::kRotationalStiffness: return {force * length, "N mm/rad"};
+    default: return {};
+  }
 }
 
 FileUnits YamlFields::units(const YAML::Node& v) const {

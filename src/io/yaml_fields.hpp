@@ -9,8 +9,10 @@
 #include <initializer_list>
 #include <string>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
+#include "kinestat/elements/section.hpp"
 
 namespace kinestat::io {
 
@@ -26,12 +28,8 @@ std::string join_keys(std::initializer_list<const char*> names);
 struct FileUnits {
   double length = 1.0;  // file length unit in m
   double force = 1.0;   // file force unit in N
-  double area() const { return length * length; }
-  double inertia() const { return area() * area(); }
-  double stress() const { return force / area(); }
-  double moment() const { return force * length; }
-  double translational_stiffness() const { return force / length; }
-  double rotational_stiffness() const { return force * length; }
+  // The file's unit of `q` (its SI factor and name, e.g. 1e6 and "MPa"); angles: the SI rad.
+  UnitOfInput of(Quantity q) const;
 };
 
 class YamlFields {
@@ -40,6 +38,8 @@ class YamlFields {
   YamlFields(std::string file, std::string format_doc) : file_(std::move(file)), doc_(std::move(format_doc)) {}
 
   [[noreturn]] void fail(const YAML::Node& at, const std::string& item, const std::string& what) const;
+  // "FILE:LINE" of a node (the file name alone when the node has no position): an item's source.
+  std::string source(const YAML::Node& at) const;
   // "FILE:LINE: ITEM", the start of fail's message, for checks made after reading.
   std::string where(const YAML::Node& at, const std::string& item) const;
 
@@ -61,9 +61,21 @@ class YamlFields {
   }
 
   double number(const YAML::Node& v, const std::string& item, const std::string& key) const;
-  double positive(const YAML::Node& v, const std::string& item, const std::string& key) const;
+  // A number written in `unit`, returned in SI, checked finite and in the range of `q` after the
+  // conversion (core/input_checks.hpp); the message names the item, the key and the unit.
+  double value(const YAML::Node& v, const std::string& item, const std::string& key, Quantity q,
+               const UnitOfInput& unit, Sign sign = Sign::kAny) const;
   std::string text(const YAML::Node& v, const std::string& item, const std::string& key) const;
-  Vec3 vec3(const YAML::Node& v, const std::string& item, const std::string& key) const;
+  // [x, y, z] in `unit`, returned in SI, each component checked as value() does.
+  Vec3 vec3(const YAML::Node& v, const std::string& item, const std::string& key, Quantity q,
+            const UnitOfInput& unit) const;
+  // [x, y, z]: a direction, finite and non-zero, returned as a unit vector.
+  Vec3 direction(const YAML::Node& v, const std::string& item, const std::string& key) const;
+  // A standard shape `type` from the keys of `n`: circle (d), tube (d, t), rectangle (b, h),
+  // hollow_rectangle (b, h, t), lengths in the file's unit; a wall must be thinner than half the outer
+  // size. An unknown type fails at `type_node` naming `other_form` as the alternative.
+  Section shape_section(const YAML::Node& n, const std::string& item, const YAML::Node& type_node,
+                        const FileUnits& units, const std::string& other_form) const;
   // The `units:` value (absent: SI).
   FileUnits units(const YAML::Node& v) const;
 

@@ -55,7 +55,7 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
   out.near_singular_threshold = o.near_singular_threshold;
   out.min_stiffness = o.min_stiffness;
 
-  const auto make_kernel = o.make_kernel ? o.make_kernel : make_reference_five_bar_kernel;
+  const auto make_kernel = o.make_kernel ? o.make_kernel : make_five_bar_kernel;
   MapOptions map_options;
   map_options.near_singular_threshold = o.near_singular_threshold;
   map_options.threads = o.threads;

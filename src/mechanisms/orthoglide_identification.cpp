@@ -6,6 +6,7 @@
 #include <unsupported/Eigen/NonLinearOptimization>
 #include <unsupported/Eigen/NumericalDiff>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/elements/section.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
@@ -23,6 +24,11 @@ const char* input_name(OrthoglideInput input) {
 }
 
 namespace {
+
+// Relative size below which a Jacobian column or singular value counts as zero. The forward
+// differences' noise reaches ~2e-6 (two symmetric targets, identical in exact arithmetic); the
+// paper's five-target calibration has its smallest relative singular value near 0.1.
+constexpr double kNoEffect = 1e-4;
 
 // The value of an input in the start model (the bar scale is relative to its section: 1).
 double start_value(const OrthoglideStiffnessModel& m, OrthoglideInput input) {
@@ -52,12 +58,17 @@ OrthoglideStiffnessModel with_inputs(const OrthoglideStiffnessModel& start, cons
   return m;
 }
 
+// "SOURCE: target 'LABEL': message"
+Status target_status(const ComplianceTarget& t, const Status& s) {
+  return Status(s.code(), at_source(t.source, fmt::format("target '{}': {}", t.label, s.message())));
+}
+
 StatusOr<double> model_compliance(const OrthoglideStiffnessModel& m, const ComplianceTarget& t) {
   StatusOr<std::vector<vjm::Chain>> chains = orthoglide_chains(m, t.architecture, t.point);
-  if (!chains.ok()) return chains.status();
+  if (!chains.ok()) return target_status(t, chains.status());
   StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(*chains);
-  if (!K.ok()) return K.status();
-  if (!K->compliance_defined) return Status::Singular(fmt::format("{}: {}", t.label, K->status.message()));
+  if (!K.ok()) return target_status(t, K.status());
+  if (!K->compliance_defined) return target_status(t, Status::Singular(K->status.message()));
   return K->compliance(t.row, t.col);
 }
 
@@ -98,6 +109,36 @@ struct Residuals {
   }
 };
 
+// The targets determine the inputs when the Jacobian of the residuals (d r / d log x) has full column
+// rank: a zero column is an input that changes no target, a dependent set of columns a combination
+// of inputs that changes none (the targets repeat each other's information). Checked at the start;
+// LM would otherwise stop anywhere along the undetermined direction and report success.
+Status check_identifiable(Eigen::NumericalDiff<Residuals>& df, const Eigen::VectorXd& x,
+                          const std::vector<OrthoglideInput>& inputs, const Status& failure) {
+  Eigen::MatrixXd J(df.values(), df.inputs());
+  df.df(x, J);
+  if (!failure.ok()) return failure;  // a target cannot be evaluated next to the start
+  const double largest = J.colwise().norm().maxCoeff();
+  for (Eigen::Index k = 0; k < J.cols(); ++k)
+    if (!(J.col(k).norm() > kNoEffect * largest))
+      return Status::Invalid(fmt::format("identification: the {} has no effect on the targets; remove it from the "
+                                         "inputs or add a target that depends on it",
+                                         input_name(inputs[static_cast<std::size_t>(k)])));
+  const Eigen::MatrixXd Jn = J * J.colwise().norm().cwiseInverse().asDiagonal();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
+  const Eigen::VectorXd& sv = svd.singularValues();
+  if (sv[sv.size() - 1] > kNoEffect * sv[0]) return Status::Ok();
+  const Eigen::VectorXd v = svd.matrixV().col(sv.size() - 1);
+  std::string combination;
+  for (Eigen::Index k = 0; k < v.size(); ++k)
+    if (std::abs(v[k]) > 0.05)
+      combination += fmt::format("{}{:+.2f} log({})", combination.empty() ? "" : " ", v[k],
+                                 input_name(inputs[static_cast<std::size_t>(k)]));
+  return Status::Invalid(fmt::format("identification: the targets cannot determine the inputs: changing {} changes "
+                                     "no target (condition {:.1e}); give targets that tell these inputs apart",
+                                     combination, sv[0] / sv[sv.size() - 1]));
+}
+
 }  // namespace
 
 StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideStiffnessModel& start,
@@ -105,15 +146,32 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
                                                               const std::vector<ComplianceTarget>& targets,
                                                               double tolerance) {
   if (Status s = validate_stiffness_model(start); !s.ok()) return s;
+  if (!(tolerance > 0.0 && tolerance < 1.0))
+    return Status::Invalid(fmt::format("identification tolerance {:g}: give a relative residual in (0, 1), e.g. 1e-8",
+                                       tolerance));
   if (inputs.empty() || targets.size() < inputs.size())
     return Status::Invalid(fmt::format("identification: {} target(s) for {} input(s); give at least as many "
                                        "targets as inputs",
                                        targets.size(), inputs.size()));
-  for (const ComplianceTarget& t : targets)
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const ComplianceTarget& t = targets[k];
     if (t.row < 0 || t.row > 5 || t.col < 0 || t.col > 5 || !std::isfinite(t.value) || t.value == 0.0)
-      return Status::Invalid(fmt::format("identification target '{}': needs row and col in 0..5 and a finite, "
-                                         "non-zero value",
-                                         t.label));
+      return target_status(t, Status::Invalid("needs row and col in 0..5 and a finite, non-zero value"));
+    if (t.row == t.col && !(t.value > 0.0))
+      return target_status(t, Status::Invalid(fmt::format("the diagonal compliance C({},{}) = {:g} is negative: a "
+                                                          "compliance matrix is positive definite, its diagonal "
+                                                          "positive; check the sign",
+                                                          t.row, t.col, t.value)));
+    for (std::size_t j = 0; j < k; ++j) {
+      const ComplianceTarget& o = targets[j];
+      const bool same_term = (o.row == t.row && o.col == t.col) || (o.row == t.col && o.col == t.row);  // C symmetric
+      if (o.architecture == t.architecture && same_term && (o.point - t.point).norm() <= 1e-12)
+        return target_status(t, Status::Invalid(fmt::format("the same term as target '{}'{}: a repeated target adds "
+                                                            "no information, so the inputs are not determined; "
+                                                            "give another term",
+                                                            o.label, o.source.empty() ? "" : " (" + o.source + ")")));
+    }
+  }
   Eigen::VectorXd x(static_cast<Eigen::Index>(inputs.size()));
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     const double v = start_value(start, inputs[k]);
@@ -135,6 +193,7 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
   f(x, r0);
   if (!failure.ok()) return failure;  // the start itself cannot be evaluated
   Eigen::NumericalDiff<Residuals> df(f);
+  if (Status s = check_identifiable(df, x, inputs, failure); !s.ok()) return s;
   Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> lm(df);
   lm.parameters.ftol = lm.parameters.xtol = 1e-14;
   lm.parameters.maxfev = 400 * static_cast<Eigen::Index>(inputs.size() + 1);
@@ -167,7 +226,10 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
   out.report = std::move(r);
   if (!(worst <= tolerance))
     return Status(StatusCode::kNotConverged,
-                  fmt::format("identification did not reach the tolerance {:g}:\n{}", tolerance, out.report));
+                  fmt::format("identification did not reach the tolerance {:g}: from this start, no values of the "
+                              "inputs make the model meet these targets (inconsistent targets, or a start too far "
+                              "away); the closest model found:\n{}",
+                              tolerance, out.report));
   return out;
 }
 

@@ -49,6 +49,7 @@ Status validate(const OrthoglideGeometry& g) {
 
 StatusOr<Vec3> inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p, const OrthoglideSigns& s) {
   if (Status st = validate(g); !st.ok()) return st;
+  if (!p.allFinite()) return Status::Invalid(fmt::format("Orthoglide point p = {}: a coordinate is not finite", format_point(p)));
   Vec3 rho;
   for (int i = 0; i < 3; ++i) {
     if (s[i] != 1 && s[i] != -1)
@@ -84,8 +85,8 @@ int direct_kinematics_branch(const Vec3& p, const Vec3& rho) {
 StatusOr<std::array<Vec3, 2>> direct_kinematics(const OrthoglideGeometry& g, const Vec3& rho) {
   if (Status st = validate(g); !st.ok()) return st;
   for (int i = 0; i < 3; ++i)
-    if (!(rho[i] > 0.0))
-      return Status::Invalid(fmt::format("Orthoglide joints rho = {}: rho_{} must be positive (eq. 2)", format_point(rho),
+    if (!(rho[i] > 0.0 && std::isfinite(rho[i])))
+      return Status::Invalid(fmt::format("Orthoglide joints rho = {}: rho_{} must be positive and finite (eq. 2)", format_point(rho),
                                          kAxis[i]));
   // Eq. (4) divided by B = (rho_x rho_y rho_z)^2: a t^2 + t + c = 0, a = sum 1/rho_i^2 = A/B,
   // c = (sum rho_i^2 - 4 L^2) / 4 = C/B. Same roots, no sixth powers of rho.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/elements/joint_element.hpp"
 
 namespace kinestat::msa {
@@ -10,7 +11,8 @@ StatusOr<BeamMatrices> beam_matrices(const Structure& s, const Beam& b) {
   const double L = (s.nodes()[b.node2].position - s.nodes()[b.node1].position).norm();
   const Mat12 k = beam_local_stiffness(s.materials()[b.material], s.sections()[b.section], L, b.theory);
   auto condensed = condense_releases(k, b.releases);
-  if (!condensed.ok()) return Status::Invalid(fmt::format("beam '{}': {}", b.id, condensed.status().message()));
+  if (!condensed.ok())
+    return Status::Invalid(at_source(b.source, fmt::format("beam '{}': {}", b.id, condensed.status().message())));
   return BeamMatrices{*condensed, beam_transformation(s.beam_axes(b))};
 }
 

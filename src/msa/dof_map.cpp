@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::msa {
 namespace {
@@ -34,15 +35,16 @@ StatusOr<DofMap> build_dof_map(const Structure& s) {
   std::vector<DofMask> fixed(nn, DofMask{});
   for (const auto& sup : s.supports()) {
     if (map.supported_node[sup.node] && (frame[sup.node] - sup.frame).norm() > 1e-12)
-      return Status::Invalid(fmt::format("node '{}' has two supports in different frames; merge them into one",
-                                         s.nodes()[sup.node].id));
+      return Status::Invalid(at_source(sup.source, fmt::format("node '{}' has two supports in different frames; merge "
+                                                               "them into one",
+                                                               s.nodes()[sup.node].id)));
     map.supported_node[sup.node] = true;
     frame[sup.node] = sup.frame;
     for (int i = 0; i < 6; ++i) fixed[sup.node][i] = fixed[sup.node][i] || sup.fixed[i];
   }
 
   // Ties: rigid links, and the rigid components of joints (slave = the unsupported node).
-  for (const auto& r : s.rigid_links()) map.ties.push_back({r.master, r.slave, r.mask, r.frame, -1});
+  for (const auto& r : s.rigid_links()) map.ties.push_back({r.master, r.slave, r.mask, r.frame, -1, r.source});
   for (size_t j = 0; j < s.joints().size(); ++j) {
     const Joint& jt = s.joints()[j];
     DofMask mask{};
@@ -52,16 +54,19 @@ StatusOr<DofMap> build_dof_map(const Structure& s) {
     int master = jt.node1, slave = jt.node2;
     if (map.supported_node[slave]) std::swap(master, slave);
     if (map.supported_node[slave])
-      return Status::Invalid(fmt::format("joint '{}' has rigid components between two supported nodes; remove one "
-                                         "of the supports or make the joint elastic", jt.id));
-    map.ties.push_back({master, slave, mask, jt.frame, static_cast<int>(j)});
+      return Status::Invalid(at_source(jt.source, fmt::format("joint '{}' has rigid components between two supported "
+                                                              "nodes; remove one of the supports or make the joint "
+                                                              "elastic",
+                                                              jt.id)));
+    map.ties.push_back({master, slave, mask, jt.frame, static_cast<int>(j), jt.source});
   }
   for (size_t t = 0; t < map.ties.size(); ++t) {
     const auto& tie = map.ties[t];
     if (map.slave_of_tie[tie.slave] >= 0)
-      return Status::Invalid(fmt::format("node '{}' is tied rigidly to two nodes (rigid links or rigid joint "
-                                         "components); tie it to one and connect the others to it",
-                                         s.nodes()[tie.slave].id));
+      return Status::Invalid(at_source(tie.source, fmt::format("node '{}' is tied rigidly to two nodes (rigid links "
+                                                               "or rigid joint components); tie it to one and "
+                                                               "connect the others to it",
+                                                               s.nodes()[tie.slave].id)));
     map.slave_of_tie[tie.slave] = static_cast<int>(t);
   }
 
@@ -86,8 +91,10 @@ StatusOr<DofMap> build_dof_map(const Structure& s) {
   std::function<Status(int)> resolve = [&](int n) -> Status {
     if (state[n] == 2) return Status::Ok();
     if (state[n] == 1)
-      return Status::Invalid(fmt::format("rigid links / rigid joints form a closed loop through node '{}'; a loop "
-                                         "of rigid ties is over-constrained, release one of them", s.nodes()[n].id));
+      return Status::Invalid(at_source(map.ties[map.slave_of_tie[n]].source,
+                                       fmt::format("rigid links / rigid joints form a closed loop through node '{}'; a "
+                                                   "loop of rigid ties is over-constrained, release one of them",
+                                                   s.nodes()[n].id)));
     state[n] = 1;
     const int t = map.slave_of_tie[n];
     const Mat6 R = rotation6(t >= 0 ? map.ties[t].frame : frame[n]);

@@ -22,7 +22,13 @@ struct DofMap {
   std::vector<ReducedDof> reduced;   // what each column of C is
   std::vector<bool> supported_node;  // node has a support
   std::vector<int> slave_of_tie;     // per node: index into ties, or -1
-  struct Tie { int master, slave; DofMask mask; Mat3 frame; int joint = -1; };  // joint: source joint or -1
+  struct Tie {
+    int master, slave;
+    DofMask mask;
+    Mat3 frame;
+    int joint = -1;      // the joint it comes from, or -1 (a rigid link)
+    std::string source;  // that item's source ("file:line"), for messages
+  };
   std::vector<Tie> ties;
   int num_free() const { return static_cast<int>(C.cols()); }
 };

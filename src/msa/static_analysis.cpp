@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "kinestat/solver/null_space.hpp"
 #include "msa/assembly.hpp"
@@ -159,7 +160,8 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   }
   sol.num_free_dofs = sys->map.num_free();
   if (sol.num_free_dofs == 0) {
-    sol.status = Status::Invalid("every dof of the structure is supported or tied: nothing to solve");
+    sol.status = Status::Invalid(at_source(s.source(), "every dof of the structure is supported or tied: nothing to "
+                                                       "solve; free some dofs of the supports"));
     return sol;
   }
   if (sol.num_free_dofs <= opt.max_dofs_for_global_indices) sol.global_indices = stiffness_indices(MatX(sys->Kr));

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::msa {
 namespace {
@@ -17,14 +18,23 @@ std::optional<int> find_by_id(const std::vector<T>& items, const std::string& id
   return std::nullopt;
 }
 
+// The item's source when it has one (materials and sections, elements-layer types, have none).
+template <class T>
+std::string source_of(const T& item) {
+  if constexpr (requires { item.source; })
+    return item.source;
+  else
+    return {};
+}
+
 bool is_rotation(const Mat3& R) {
   return (R.transpose() * R - Mat3::Identity()).norm() < 1e-9 && R.determinant() > 0;
 }
 
 }  // namespace
 
-int Structure::add_node(std::string id, const Vec3& position) {
-  nodes_.push_back({std::move(id), position});
+int Structure::add_node(std::string id, const Vec3& position, std::string source) {
+  nodes_.push_back({std::move(id), position, std::move(source)});
   return static_cast<int>(nodes_.size()) - 1;
 }
 int Structure::add_material(Material m) {
@@ -77,95 +87,146 @@ Mat3 Structure::beam_axes(const Beam& b) const {
 Status Structure::validate() const {
   const int nn = static_cast<int>(nodes_.size());
   auto node_ok = [nn](int i) { return i >= 0 && i < nn; };
-  auto dup = [](const auto& items, const char* kind) -> Status {
+  auto invalid = [](const std::string& source, const std::string& message) {
+    return Status::Invalid(at_source(source, message));
+  };
+  auto dup = [&](const auto& items, const char* kind) -> Status {
     std::set<std::string> seen;
     for (const auto& it : items)
       if (!seen.insert(it.id).second)
-        return Status::Invalid(fmt::format("{} '{}' is defined twice; give each {} a unique id", kind, it.id, kind));
+        return invalid(source_of(it), fmt::format("{} '{}' is defined twice; give each {} a unique id", kind, it.id,
+                                                  kind));
     return Status::Ok();
   };
-  if (nn == 0) return Status::Invalid("the structure has no nodes");
+  if (nn == 0) return invalid(source_, "the structure has no nodes");
   for (const auto& s : {dup(nodes_, "node"), dup(materials_, "material"), dup(sections_, "section"),
                         dup(beams_, "beam"), dup(joints_, "joint"), dup(rigid_links_, "rigid link")})
     if (!s.ok()) return s;
   for (const auto& n : nodes_)
-    if (!n.position.allFinite()) return Status::Invalid(fmt::format("node '{}' has a non-finite coordinate", n.id));
+    for (int k = 0; k < 3; ++k)
+      if (Status st = check_quantity(n.position[k], Quantity::kLength, fmt::format("node '{}': coordinate {}", n.id,
+                                                                                    "xyz"[k]));
+          !st.ok())
+        return invalid(n.source, st.message());
   const double tol = 1e-9 * length_scale();
 
   for (const auto& m : materials_)
-    if (!(m.E > 0) || !(m.G > 0) || !std::isfinite(m.E) || !std::isfinite(m.G))
-      return Status::Invalid(fmt::format("material '{}': E and G must be positive (E = {:g}, G = {:g})", m.id, m.E, m.G));
-  for (const auto& s : sections_)
-    if (!(s.A > 0) || !(s.Iy > 0) || !(s.Iz > 0) || !(s.J > 0) || s.Asy < 0 || s.Asz < 0)
-      return Status::Invalid(fmt::format(
-          "section '{}': A, Iy, Iz and J must be positive and shear areas non-negative (A = {:g}, Iy = {:g}, "
-          "Iz = {:g}, J = {:g})", s.id, s.A, s.Iy, s.Iz, s.J));
+    for (const auto& [name, value] : {std::pair{"E", m.E}, std::pair{"G", m.G}})
+      if (Status st = check_quantity(value, Quantity::kModulus, fmt::format("material '{}': {}", m.id, name), {},
+                                     Sign::kPositive);
+          !st.ok())
+        return st;
+  for (const auto& s : sections_) {
+    const std::pair<const char*, double> values[] = {{"A", s.A}, {"Iy", s.Iy}, {"Iz", s.Iz}, {"J", s.J},
+                                                     {"Asy", s.Asy}, {"Asz", s.Asz}};
+    for (const auto& [name, value] : values) {
+      const bool area = name[0] == 'A';
+      const bool shear = area && name[1] == 's';  // 0 = no shear deformation
+      if (Status st = check_quantity(value, area ? Quantity::kArea : Quantity::kInertia,
+                                     fmt::format("section '{}': {}", s.id, name), {},
+                                     shear ? Sign::kNonNegative : Sign::kPositive);
+          !st.ok())
+        return st;
+    }
+  }
 
   for (const auto& b : beams_) {
     if (!node_ok(b.node1) || !node_ok(b.node2))
-      return Status::Invalid(fmt::format("beam '{}' refers to a node that does not exist", b.id));
+      return invalid(b.source, fmt::format("beam '{}' refers to a node that does not exist", b.id));
     if (b.material < 0 || b.material >= static_cast<int>(materials_.size()))
-      return Status::Invalid(fmt::format("beam '{}' has no valid material", b.id));
+      return invalid(b.source, fmt::format("beam '{}' has no valid material", b.id));
     if (b.section < 0 || b.section >= static_cast<int>(sections_.size()))
-      return Status::Invalid(fmt::format("beam '{}' has no valid section", b.id));
+      return invalid(b.source, fmt::format("beam '{}' has no valid section", b.id));
     const Vec3 d = nodes_[b.node2].position - nodes_[b.node1].position;
     if (d.norm() <= tol)
-      return Status::Invalid(fmt::format("beam '{}' has zero length (nodes '{}' and '{}' coincide); use a joint or "
-                                         "rigid link between coincident nodes", b.id, nodes_[b.node1].id, nodes_[b.node2].id));
+      return invalid(b.source, fmt::format("beam '{}' has zero length (nodes '{}' and '{}' coincide); use a joint or "
+                                           "rigid link between coincident nodes",
+                                           b.id, nodes_[b.node1].id, nodes_[b.node2].id));
+    if (!b.orientation.allFinite())
+      return invalid(b.source, fmt::format("beam '{}': its orientation vector is not finite", b.id));
     Mat3 axes;
     if (b.orientation.squaredNorm() > 0 &&
         !element_axes(nodes_[b.node1].position, nodes_[b.node2].position, b.orientation, axes))
-      return Status::Invalid(fmt::format("beam '{}': its orientation vector is parallel to the beam; give a vector "
-                                         "in the beam's local x-y plane that is not along the beam", b.id));
+      return invalid(b.source, fmt::format("beam '{}': its orientation vector is parallel to the beam; give a vector "
+                                           "in the beam's local x-y plane that is not along the beam",
+                                           b.id));
   }
   for (const auto& j : joints_) {
     if (!node_ok(j.node1) || !node_ok(j.node2) || j.node1 == j.node2)
-      return Status::Invalid(fmt::format("joint '{}' must connect two different existing nodes", j.id));
+      return invalid(j.source, fmt::format("joint '{}' must connect two different existing nodes", j.id));
     const double gap = (nodes_[j.node2].position - nodes_[j.node1].position).norm();
     if (gap > tol)
-      return Status::Invalid(fmt::format("joint '{}' connects nodes '{}' and '{}' that are {:g} m apart: a joint's "
-                                         "nodes must coincide (model the offset with a beam or a rigid link)",
-                                         j.id, nodes_[j.node1].id, nodes_[j.node2].id, gap));
-    if (!is_rotation(j.frame)) return Status::Invalid(fmt::format("joint '{}': its frame is not a rotation", j.id));
-    for (int k = 0; k < 6; ++k)
-      if (!(j.stiffness(k) >= 0))
-        return Status::Invalid(fmt::format("joint '{}': stiffness {} must be >= 0 (0 = released, rigid = "
-                                           "constrained)", j.id, dof_name(k)));
+      return invalid(j.source, fmt::format("joint '{}' connects nodes '{}' and '{}' that are {:g} m apart: a joint's "
+                                           "nodes must coincide (model the offset with a beam or a rigid link)",
+                                           j.id, nodes_[j.node1].id, nodes_[j.node2].id, gap));
+    if (!is_rotation(j.frame)) return invalid(j.source, fmt::format("joint '{}': its frame is not a rotation", j.id));
+    for (int k = 0; k < 6; ++k) {
+      if (j.stiffness(k) == kRigid) continue;
+      if (Status st = check_quantity(j.stiffness(k),
+                                     k < 3 ? Quantity::kTranslationalStiffness : Quantity::kRotationalStiffness,
+                                     fmt::format("joint '{}': stiffness {} (0 = released, rigid = constrained)", j.id,
+                                                 dof_name(k)),
+                                     {}, Sign::kNonNegative);
+          !st.ok())
+        return invalid(j.source, st.message());
+    }
   }
   std::set<int> constrained;  // nodes whose dofs depend on another node (slaves)
   for (const auto& r : rigid_links_) {
     if (!node_ok(r.master) || !node_ok(r.slave) || r.master == r.slave)
-      return Status::Invalid(fmt::format("rigid link '{}' must connect two different existing nodes", r.id));
-    if (!is_rotation(r.frame)) return Status::Invalid(fmt::format("rigid link '{}': its frame is not a rotation", r.id));
+      return invalid(r.source, fmt::format("rigid link '{}' must connect two different existing nodes", r.id));
+    if (!is_rotation(r.frame))
+      return invalid(r.source, fmt::format("rigid link '{}': its frame is not a rotation", r.id));
     constrained.insert(r.slave);
   }
   for (const auto& s : supports_) {
-    if (!node_ok(s.node)) return Status::Invalid("a support refers to a node that does not exist");
+    if (!node_ok(s.node)) return invalid(s.source, "a support refers to a node that does not exist");
     if (!is_rotation(s.frame))
-      return Status::Invalid(fmt::format("support of node '{}': its frame is not a rotation", nodes_[s.node].id));
+      return invalid(s.source, fmt::format("support of node '{}': its frame is not a rotation", nodes_[s.node].id));
     if (constrained.count(s.node))
-      return Status::Invalid(fmt::format("node '{}' is both supported and the slave of a rigid link: support its "
-                                         "master node instead", nodes_[s.node].id));
+      return invalid(s.source, fmt::format("node '{}' is both supported and the slave of a rigid link: support its "
+                                           "master node instead",
+                                           nodes_[s.node].id));
   }
   for (const auto& lc : load_cases_) {
     for (const auto& l : lc.loads) {
       if (!node_ok(l.node))
-        return Status::Invalid(fmt::format("load case '{}': a load is applied to a node that does not exist", lc.name));
-      if (!l.wrench.allFinite())
-        return Status::Invalid(fmt::format("load case '{}': a load on node '{}' is not finite", lc.name, nodes_[l.node].id));
+        return invalid(l.source, fmt::format("load case '{}': a load is applied to a node that does not exist", lc.name));
+      for (int k = 0; k < 6; ++k)
+        if (Status st = check_quantity(l.wrench(k), k < 3 ? Quantity::kForce : Quantity::kMoment,
+                                       fmt::format("load case '{}': the load on node '{}', {}", lc.name,
+                                                   nodes_[l.node].id, k < 3 ? "force" : "moment"));
+            !st.ok())
+          return invalid(l.source, st.message());
     }
+    // The loads are summed per node and over the structure: the sums must be finite too.
+    Vec6 total = Vec6::Zero();
+    for (const auto& l : lc.loads) total += l.wrench.cwiseAbs();
+    if (!total.allFinite())
+      return invalid(lc.source, fmt::format("load case '{}': the sum of the loads is not finite; check the values",
+                                            lc.name));
+    std::set<std::pair<int, int>> prescribed;
     for (const auto& p : lc.prescribed) {
       if (!node_ok(p.node) || p.dof < 0 || p.dof >= 6)
-        return Status::Invalid(fmt::format("load case '{}': a prescribed displacement names a missing node or dof", lc.name));
+        return invalid(p.source,
+                       fmt::format("load case '{}': a prescribed displacement names a missing node or dof", lc.name));
+      if (Status st = check_quantity(p.value, p.dof < 3 ? Quantity::kLength : Quantity::kAngle,
+                                     fmt::format("load case '{}': the prescribed {} of node '{}'", lc.name,
+                                                 dof_name(p.dof), nodes_[p.node].id));
+          !st.ok())
+        return invalid(p.source, st.message());
+      if (!prescribed.insert({p.node, p.dof}).second)
+        return invalid(p.source, fmt::format("load case '{}': the {} of node '{}' is prescribed twice; give one value",
+                                             lc.name, dof_name(p.dof), nodes_[p.node].id));
       bool supported = false;
       for (const auto& s : supports_) supported |= (s.node == p.node && s.fixed[p.dof]);
       if (!supported)
-        return Status::Invalid(fmt::format("load case '{}': node '{}' {} has a prescribed displacement but is not a "
-                                           "supported dof; add it to the node's support", lc.name, nodes_[p.node].id,
-                                           dof_name(p.dof)));
+        return invalid(p.source, fmt::format("load case '{}': node '{}' {} has a prescribed displacement but is not a "
+                                             "supported dof; add it to the node's support",
+                                             lc.name, nodes_[p.node].id, dof_name(p.dof)));
     }
   }
-  if (report_node_ && !node_ok(*report_node_)) return Status::Invalid("the report node does not exist");
+  if (report_node_ && !node_ok(*report_node_)) return invalid(source_, "the report node does not exist");
   return Status::Ok();
 }
 

@@ -108,7 +108,8 @@ void bind_model(py::module_& m) {
                         "solve it (validate() checks it as a structure file is checked). The list properties are "
                         "copies.")
       .def(py::init<>())
-      .def("add_node", &Structure::add_node, py::arg("id"), py::arg("position"))
+      .def("add_node", &Structure::add_node, py::arg("id"), py::arg("position"), py::arg("source") = std::string{},
+           "Adds a node; source (e.g. \"FILE:LINE\") is named by the messages about it.")
       .def("add_material", &Structure::add_material, py::arg("material"))
       .def("add_section", &Structure::add_section, py::arg("section"))
       .def("add_beam", &Structure::add_beam, py::arg("beam"))

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "kinestat/core/input_checks.hpp"
+
 namespace kinestat::vjm {
 
 void Chain::add_transform(const Transform& T, std::string label) {
@@ -66,8 +68,7 @@ Status Chain::set_spring_stiffness(int index, const Mat6& K) {
 
 int Chain::add_passive(JointType type, const Vec3& axis, double nominal, std::string label) {
   const int index = num_passive();
-  nominal_q_.conservativeResize(index + 1);
-  nominal_q_[index] = nominal;
+  nominal_q_.push_back(nominal);
   return add_motion(type, axis, 0.0, VariableRef{VariableKind::kPassive, index, 1.0}, std::move(label));
 }
 
@@ -105,7 +106,14 @@ double Chain::length_scale() const {
   return L > 0.0 ? L : 1.0;
 }
 
-Status Chain::validate() const {
+Status Chain::validate(int max_coordinates) const {
+  const double n = num_coordinates();
+  if (Status s = check_size(n, max_coordinates, fmt::format("chain '{}'", name_),
+                            fmt::format("coordinates (passive and virtual: dense matrices of {:.2g} bytes each)",
+                                        8.0 * n * n),
+                            "use fewer springs and joints, or raise the limit (vjm --max-coordinates)");
+      !s.ok())
+    return s;
   for (const Factor& f : factors_) {
     if (f.is_motion && !(std::abs(f.axis.norm() - 1.0) < 1e-12))
       return Status::Invalid(

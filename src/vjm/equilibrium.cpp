@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/vjm/platform.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 #include "vjm/bordered_system.hpp"
@@ -50,7 +51,7 @@ Linearization linearize(const Chain& chain, const MatX& Kth, const Transform& ta
 
 StatusOr<ChainState> chain_equilibrium(const Chain& chain, const Vec6& displacement, const EquilibriumOptions& opt,
                                        const ChainState* start) {
-  if (Status s = chain.validate(); !s.ok()) return s;
+  if (Status s = chain.validate(opt.max_chain_coordinates); !s.ok()) return s;
   if (!displacement.allFinite())
     return Status::Invalid(fmt::format("chain '{}': the prescribed displacement is not finite", chain.name()));
   const int n = chain.num_passive(), m = chain.num_virtual();
@@ -239,21 +240,35 @@ StatusOr<PlatformState> solve_chains(const std::vector<Chain>& chains, const Vec
   return P;
 }
 
+// Each component finite and in its physical range (core/input_checks.hpp), named in the message.
+Status check_twist_or_wrench(const Vec6& v, bool wrench) {
+  static const char* kNames[2][6] = {{"dx", "dy", "dz", "rx", "ry", "rz"}, {"Fx", "Fy", "Fz", "Mx", "My", "Mz"}};
+  for (int k = 0; k < 6; ++k) {
+    const Quantity q = wrench ? (k < 3 ? Quantity::kForce : Quantity::kMoment)
+                              : (k < 3 ? Quantity::kLength : Quantity::kAngle);
+    const std::string item =
+        fmt::format("the prescribed {} {}", wrench ? "wrench" : "displacement", kNames[wrench ? 1 : 0][k]);
+    if (Status s = check_quantity(v[k], q, item); !s.ok()) return s;
+  }
+  return Status::Ok();
+}
+
 }  // namespace
 
 StatusOr<PlatformState> platform_equilibrium(const std::vector<Chain>& chains, const Vec6& displacement,
                                              const EquilibriumOptions& opt) {
-  if (Status s = validate_platform(chains); !s.ok()) return s;
+  if (Status s = validate_platform(chains, opt.max_chain_coordinates); !s.ok()) return s;
+  if (Status s = check_twist_or_wrench(displacement, false); !s.ok()) return s;
   return solve_chains(chains, displacement, opt, nullptr);
 }
 
 StatusOr<PlatformState> platform_equilibrium_under_wrench(const std::vector<Chain>& chains, const Vec6& wrench,
                                                           const EquilibriumOptions& opt) {
-  if (Status s = validate_platform(chains); !s.ok()) return s;
-  if (!wrench.allFinite()) return Status::Invalid("the prescribed wrench is not finite");
+  if (Status s = validate_platform(chains, opt.max_chain_coordinates); !s.ok()) return s;
+  if (Status s = check_twist_or_wrench(wrench, true); !s.ok()) return s;
   const double L = platform_length_scale(chains);
   const Vec6 w = twist_scale(L);
-  const StiffnessOptions sopt{opt.rank_tolerance};
+  const StiffnessOptions sopt{opt.rank_tolerance, opt.max_chain_coordinates};
   StatusOr<PlatformState> P = solve_chains(chains, Vec6::Zero(), opt, nullptr);
   if (!P.ok()) return P;
   const Transform nominal = chains[0].nominal_pose();

@@ -6,10 +6,10 @@
 
 namespace kinestat::vjm {
 
-Status validate_platform(const std::vector<Chain>& chains) {
+Status validate_platform(const std::vector<Chain>& chains, int max_chain_coordinates) {
   if (chains.empty()) return Status::Invalid("the platform has no chains; add at least one");
   for (const Chain& c : chains)
-    if (Status s = c.validate(); !s.ok()) return s;
+    if (Status s = c.validate(max_chain_coordinates); !s.ok()) return s;
   const Vec3 p0 = chains[0].nominal_pose().translation();
   for (const Chain& c : chains) {
     const double gap = (c.nominal_pose().translation() - p0).norm();

@@ -81,7 +81,7 @@ std::string chain_label(const Chain& c) { return fmt::format("chain '{}'", c.nam
 }  // namespace
 
 StatusOr<CartesianStiffness> unloaded_stiffness(const Chain& chain, const StiffnessOptions& opt) {
-  if (Status s = chain.validate(); !s.ok()) return s;
+  if (Status s = chain.validate(opt.max_chain_coordinates); !s.ok()) return s;
   const ChainJacobians J = jacobians(chain, chain.nominal_passive(), VecX::Zero(chain.num_virtual()));
   const BorderedSystem B = factor_bordered_system(J.Jq, spring_compliance(J.Jtheta, chain.spring_stiffness()),
                                                   chain.length_scale(), opt.rank_tolerance);
@@ -95,7 +95,7 @@ StatusOr<CartesianStiffness> unloaded_stiffness(const Chain& chain, const Stiffn
 
 StatusOr<CartesianStiffness> loaded_stiffness(const Chain& chain, const ChainState& state,
                                               const StiffnessOptions& opt) {
-  if (Status s = chain.validate(); !s.ok()) return s;
+  if (Status s = chain.validate(opt.max_chain_coordinates); !s.ok()) return s;
   const int n = chain.num_passive(), m = chain.num_virtual();
   if (state.q.size() != n || state.theta.size() != m)
     return Status::Invalid(fmt::format("{}: the state has {} passive and {} virtual coordinates, the chain {} and {}",
@@ -116,7 +116,8 @@ StatusOr<CartesianStiffness> loaded_stiffness(const Chain& chain, const ChainSta
   // Scaled Jacobians (W J) make the rank decisions unit-free; the unknown is then W^-1 dF.
   const MatX Jq = w.asDiagonal() * J.Jq, Jth = w.asDiagonal() * J.Jtheta;
   const MatX kJt = m > 0 ? MatX(lu.solve(Jth.transpose())) : MatX::Zero(0, 6);
-  const MatX kH = m > 0 ? MatX(lu.solve(H.Hthetaq)) : MatX::Zero(0, n);
+  // No LU solve on an empty block (a chain without passive joints: H_thetaq is m x 0).
+  const MatX kH = m > 0 && n > 0 ? MatX(lu.solve(H.Hthetaq)) : MatX::Zero(m, n);
   const MatX S = Jth * kJt;                         // J_theta k J_theta^T
   const MatX B = Jq + Jth * kH;                     // J_q + J_theta k K_thetaq
   const MatX C = Jq.transpose() + H.Hqtheta * kJt;  // J_q^T + K_qtheta k J_theta^T
@@ -160,7 +161,7 @@ namespace {
 template <class PerChain>
 StatusOr<CartesianStiffness> platform_stiffness(const std::vector<Chain>& chains, const StiffnessOptions& opt,
                                                 PerChain per_chain) {
-  if (Status s = validate_platform(chains); !s.ok()) return s;
+  if (Status s = validate_platform(chains, opt.max_chain_coordinates); !s.ok()) return s;
   std::vector<CartesianStiffness> parts;
   for (size_t i = 0; i < chains.size(); ++i) {
     StatusOr<CartesianStiffness> k = per_chain(i);

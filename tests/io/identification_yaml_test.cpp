@@ -79,7 +79,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"ZeroValue",
                 "inputs: [foot_length]\ntargets:\n  - {architecture: 3-PUU, point: [0, 0, 0], row: 0, col: 0, "
                 "value: 0}\n",
-                "bad.yaml:3: target #1: 'value' is zero"}),
+                "bad.yaml:3: target #1: 'value' = 0 m/N must be positive"}),
     [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -41,7 +41,7 @@ TEST_P(BadFixture, NamesFileLineAndItem) {
 }
 
 // Lines counted in the fixture files (each starts with a comment line). A missing file has no
-// line; joint_gap.yaml parses but fails Structure::validate(), whose message gets the file name.
+// line; joint_gap.yaml parses but fails Structure::validate(), whose message gets the joint's line.
 INSTANTIATE_TEST_SUITE_P(
     Fixtures, BadFixture,
     ::testing::Values(BadInput{"malformed.yaml", 4, "malformed YAML", "check indentation"},
@@ -52,13 +52,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"unknown_node.yaml", 11, "beam 'b2'", "unknown node 'Z'"},
                       BadInput{"duplicate_id.yaml", 5, "node 'B'", "already used"},
                       BadInput{"zero_length.yaml", 12, "beam 'b2'", "zero length"},
-                      BadInput{"negative_modulus.yaml", 6, "material 'rubber'", "'E' must be positive"},
-                      BadInput{"zero_inertia.yaml", 8, "section 'strip'", "'Iz' must be positive"},
+                      BadInput{"negative_modulus.yaml", 6, "material 'rubber'", "'E' = -5e+06 Pa must be positive"},
+                      BadInput{"zero_inertia.yaml", 8, "section 'strip'", "'Iz' = 0 m^4 must be positive"},
                       BadInput{"load_missing_node.yaml", 11, "load case 'push'", "unknown node 'tip'"},
                       BadInput{"support_missing_node.yaml", 6, "support #2", "unknown node 'ground'"},
                       BadInput{"unknown_dof.yaml", 6, "support at node 'A'", "unknown dof 'uw'"},
                       BadInput{"no_such_file.yaml", 0, "no_such_file.yaml", "cannot open the structure file"},
-                      BadInput{"joint_gap.yaml", 0, "joint 'j1'", "must coincide"}),
+                      BadInput{"joint_gap.yaml", 6, "joint 'j1'", "must coincide"}),
     [](const auto& info) {
       std::string name = info.param.file;
       return name.substr(0, name.find('.'));
@@ -134,7 +134,7 @@ TEST(StructureYaml, BeamJointLinkErrors) {
   expect_error(m + "joints:\n  - {id: j, nodes: [B, C], stiffness: [1, 1, 1, 1, 1]}\n", 12,
                {"joint 'j'", "six values"});
   expect_error(m + "joints:\n  - {id: j, nodes: [B, C], stiffness: [1, 1, 1, 1, 1, -1]}\n", 12,
-               {"joint 'j'", "stiffness rz = -1 is negative"});
+               {"joint 'j'", "'stiffness rz' = -1 N m/rad must not be negative"});
   expect_error(m + "joints:\n  - {id: j, nodes: [B, C], stiffness: [1, 1, 1, 1, 1, stiff]}\n", 12,
                {"joint 'j'", "got 'stiff'"});
   expect_error(m + "joints:\n  - {id: j, nodes: [B, C], stiffness: {ux: 1, uy: 1, uz: 1, rx: 1, ry: 1}}\n", 12,

@@ -152,7 +152,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"OrthoglideBlockMissing", "mechanism: orthoglide\n", "file: missing required key 'orthoglide'"},
         BadCase{"BadArchitecture", kBadArch.c_str(), "bad.yaml:3: orthoglide: unknown architecture '3-RRR'"},
         BadCase{"NegativePlatformOffset", kNegativeOffset.c_str(),
-                "bad.yaml:4: orthoglide: 'platform_offset' must be >= 0"},
+                "bad.yaml:4: orthoglide: 'platform_offset' = -3 m must not be negative"},
         BadCase{"PoissonOutOfRange", kBadNu.c_str(), "bad.yaml:6: orthoglide bar: 'nu' = 0.7 is not in (-1, 0.5)"},
         BadCase{"NoChains", "units: SI\n", "file: missing required key 'chains'"},
         BadCase{"EmptyChains", "chains: []\n", "bad.yaml:1: chains: the list is empty"},
@@ -161,7 +161,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnknownElement", "chains:\n  - name: a\n    elements:\n      - {twist: 1}\n",
                 "bad.yaml:4: chain 'a' element 1: unknown key 'twist'"},
         BadCase{"ZeroAxis", "chains:\n  - name: a\n    elements:\n      - rotate: {axis: [0, 0, 0], angle: 1}\n",
-                "bad.yaml:4: chain 'a' element 1 (rotate): 'axis' is the zero vector"},
+                "bad.yaml:4: chain 'a' element 1 (rotate): 'axis': the direction must be finite and non-zero"},
         BadCase{"CoupledToUnknownJoint",
                 "chains:\n  - name: a\n    elements:\n      - coupled: {to: q9, type: revolute, axis: [0, 1, 0], coefficient: -1}\n",
                 "bad.yaml:4: chain 'a' element 1 (coupled): no passive joint with id 'q9'"},
@@ -170,13 +170,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"NegativeActuatorStiffness",
                 "chains:\n  - name: a\n    elements:\n      - actuator: {type: prismatic, axis: [1, 0, 0], value: 0,\n"
                 "                   stiffness: -5}\n",
-                "bad.yaml:5: chain 'a' element 1 (actuator): 'stiffness' must be positive"},
+                "bad.yaml:5: chain 'a' element 1 (actuator): 'stiffness' = -5 N/m must be positive"},
         BadCase{"MatrixNotSixRows", "chains:\n  - name: a\n    elements:\n      - spring: {matrix: [[1, 2]]}\n",
                 "bad.yaml:4: chain 'a' element 1 (spring): 'matrix' must be 6 rows of 6 numbers"},
         BadCase{"UnknownSection",
                 "chains:\n  - name: a\n    elements:\n      - spring:\n          cantilever: {E: 1, nu: 0.3, length: 1,\n"
                 "                       section: {type: star, d: 1}}\n",
-                "bad.yaml:6: chain 'a' element 1 (spring) cantilever section: unknown type 'star'"},
+                "bad.yaml:6: chain 'a' element 1 (spring) cantilever section: unknown section type 'star'"},
         BadCase{"SpringNotPositiveDefinite",
                 "chains:\n  - name: a\n    elements:\n      - spring: {matrix: [[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], [0, 0, 1, 0, 0, 0],\n"
                 "                          [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, -1]]}\n",

@@ -1,6 +1,7 @@
 // Five-bar design sweep: each design's counts equal those counted from a workspace map of that
-// design computed separately (with the reference kernel, posture by posture); the best design has the
-// largest share; bad ranges are refused naming the range.
+// design computed separately (with the same sweep kernel, whose values test_posture_kernels.cpp checks
+// against the reference kernels); the best design has the largest share; bad ranges are refused
+// naming the range.
 #include "kinestat/mechanisms/five_bar_design_sweep.hpp"
 
 #include <gtest/gtest.h>
@@ -43,7 +44,7 @@ TEST(FiveBarDesignSweep, CountsEqualThoseOfASeparateMapOfEachDesign) {
     FiveBarKernelOptions design = o.base;
     design.params.r1 = r.r1;
     design.params.r2 = r.r2;
-    auto map = compute_workspace_map(*make_reference_five_bar_kernel(design), o.region, map_options);
+    auto map = compute_workspace_map(*make_five_bar_kernel(design), o.region, map_options);
     ASSERT_TRUE(map.ok());
     std::size_t reachable = 0, free = 0, stiff = 0;
     const std::vector<double>& kt = map->find(MapField::kTranslationalMin)->values;
@@ -90,7 +91,7 @@ TEST(FiveBarDesignSweep, WeakestPointIsTheMinimumOverTheSingularityFreePoints) {
   auto sweep = sweep_five_bar_designs(o);
   ASSERT_TRUE(sweep.ok()) << sweep.status().message();
   ASSERT_EQ(sweep->results.size(), 1u);
-  auto map = compute_workspace_map(*make_reference_five_bar_kernel(o.base), o.region);
+  auto map = compute_workspace_map(*make_five_bar_kernel(o.base), o.region);
   ASSERT_TRUE(map.ok());
   double worst = std::numeric_limits<double>::infinity();
   const std::vector<double>& kt = map->find(MapField::kTranslationalMin)->values;

@@ -107,6 +107,55 @@ TEST(OrthoglideIdentification, BadRequestsAreRefusedWithAReason) {
   EXPECT_FALSE(far.ok());
 }
 
+// Inputs the targets cannot determine used to end as a "success" anywhere along the undetermined
+// direction; impossible targets and a tolerance that is not a number used to end as internal failures.
+TEST(OrthoglideIdentification, UndeterminedOrImpossibleRequestsAreBadInput) {
+  auto expect_invalid = [](const StatusOr<OrthoglideIdentification>& r, const std::string& part) {
+    ASSERT_FALSE(r.ok()) << "expected a refusal with \"" << part << "\":\n" << r->report;
+    EXPECT_EQ(r.status().code(), StatusCode::kInvalidInput) << r.status().message();
+    EXPECT_NE(r.status().message().find(part), std::string::npos) << r.status().message();
+  };
+  const OrthoglideStiffnessModel start = paper_calibration_start();
+  const std::vector<ComplianceTarget> targets = paper_calibration_targets();
+  expect_invalid(identify_orthoglide_inputs(start, kInputs, targets, std::nan("")), "tolerance nan");
+  expect_invalid(identify_orthoglide_inputs(start, kInputs, targets, 0.0), "tolerance 0");
+
+  // Target 2 repeated in place of target 5: five targets, four distinct terms, five inputs.
+  std::vector<ComplianceTarget> repeated = targets;
+  repeated[4] = repeated[1];
+  repeated[4].label = "copy";
+  repeated[4].source = "t.yaml:9";
+  expect_invalid(identify_orthoglide_inputs(start, kInputs, repeated), "t.yaml:9: target 'copy': the same term as");
+
+  // The parallelogram exists only in the 3-PRPaR: with 3-PUU targets alone its width changes nothing.
+  const std::vector<ComplianceTarget> puu_only = {targets[0], targets[1], targets[3]};
+  expect_invalid(identify_orthoglide_inputs(
+                     start, {OrthoglideInput::kActuatorStiffness, OrthoglideInput::kParallelogramWidth}, puu_only),
+                 "the parallelogram width (m) has no effect on the targets");
+
+  // Distinct terms that carry the same information: at Q0, C(0,0) = C(1,1) = C(2,2) by symmetry, so
+  // two of them cannot separate the actuator from the foot.
+  std::vector<ComplianceTarget> symmetric = {targets[0], targets[0]};
+  symmetric[1].row = symmetric[1].col = 1;
+  expect_invalid(identify_orthoglide_inputs(
+                     start, {OrthoglideInput::kActuatorStiffness, OrthoglideInput::kFootLength}, symmetric),
+                 "the targets cannot determine the inputs");
+
+  std::vector<ComplianceTarget> negative = targets;
+  negative[0].value = -negative[0].value;
+  expect_invalid(identify_orthoglide_inputs(start, kInputs, negative), "is negative");
+}
+
+TEST(OrthoglideIdentification, AnUnreachableTargetNamesItsSource) {
+  std::vector<ComplianceTarget> targets = paper_calibration_targets();
+  targets[2].point = Vec3(0, 0.4, 0);
+  targets[2].source = "targets.yaml:7";
+  StatusOr<OrthoglideIdentification> r = identify_orthoglide_inputs(paper_calibration_start(), kInputs, targets);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.status().message().rfind("targets.yaml:7: target 'Table 2, Q0, k_rot': ", 0), 0u)
+      << r.status().message();
+}
+
 // ---- Predictions: the entries not used above, against the tables. ----
 
 struct Blocks {

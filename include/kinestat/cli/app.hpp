@@ -21,7 +21,8 @@ inline constexpr int kExitInternal = 1;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitSingular = 3;
 
-// The exit status for a library status: kOk 0, kInvalidInput 2, kSingular 3, anything else 1.
+// The exit status for a library status: kOk 0, kInvalidInput and kNotConverged 2, kSingular 3, anything
+// else 1.
 int exit_code_for(const Status& status);
 
 // What a subcommand writes to and returns through.

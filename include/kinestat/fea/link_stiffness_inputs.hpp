@@ -14,8 +14,11 @@
 
 namespace kinestat::fea {
 
-// `count` comma-separated numbers; kInvalidInput "WHAT: ..." otherwise.
+// `count` comma-separated finite numbers; kInvalidInput "WHAT: ..." otherwise.
 StatusOr<std::vector<double>> parse_numbers(const std::string& text, size_t count, const std::string& what);
+
+// "X,Y,Z" in the mesh file's unit, converted to m with `scale`, each in the range of a length.
+StatusOr<Vec3> parse_point(const std::string& text, double scale, const std::string& what);
 
 // "x=V" (plane normal to x at V; likewise y, z), "plane:PX,PY,PZ,NX,NY,NZ", "box:X0,Y0,Z0,X1,Y1,Z1";
 // lengths in the mesh file's unit, converted to m with `scale`. Messages start with `what`.

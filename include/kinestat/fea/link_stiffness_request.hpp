@@ -22,6 +22,8 @@ struct LinkStiffnessRequest {
   double unit_scale = 1e-3;   // the mesh file's length unit in m (1e-3: the file is in mm)
   double mesh_size = 0.0;     // tetrahedron size in m; 0: default_mesh_size (1/20 of the largest extent)
   bool quadratic = true;      // element order: 10-node tetrahedra (4-node ones lock in bending)
+  // Refuse a mesh estimated above this many tetrahedra before meshing (MeshingOptions::max_elements).
+  double max_elements = MeshingOptions{}.max_elements;
   Material material = Material::from_E_nu("steel", 210e9, 0.3);
   // Clamp and reference regions and point (m, link frame), reference-body model, solver options,
   // whether to keep the fields (for VTK output), progress callback.

@@ -19,9 +19,9 @@ namespace kinestat::io {
 //    assembly, at a singularity or beyond the software limit sum(rho) are left out with their cells.
 //  DIR/orthoglide_sN_cube.vtu: the cubic workspace as one hexahedron with the same point data at its
 //    eight vertices.
-// The paths written are appended to `written` when it is not null. kInvalidInput when n < 2 or a
-// file cannot be written.
+// The paths written are appended to `written` when it is not null. kInvalidInput when n < 2, n^3 exceeds
+// `max_points` (checked before anything is allocated: ~150 bytes per point), or a file cannot be written.
 Status write_orthoglide_workspace_vtk(const mechanisms::OrthoglideDesign& d, int n, const std::string& dir,
-                                      std::vector<std::string>* written);
+                                      std::vector<std::string>* written, double max_points = 2e6);
 
 }  // namespace kinestat::io

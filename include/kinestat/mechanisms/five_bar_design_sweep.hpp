@@ -28,7 +28,7 @@ struct FiveBarDesignSweepOptions {
   double near_singular_threshold = MapOptions{}.near_singular_threshold;
   std::optional<double> min_stiffness;  // N/m, on k_t_min (the weakest direction, workspace_map.hpp)
   int threads = 0;                      // 0: all cores
-  // The kernel of one design; empty: make_reference_five_bar_kernel.
+  // The kernel of one design; empty: make_five_bar_kernel (the sweep kernel).
   std::function<std::unique_ptr<PostureKernel>(const FiveBarKernelOptions&)> make_kernel;
   // progress(done, total) in postures over the whole sweep, from one thread at a time.
   std::function<void(std::size_t done, std::size_t total)> progress;

@@ -40,6 +40,7 @@ struct ComplianceTarget {
   Vec3 point = Vec3::Zero();  // kinematics frame (m)
   int row = 0, col = 0;
   double value = 0.0;
+  std::string source{};  // where it was read ("file:line"; empty when built in code): starts its messages
 };
 
 struct OrthoglideIdentification {
@@ -54,9 +55,12 @@ struct OrthoglideIdentification {
 
 // Solves for `inputs` (start values from `start`; each must be > 0, so give platform_offset a
 // positive guess) so that the model's compliance matches `targets`; at least as many targets as
-// inputs. kInvalidInput for a bad start model, too few targets or an index out of range; kSingular if
-// a target cannot be evaluated at the start (unreachable point, singular posture); kNotConverged
-// when a residual stays above `tolerance` (the report says which).
+// inputs. kInvalidInput for a bad start model, a tolerance outside (0, 1), too few targets, an index
+// out of range, a negative diagonal term, a repeated target, an input that changes no target or
+// targets that cannot tell the inputs apart (rank-deficient Jacobian at the start); kSingular if a
+// target cannot be evaluated at the start (unreachable point, singular posture); kNotConverged when a
+// residual stays above `tolerance` (the report says which). Messages about a target start with its
+// source and label.
 StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideStiffnessModel& start,
                                                               const std::vector<OrthoglideInput>& inputs,
                                                               const std::vector<ComplianceTarget>& targets,

@@ -75,7 +75,7 @@ enum class MapField : int {
   kNormFrobenius,        // eq. (11)
   kNormInf,              // max row sum of |k_ij| (the paper's Chebyshev norm)
   kConditionNumber,      // max|eig| / min|eig| of K, eq. (13)
-  kLog10Det,             // log10 det K, eq. (7) (det K of a 6x6 in SI is ~1e40)
+  kLog10Det,             // log10 det K, eq. (7) (det K in SI spans decades: 1e13 to 1e28 in the examples)
   kDeflectionTranslation,  // |C w| translational part under the load w (m)
   kDeflectionRotation,     // |C w| rotational part (rad)
   kSingularityMeasure,   // the kernel's distance to a singularity (1), 0 at a singularity
@@ -102,7 +102,8 @@ struct FieldSummary {
 
 struct MapOptions {
   // A point with values whose singularity measure is below this is kNearSingular. 0.01: for the
-  // paper's five-bar (links 0.1 m) a band about 1 mm wide along each singular locus (docs/maps.md).
+  // paper's five-bar (links 0.1 m) a band about 1 mm wide along its loci, up to 1 cm along the
+  // B1 = B2 circle of working modes +- and -+ (docs/maps.md).
   double near_singular_threshold = 0.01;
   // Stiff region: points with values and k_t_min >= min_stiffness (N/m).
   std::optional<double> min_stiffness;

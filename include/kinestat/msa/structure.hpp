@@ -21,9 +21,14 @@ using DofMask = std::array<bool, 6>;  // per node dof: ux uy uz rx ry rz
 inline constexpr DofMask kAllDofs = {true, true, true, true, true, true};
 inline constexpr double kRigid = std::numeric_limits<double>::infinity();
 
+// Every item may carry `source`, where it was defined ("FILE:LINE", set by io::read_structure_yaml;
+// empty when built in code): the checks that run after reading (validate(), the solve's dof
+// reduction) start their messages with it, so every message names the file and the line.
+
 struct Node {
   std::string id;
   Vec3 position = Vec3::Zero();
+  std::string source{};
 };
 
 struct Beam {
@@ -33,6 +38,7 @@ struct Beam {
   Vec3 orientation = Vec3::Zero();  // a vector in the local x-y plane; zero = default_orientation()
   BeamTheory theory = BeamTheory::kEulerBernoulli;
   BeamReleases releases{};          // local dofs freed at the ends (pins, torsion releases)
+  std::string source{};
 };
 
 // 6-dof spring between two coincident nodes; stiffness in `frame` (columns: local axes in global).
@@ -42,6 +48,7 @@ struct Joint {
   int node1 = -1, node2 = -1;
   Mat3 frame = Mat3::Identity();
   Vec6 stiffness = Vec6::Zero();
+  std::string source{};
 };
 
 // The `slave` node follows `master` as a rigid body in the dofs of `mask` (expressed in `frame`);
@@ -51,6 +58,7 @@ struct RigidLink {
   int master = -1, slave = -1;
   DofMask mask = kAllDofs;
   Mat3 frame = Mat3::Identity();
+  std::string source{};
 };
 
 // Fixed dofs of a node, in `frame` (identity = global axes).
@@ -58,11 +66,13 @@ struct Support {
   int node = -1;
   DofMask fixed = kAllDofs;
   Mat3 frame = Mat3::Identity();
+  std::string source{};
 };
 
 struct NodalLoad {
   int node = -1;
   Vec6 wrench = Vec6::Zero();  // Fx Fy Fz (N), Mx My Mz (N m), global axes
+  std::string source{};
 };
 
 // A prescribed displacement of a supported dof (in the support's frame): m or rad.
@@ -70,6 +80,7 @@ struct PrescribedDisplacement {
   int node = -1;
   int dof = 0;
   double value = 0.0;
+  std::string source{};
 };
 
 // (Every member has an initializer, so that designated initializers may leave any out warning-free.)
@@ -77,12 +88,13 @@ struct LoadCase {
   std::string name{};
   std::vector<NodalLoad> loads{};
   std::vector<PrescribedDisplacement> prescribed{};
+  std::string source{};
 };
 
 class Structure {
  public:
   // Building. Each add_* returns the new item's index. Names must be unique per kind.
-  int add_node(std::string id, const Vec3& position);
+  int add_node(std::string id, const Vec3& position, std::string source = {});
   int add_material(Material m);
   int add_section(Section s);
   int add_beam(Beam b);
@@ -92,13 +104,17 @@ class Structure {
   int add_load_case(LoadCase lc);
   void set_report_node(int node) { report_node_ = node; }
   void set_title(std::string t) { title_ = std::move(t); }
+  // Where the structure was read from (a file name): starts the messages about the whole structure.
+  void set_source(std::string s) { source_ = std::move(s); }
 
-  // Checks what the assembly relies on: valid indices, unique ids, positive lengths and section
-  // properties, coincident joint nodes, loads on existing nodes, no node both supported and
-  // constrained. Messages name the item and say what to fix.
+  // Checks what the assembly relies on: valid indices, unique ids, every value finite and in its
+  // physical range (core/input_checks.hpp), positive lengths and section properties, coincident joint
+  // nodes, loads on existing nodes whose sum is finite, one prescribed value per dof, no node both
+  // supported and constrained. Messages start with the item's source, name the item and say what to fix.
   Status validate() const;
 
   const std::string& title() const { return title_; }
+  const std::string& source() const { return source_; }
   const std::vector<Node>& nodes() const { return nodes_; }
   const std::vector<Material>& materials() const { return materials_; }
   const std::vector<Section>& sections() const { return sections_; }
@@ -120,6 +136,7 @@ class Structure {
 
  private:
   std::string title_;
+  std::string source_;
   std::vector<Node> nodes_;
   std::vector<Material> materials_;
   std::vector<Section> sections_;

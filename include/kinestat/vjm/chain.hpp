@@ -23,6 +23,12 @@ namespace kinestat::vjm {
 
 using Transform = Eigen::Isometry3d;
 
+// The methods form dense matrices over a chain's coordinates (passive q and virtual theta, n + m):
+// K_theta (m x m), the Hessians of the loaded mode ((n + m)^2) and their LU. Above this many
+// coordinates a chain is refused before they are allocated (5000: 0.2 GB per matrix, seconds per
+// factorization); StiffnessOptions and EquilibriumOptions raise it (the vjm command: --max-coordinates).
+inline constexpr int kDefaultMaxChainCoordinates = 5000;
+
 enum class JointType { kRevolute, kPrismatic };
 
 // Passive joint coordinate q_k, or virtual (spring) coordinate theta_k.
@@ -90,21 +96,22 @@ class Chain {
   const std::vector<Factor>& factors() const { return factors_; }
   const std::vector<Spring>& springs() const { return springs_; }
   int num_passive() const { return static_cast<int>(nominal_q_.size()); }
+  int num_coordinates() const { return num_passive() + num_virtual(); }
   int num_virtual() const { return num_virtual_; }
-  const VecX& nominal_passive() const { return nominal_q_; }
-  void set_nominal_passive(const VecX& q) { nominal_q_ = q; }
+  VecX nominal_passive() const { return Eigen::Map<const VecX>(nominal_q_.data(), num_passive()); }
+  void set_nominal_passive(const VecX& q) { nominal_q_.assign(q.data(), q.data() + q.size()); }
 
   // K_theta = diag(K_theta,1 ... ), m x m (eq. 6).
   MatX spring_stiffness() const;
   // Sum of the rigid translation lengths (m): the scale that makes m and rad comparable.
   double length_scale() const;
-  // Springs finite, symmetric and positive definite; axes non-zero; coordinates sized right.
-  // Messages name the chain and the factor.
-  Status validate() const;
+  // Springs finite, symmetric and positive definite; axes non-zero; coordinates sized right; at most
+  // `max_coordinates` coordinates (n + m). Messages name the chain and the factor.
+  Status validate(int max_coordinates = kDefaultMaxChainCoordinates) const;
 
   // Tool pose T(q, theta) of eq. (1).
   Transform forward(const VecX& q, const VecX& theta) const;
-  Transform nominal_pose() const { return forward(nominal_q_, VecX::Zero(num_virtual_)); }
+  Transform nominal_pose() const { return forward(nominal_passive(), VecX::Zero(num_virtual_)); }
 
  private:
   int add_motion(JointType type, const Vec3& axis, double offset, std::optional<VariableRef> v, std::string label);
@@ -112,7 +119,7 @@ class Chain {
   std::string name_;
   std::vector<Factor> factors_;
   std::vector<Spring> springs_;
-  VecX nominal_q_ = VecX(0);
+  std::vector<double> nominal_q_;  // grows by one per passive joint: a vector, not a VecX (O(n) growth)
   int num_virtual_ = 0;
 };
 

@@ -27,6 +27,7 @@ struct EquilibriumOptions {
   // floor ~eps |K| (very stiff springs).
   double tolerance = 1e-12;  // the round-off floor of the static residual is ~1e-14 for stiff chains
   double rank_tolerance = 1e-10;  // as StiffnessOptions::rank_tolerance
+  int max_chain_coordinates = kDefaultMaxChainCoordinates;  // as StiffnessOptions::max_chain_coordinates
 };
 
 // Equilibrium of one chain whose tool is displaced by `displacement` (dx dy dz in m, rotation

@@ -9,9 +9,10 @@
 
 namespace kinestat::vjm {
 
-// Checks that the chains are valid and that their nominal tool points coincide (the platform is
-// assembled); the message names the chain at fault.
-Status validate_platform(const std::vector<Chain>& chains);
+// Checks that the chains are valid (Chain::validate, at most `max_chain_coordinates` coordinates each)
+// and that their nominal tool points coincide (the platform is assembled); the message names the chain
+// at fault.
+Status validate_platform(const std::vector<Chain>& chains, int max_chain_coordinates = kDefaultMaxChainCoordinates);
 
 // The largest chain length scale (m): makes metres and radians comparable in rank decisions.
 double platform_length_scale(const std::vector<Chain>& chains);

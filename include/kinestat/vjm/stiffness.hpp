@@ -23,6 +23,7 @@ struct StiffnessOptions {
   // or eigenvalue counts as zero: a lost direction. 1e-10 keeps ~6 digits of double precision for
   // what is kept and still separates a spring 1e6 times stiffer than the others.
   double rank_tolerance = 1e-10;
+  int max_chain_coordinates = kDefaultMaxChainCoordinates;  // a longer chain is refused (vjm/chain.hpp)
 };
 
 // Results are kinestat::CartesianStiffness (core/cartesian_stiffness.hpp): the tool point, global

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer (docs/reliability.md).
+# Builds with clang-16 in build-sanitize/ (its own folder: the Release build in build/ is untouched),
+# with -fsanitize=address,undefined -fno-sanitize-recover=undefined, and runs every ctest test there:
+# any sanitizer report fails the test that triggered it, and this script. The same build carries the
+# libFuzzer harnesses that scripts/fuzz.sh runs (KINESTAT_BUILD_FUZZERS); benchmarks are left out.
+#   scripts/sanitize.sh             build and run the tests
+#   scripts/sanitize.sh --build     build only (scripts/fuzz.sh)
+# Called by scripts/test.sh, hence by CI.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+jobs=$(nproc 2>/dev/null || echo 2)
+# -gline-tables-only: file and line in the reports at little build cost.
+flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -gline-tables-only"
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-16 \
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DKINESTAT_BUILD_BENCHMARKS=OFF -DKINESTAT_BUILD_PYTHON=OFF -DKINESTAT_BUILD_FUZZERS=ON >/dev/null
+cmake --build build-sanitize -j"$jobs"
+if [ "${1:-}" = "--build" ]; then exit 0; fi
+export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:check_initialization_order=1"
+export UBSAN_OPTIONS="print_stacktrace=1"
+cd build-sanitize
+ctest --output-on-failure -j"$jobs" --timeout 900
