@@ -29,8 +29,8 @@ Status petsc_error(PetscErrorCode code, const char* call) {
   PetscErrorMessage(code, &text, nullptr);
   return Status::Internal(fmt::format("PETSc: {} failed: {}", call, text ? text : "unknown error"));
 }
-#define KINESTAT_PETSC(call)                                           \
-  do {                                                                 \
+#define KINESTAT_PETSC(call)                                                      \
+  do {                                                                            \
     if (PetscErrorCode code_ = (call); code_ != 0) return petsc_error(code_, #call); \
   } while (0)
 
@@ -55,6 +55,7 @@ class PetscSolver final : public SparseCholesky {
   Status Factorize(const SparseMatrix& A, FactorizationReport* report) override {
     FactorizationReport r;
     Status s = FactorizeImpl(A, &r);
+    if (!s.ok()) Release();  // no Solve with a half-made or singular factor
     if (report) *report = r;
     return s;
   }
@@ -77,8 +78,7 @@ class PetscSolver final : public SparseCholesky {
       KINESTAT_PETSC(MatCreateVecs(A_, &x, &b));
       KINESTAT_PETSC(VecDuplicate(b, &residual));
       KINESTAT_PETSC(VecScatterCreateToAll(x, &gather, &all));
-      std::vector<PetscInt> rows(rend_ - rstart_);
-      for (PetscInt i = rstart_; i < rend_; ++i) rows[i - rstart_] = i;
+      const std::vector<PetscInt> rows = owned_rows();
       for (Eigen::Index k = 0; k < B.cols(); ++k) {
         KINESTAT_PETSC(VecSetValues(b, rend_ - rstart_, rows.data(), B.col(k).data() + rstart_, INSERT_VALUES));
         KINESTAT_PETSC(VecAssemblyBegin(b));
@@ -131,6 +131,12 @@ class PetscSolver final : public SparseCholesky {
 
  private:
   bool iterative() const { return options_.backend == Backend::kPetscCg; }
+
+  std::vector<PetscInt> owned_rows() const {
+    std::vector<PetscInt> rows(rend_ - rstart_);
+    for (PetscInt i = rstart_; i < rend_; ++i) rows[i - rstart_] = i;
+    return rows;
+  }
 
   void Release() {
     if (lifecycle != Lifecycle::kRunning) return;  // PETSc already finished: its objects went with it
@@ -238,7 +244,6 @@ class PetscSolver final : public SparseCholesky {
     KINESTAT_PETSC(PCGetFailedReason(pc, &failed));
     if (failed != PC_NOERROR) {
       r->failed_column = 0;  // MUMPS does not say which
-      Release();
       return Status::Singular(fmt::format("{} found the matrix singular or not positive definite ({})",
                                           iterative() ? "GAMG" : "MUMPS", PCFailedReasons[failed]));
     }
@@ -251,7 +256,6 @@ class PetscSolver final : public SparseCholesky {
       KINESTAT_PETSC(MatMumpsGetInfog(factor, 12, &negative_pivots));
       if (null_pivots > 0 || negative_pivots > 0) {
         r->failed_column = 0;  // MUMPS does not say which
-        Release();
         return Status::Singular(fmt::format("MUMPS found {} null and {} negative pivots: the matrix is singular (a "
                                             "free motion) or not positive definite",
                                             null_pivots, negative_pivots));
@@ -271,8 +275,7 @@ class PetscSolver final : public SparseCholesky {
   PetscErrorCode AttachNearNullSpace() {
     const MatX Q = Eigen::HouseholderQR<MatX>(near_null_).householderQ() * MatX::Identity(n_, near_null_.cols());
     std::vector<Vec> vectors(Q.cols(), nullptr);
-    std::vector<PetscInt> rows(rend_ - rstart_);
-    for (PetscInt i = rstart_; i < rend_; ++i) rows[i - rstart_] = i;
+    const std::vector<PetscInt> rows = owned_rows();
     for (Eigen::Index k = 0; k < Q.cols(); ++k) {
       PetscCall(MatCreateVecs(A_, &vectors[k], nullptr));
       PetscCall(VecSetValues(vectors[k], rend_ - rstart_, rows.data(), Q.col(k).data() + rstart_, INSERT_VALUES));
