@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Proves the installable package: installs build/ into a temporary prefix, checks that the prefix
-# holds the headers, the layer libraries, the kinestat executable and the CMake package files, then
+# holds the headers, the layer libraries, the kinestat executable, the CMake package files and (when
+# built) the Python package, which it imports from there; then
 # configures, builds and runs tests/install/consumer (find_package(kinestat), kinestat::kinestat)
 # against that prefix alone. Called by scripts/test.sh after ctest; run it after a build.
 set -euo pipefail
@@ -39,6 +40,17 @@ fi
 [[ $missing == 0 ]] || exit 1
 
 "$prefix/bin/kinestat" --help >/dev/null
+# The Python package, when it was built: found under the prefix by setting one path, as
+# docs/python.md says, and imported from there (not from the build tree).
+if compgen -G "build/python/kinestat/_kinestat*.so" >/dev/null; then
+  site=$(find "$prefix" -type d -name kinestat -path '*-packages/kinestat' | head -n1)
+  [[ -n "$site" ]] || { echo "check_install: the Python package kinestat is not installed" >&2; exit 1; }
+  (cd "$work" && PYTHONPATH="$(dirname "$site")" /usr/bin/python3 -c "
+import kinestat, sys
+assert kinestat.__file__.startswith(sys.argv[1]), kinestat.__file__
+assert kinestat.mechanisms.compute_workspace_map and kinestat.fea.compute_link_stiffness
+" "$prefix") || { echo "check_install: the installed Python package does not import" >&2; exit 1; }
+fi
 cmake -S "$root/tests/install/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build "$work/consumer" -j"$(nproc 2>/dev/null || echo 2)" >/dev/null

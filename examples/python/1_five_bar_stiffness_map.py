@@ -1,24 +1,33 @@
 """Example 1: a stiffness map of the five-bar (Goncalves et al. 2010) with matplotlib.
 
-The smallest translational stiffness of the platform point P over the plane, for the ++ working mode
-and the up assembly mode: the eigenvalue of the 3x3 translational block of the 6x6 Cartesian
-stiffness, in N/mm. Blank where P is out of reach; it falls to zero at the singularities.
-evaluate_postures runs the MSA posture kernel on every point of the grid (all cores, GIL released)
-and returns arrays shaped like the grid.
+k_t_min, the stiffness of the platform point P in its weakest direction (N/mm), over the plane, for
+the ++ working mode and the up assembly mode: what `kinestat map fivebar --step 1` computes.
+compute_workspace_map runs the MSA sweep kernel on every point of the grid (all cores, the GIL
+released) and returns fields as NumPy arrays of shape (nz, ny, nx), NaN (blank) where P is out of
+reach. The same map is also written as the CLI writes it (PNG with the singular loci drawn over
+it, VTI for ParaView, JSON).
 
 Run: PYTHONPATH=build/python /usr/bin/python3 examples/python/1_five_bar_stiffness_map.py
-Writes five_bar_stiffness_map.png in the current folder.
+Writes five_bar_stiffness_map.png (matplotlib) and five_bar_map.png/.vti/.json (kinestat's) in the current folder.
 """
 import matplotlib.pyplot as plt
-import numpy as np
 
 import kinestat as ks
 
-x, y = np.meshgrid(np.linspace(-0.11, 0.11, 221), np.linspace(-0.03, 0.17, 201))  # m
-kernel = ks.mechanisms.make_reference_five_bar_kernel()  # paper's five-bar, mode ++, assembly up, MSA
-r = ks.mechanisms.evaluate_postures(kernel, np.stack([x, y, 0 * x], axis=-1))
-plt.pcolormesh(x * 1e3, y * 1e3, r.translational_eigenvalues[..., 0] / 1e3, shading="auto", cmap="viridis")
-plt.colorbar(label="smallest translational stiffness (N/mm)")
+m = ks.mechanisms
+grid = m.make_map_grid([(-0.11, 0.11), (-0.03, 0.17), 0.0], step=0.001)         # x, y ranges and z (m)
+stiffness_map = m.compute_workspace_map(m.make_five_bar_kernel(), grid)  # ++ up, MSA (the sweep kernel)
+x, y, _ = grid.axes
+plt.pcolormesh(x * 1e3, y * 1e3, stiffness_map.field("k_t_min")[0] / 1e3, shading="auto", cmap="viridis")
+plt.colorbar(label="k_t_min: stiffness in the weakest direction (N/mm)")
 plt.gca().set(xlabel="x (mm)", ylabel="y (mm)", title="Five-bar ++ up: stiffness at P", aspect="equal")
 plt.savefig("five_bar_stiffness_map.png", dpi=120)
-print("five_bar_stiffness_map.png:", np.count_nonzero(r.status == 0), "of", r.status.size, "points reachable")
+
+# The files of `kinestat map fivebar --step 1 --png --vti --json`, from the same library functions.
+stiffness_map.curves = m.five_bar_singular_loci(m.FiveBarParams(), m.WorkingMode(1, 1), m.Assembly.UP)
+ks.io.write_workspace_map_png("five_bar_map.png", stiffness_map, "k_t_min")
+ks.io.write_map_vti("five_bar_map.vti", stiffness_map)
+ks.io.write_json("five_bar_map.json", ks.io.workspace_map_to_json(stiffness_map), indent=-1)  # compact
+s = stiffness_map.summary("k_t_min")
+print(f"{stiffness_map.description}: {stiffness_map.status_counts}; k_t_min {s.min / 1e3:.3g} to {s.max / 1e3:.3g} "
+      f"N/mm, reachable area {stiffness_map.reachable_measure * 1e6:.0f} mm^2")

@@ -30,7 +30,7 @@
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/io/five_bar_design_output.hpp"
-#include "kinestat/io/map_png.hpp"
+#include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/workspace_vtk.hpp"
 #include "kinestat/mechanisms/five_bar_design_sweep.hpp"
@@ -200,29 +200,6 @@ std::string mm_range(const mechanisms::MapRange& r) {
   return r.lo == r.hi ? fmt::format("{:g} mm", r.lo / kMm) : fmt::format("{:g}:{:g} mm", r.lo / kMm, r.hi / kMm);
 }
 
-// The design map as a picture: the share (%) over (r1, r2) in mm, the best design crossed.
-Status write_design_png(const std::string& path, const mechanisms::FiveBarDesignSweep& s, const std::string& title) {
-  const mechanisms::MapGrid& g = s.designs;
-  io::PlotField2D f;
-  f.nx = g.dimensions[0], f.ny = g.dimensions[1];
-  f.x0 = g.origin.x() / kMm, f.y0 = g.origin.y() / kMm;
-  f.dx = g.spacing.x() / kMm, f.dy = g.spacing.y() / kMm;
-  for (const auto& r : s.results) f.values.push_back(100.0 * s.share(r.stiff));
-  io::PlotOptions o;
-  o.title = title;
-  o.x_label = "r1 (mm)";
-  o.y_label = "r2 (mm)";
-  o.colorbar_label = "share of the region (%)";
-  o.colour_range = {0.0, 100.0};  // shares of different runs compare
-  const auto& b = s.results[s.best];
-  const double x = b.r1 / kMm, y = b.r2 / kMm, nan = std::numeric_limits<double>::quiet_NaN();
-  o.curves.push_back({{{x - 0.4 * f.dx, y}, {x + 0.4 * f.dx, y}, {nan, nan}, {x, y - 0.4 * f.dy}, {x, y + 0.4 * f.dy}},
-                      fmt::format("best design: r1 = {:.4g} mm, r2 = {:.4g} mm ({:.1f}% of the region)", x, y,
-                                  100.0 * s.share(b.stiff)),
-                      0});
-  return io::write_png_map(path, f, o);
-}
-
 int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   using namespace mechanisms;
   auto fail = [&](const Status& s) { return report_failure(ctx, kFiveBarCommand, s); };
@@ -303,9 +280,7 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
                                             "written. The region is in the frame of the base (A1 = (-r3, 0), "
                                             "A2 = (r3, 0)); a design reaches about r1 + r2 from its base joints",
                                             region_text, a.mode, a.assembly)));
-  const std::string criteria =
-      fmt::format("singularity measure >= {:g}{}", o.near_singular_threshold,
-                  o.min_stiffness ? fmt::format(", k_t_min >= {:g} N/mm", *a.min_stiffness) : std::string());
+  const std::string criteria = io::design_sweep_criteria(*sweep);
 
   std::vector<std::string> written;
   if (!a.vti.empty()) {
@@ -313,9 +288,7 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
     written.push_back(a.vti);
   }
   if (!a.png.empty()) {
-    const std::string title =
-        fmt::format("{} design sweep: share of {}\nreached with {}", sweep->description, region_text, criteria);
-    if (Status s = write_design_png(a.png, *sweep, title); !s.ok()) return fail(s);
+    if (Status s = io::write_design_sweep_png(a.png, *sweep); !s.ok()) return fail(s);
     written.push_back(a.png);
   }
   const bool json_to_stdout = a.json == "-";

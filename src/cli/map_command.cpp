@@ -3,7 +3,6 @@
 // A workspace stiffness map (mechanisms/workspace_map.hpp; docs/maps.md): every point of a grid,
 // written as VTI (ParaView), JSON and PNG, with a short summary on stdout.
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -17,8 +16,8 @@
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/io/map_json.hpp"
-#include "kinestat/io/map_png.hpp"
 #include "kinestat/io/map_vti.hpp"
+#include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
@@ -51,23 +50,6 @@ struct MapArgs {
   CLI::Option *mode_opt = nullptr, *assembly_opt = nullptr, *method_opt = nullptr, *region_opt = nullptr,
               *box_opt = nullptr, *wrench_opt = nullptr;
 };
-
-// How a field is shown on the command line and in the PNG (mm-N-s units): SI value * scale.
-struct Display {
-  const char* unit;
-  double scale;
-};
-Display display(MapField f) {
-  switch (f) {
-    case MapField::kTranslationalMin:
-    case MapField::kTranslationalMax: return {"N/mm", kMm};
-    case MapField::kRotationalMin:
-    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kMm};
-    case MapField::kDeflectionTranslation: return {"mm", 1.0 / kMm};
-    case MapField::kDeflectionRotation: return {"deg", 1.0 / kDeg};
-    default: return {field_info(f).unit, 1.0};
-  }
-}
 
 StatusOr<Vec6> six_numbers(const std::vector<double>& v, const char* option, const char* form) {
   if (v.size() != 6) return Status::Invalid(fmt::format("{} takes 6 numbers: {}", option, form));
@@ -207,69 +189,13 @@ std::string summary_text(const WorkspaceMap& map, double step_mm) {
   out += fmt::format("\n  {:<20} {:<20} {:>12} {:>12} {:>12}  {}\n", "field", "unit", "min", "max", "mean",
                      "min at (mm)");
   for (const FieldValues& f : map.fields) {
-    const Display d = display(f.field);
+    const io::MapFieldDisplay d = io::map_field_display(f.field);
     const FieldSummary& s = f.summary;
     const Vec3 at = s.argmin / kMm;
     out += fmt::format("  {:<20} {:<20} {:>12.5g} {:>12.5g} {:>12.5g}  ({:g}, {:g}, {:g})\n", field_info(f.field).name,
                        d.unit, s.min * d.scale, s.max * d.scale, s.mean * d.scale, at.x(), at.y(), at.z());
   }
   return out;
-}
-
-// The PNG: one panel for a plane, a sheet of z slices for a box; axes in mm, values in display units.
-Status write_png(const std::string& path, const WorkspaceMap& map, MapField field) {
-  const MapGrid& g = map.grid;
-  // The plane's two axes (a, b) and the slicing axis c.
-  int a = 0, b = 1, c = 2;
-  if (g.num_varying_axes() == 2) {
-    if (g.dimensions[0] == 1) a = 1, b = 2, c = 0;
-    else if (g.dimensions[1] == 1) a = 0, b = 2, c = 1;
-  }
-  const Display d = display(field);
-  const std::vector<double>& values = map.find(field)->values;
-  std::vector<int> slices;
-  const int nc = g.dimensions[c];
-  constexpr int kMaxPanels = 9;
-  for (int k = 0; k < std::min(nc, kMaxPanels); ++k)
-    slices.push_back(nc <= kMaxPanels ? k : static_cast<int>(std::lround(k * (nc - 1.0) / (kMaxPanels - 1))));
-  const std::size_t stride[3] = {1, static_cast<std::size_t>(g.dimensions[0]),
-                                 static_cast<std::size_t>(g.dimensions[0]) * g.dimensions[1]};
-  std::vector<io::PlotField2D> panels;
-  for (int k : slices) {
-    io::PlotField2D p;
-    p.nx = g.dimensions[a];
-    p.ny = g.dimensions[b];
-    p.x0 = g.origin(a) / kMm;
-    p.y0 = g.origin(b) / kMm;
-    p.dx = g.spacing(a) / kMm;
-    p.dy = g.spacing(b) / kMm;
-    p.values.resize(static_cast<std::size_t>(p.nx) * p.ny);
-    for (int j = 0; j < p.ny; ++j)
-      for (int i = 0; i < p.nx; ++i)
-        p.values[i + static_cast<std::size_t>(p.nx) * j] = values[i * stride[a] + j * stride[b] + k * stride[c]] * d.scale;
-    if (nc > 1) p.title = fmt::format("{} = {:g} mm", "xyz"[c], (g.origin(c) + k * g.spacing(c)) / kMm);
-    panels.push_back(std::move(p));
-  }
-  io::PlotOptions o;
-  const char* name = field_info(field).name;
-  o.title = fmt::format("{}: {}", map.description, name);
-  o.x_label = fmt::format("{} (mm)", "xyz"[a]);
-  o.y_label = fmt::format("{} (mm)", "xyz"[b]);
-  o.colorbar_label = fmt::format("{} ({})", name, d.unit);
-  o.log_scale = field == MapField::kConditionNumber;
-  for (std::size_t i = 0; i < map.curves.size(); ++i) {
-    io::PlotCurve curve;
-    curve.label = map.curves[i].label;
-    curve.style = static_cast<int>(i % 3);
-    for (const std::vector<Vec3>& line : map.curves[i].lines) {
-      constexpr double kBreak = std::numeric_limits<double>::quiet_NaN();  // between polylines
-      if (!curve.points.empty()) curve.points.push_back({kBreak, kBreak});
-      for (const Vec3& q : line) curve.points.push_back({q(a) / kMm, q(b) / kMm});
-    }
-    o.curves.push_back(std::move(curve));
-  }
-  if (panels.size() == 1) return io::write_png_map(path, panels.front(), o);
-  return io::write_png_sheet(path, panels, o);
 }
 
 int run_map(MapArgs& a, Context& ctx) {
@@ -332,7 +258,7 @@ int run_map(MapArgs& a, Context& ctx) {
     written.push_back(a.vti);
   }
   if (!a.png.empty()) {
-    if (Status s = write_png(a.png, *map, *field); !s.ok()) return fail(s);
+    if (Status s = io::write_workspace_map_png(a.png, *map, *field); !s.ok()) return fail(s);
     written.push_back(a.png);
   }
   const bool json_to_stdout = a.json == "-";

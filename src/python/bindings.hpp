@@ -3,7 +3,9 @@
 // translation of a failed Status into a Python exception, and conversions to NumPy arrays.
 #pragma once
 
+#include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -15,6 +17,10 @@
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
+
+namespace kinestat::mechanisms {
+enum class MapField : int;
+}
 
 namespace kinestat::python {
 
@@ -29,6 +35,11 @@ void bind_vjm(py::module_& m);
 void bind_fea(py::module_& m);
 void bind_mechanisms(py::module_& m);
 void bind_io(py::module_& m);
+// Workspace maps and the five-bar design sweep, into kinestat.mechanisms (workspace_map.cpp).
+void bind_workspace_maps(py::module_& mechanisms);
+// A map field given as a MapField or by its name ("k_t_min"); InputError listing the names otherwise.
+using MapFieldArg = std::variant<mechanisms::MapField, std::string>;
+mechanisms::MapField map_field(const MapFieldArg& f);
 // The Cartesian stiffness types of msa and vjm, in one file (cartesian_stiffness.cpp) because the
 // library is about to merge them into one core type: only that file changes then.
 void bind_msa_cartesian_stiffness(py::module_& msa);

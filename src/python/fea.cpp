@@ -2,6 +2,7 @@
 // parsers shared with the CLI and model files, and the on-disk result cache (fea/*.hpp).
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
+#include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/fea/mesh_convergence.hpp"
 #include "kinestat/fea/region.hpp"
 #include "kinestat/fea/result_cache.hpp"
@@ -219,11 +220,60 @@ void bind_link_stiffness(py::module_& m) {
       py::arg("h"), py::arg("f"), "f(h) = f0 + c h^p through the last three points.");
 }
 
+// The one path from a surface file to the 6x6 (what `kinestat link-stiffness` and the `fea:` springs
+// of model files run), and its mesh convergence study.
+void bind_request(py::module_& m) {
+  py::class_<LinkStiffnessRequest>(m, "LinkStiffnessRequest",
+                                   "A link's surface file and what to compute from it (compute_link_stiffness).")
+      .def(py::init<>())
+      .def_readwrite("mesh_file", &LinkStiffnessRequest::mesh_file, "closed surface: STL, OFF, OBJ or PLY")
+      .def_readwrite("unit_scale", &LinkStiffnessRequest::unit_scale, "the file's length unit in m (1e-3: mm)")
+      .def_readwrite("mesh_size", &LinkStiffnessRequest::mesh_size, "tetrahedron size (m); 0: 1/20 of the largest extent")
+      .def_readwrite("quadratic", &LinkStiffnessRequest::quadratic, "10-node tetrahedra (default)")
+      .def_readwrite("material", &LinkStiffnessRequest::material)
+      .def_readwrite("options", &LinkStiffnessRequest::options, "LinkStiffnessOptions: regions (m), model, fields")
+      .def_readwrite("cache_dir", &LinkStiffnessRequest::cache_dir, "result cache folder; '': no cache");
+  py::class_<LinkStiffnessRun>(m, "LinkStiffnessRun", "What compute_link_stiffness did and found.")
+      .def_readonly("result", &LinkStiffnessRun::result, "LinkStiffness: the 6x6 at the reference point, link axes")
+      .def_readonly("mesh", &LinkStiffnessRun::mesh, "the TetMesh solved when the fields were kept, else None")
+      .def_readonly("surface", &LinkStiffnessRun::surface)
+      .def_readonly("mesh_size", &LinkStiffnessRun::mesh_size, "m, as used")
+      .def_readonly("from_cache", &LinkStiffnessRun::from_cache)
+      .def_readonly("cache_file", &LinkStiffnessRun::cache_file)
+      .def_readonly("report", &LinkStiffnessRun::report, "what was done and the result, as the CLI prints it");
+  m.def(
+      "compute_link_stiffness",
+      [](const LinkStiffnessRequest& r) { return unwrap(without_gil([&] { return compute_link_stiffness(r); })); },
+      py::arg("request"),
+      "Checks the surface, then reads the result from the cache or meshes, solves and stores it. InputError naming "
+      "the file. Releases the GIL.");
+  py::class_<ConvergenceStudy>(m, "ConvergenceStudy", "The link solved on meshes of decreasing size.")
+      .def_readonly("sizes", &ConvergenceStudy::sizes, "m")
+      .def_readonly("num_dofs", &ConvergenceStudy::num_dofs)
+      .def_readonly("compliance", &ConvergenceStudy::compliance, "6x6 per size (SI)")
+      .def_property_readonly(
+          "diagonal",
+          [](const ConvergenceStudy& s) {
+            py::list l;
+            for (const auto& d : s.diagonal) l.append(d.ok() ? py::cast(*d) : py::none());
+            return l;
+          },
+          "per dof ux..rz: the RichardsonEstimate of the compliance's diagonal term, None where it has none");
+  m.def(
+      "link_stiffness_convergence",
+      [](const LinkStiffnessRequest& r, const std::vector<double>& sizes) {
+        return unwrap(without_gil([&] { return link_stiffness_convergence(r, sizes); }));
+      },
+      py::arg("request"), py::arg("sizes"), "The request on meshes of `sizes` (m, >= 3, decreasing). Releases the GIL.");
+  m.def("convergence_report", &convergence_report, py::arg("study"));
+}
+
 }  // namespace
 
 void bind_fea(py::module_& m) {
   bind_mesh(m);
   bind_link_stiffness(m);
+  bind_request(m);
 }
 
 }  // namespace kinestat::python

@@ -3,12 +3,17 @@
 #include <nlohmann/json.hpp>
 
 #include "kinestat/io/fea_vtk.hpp"
+#include "kinestat/io/five_bar_design_output.hpp"
+#include "kinestat/io/link_stiffness_json.hpp"
+#include "kinestat/io/map_json.hpp"
+#include "kinestat/io/map_vti.hpp"
 #include "kinestat/io/identification_yaml.hpp"
 #include "kinestat/io/map_png.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/structure_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 #include "kinestat/io/vtk_output.hpp"
+#include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/io/workspace_vtk.hpp"
 #include "python/bindings.hpp"
 
@@ -92,8 +97,10 @@ void bind_results(py::module_& m) {
       },
       py::arg("indices"));
   m.def(
-      "write_json", [](const std::string& path, const py::object& j) { check(io::write_json(path, from_python(j))); },
-      py::arg("path"), py::arg("document"), "Writes a JSON document (a dict) indented, as the CLI does.");
+      "write_json",
+      [](const std::string& path, const py::object& j, int indent) { check(io::write_json(path, from_python(j), indent)); },
+      py::arg("path"), py::arg("document"), py::arg("indent") = 2,
+      "Writes a JSON document (a dict) as the CLI does: indented, or compact with indent=-1 (maps).");
   m.def(
       "write_vtk",
       [](const msa::Structure& s, const msa::Solution& sol, const std::string& dir, const std::string& basename) {
@@ -174,12 +181,69 @@ void bind_png(py::module_& m) {
       py::arg("path"), py::arg("fields"), py::arg("options"));
 }
 
+// The files of `kinestat map` and `kinestat design fivebar`.
+void bind_map_files(py::module_& m) {
+  m.def(
+      "workspace_map_to_json", [](const mechanisms::WorkspaceMap& map) { return to_python(io::workspace_map_to_json(map)); },
+      py::arg("map"),
+      "The map as the JSON document of `kinestat map --json` (schema kinestat-workspace-map, docs/maps.md), a dict: "
+      "flat arrays x fastest, None where a point has no value.");
+  m.def(
+      "write_map_vti",
+      [](const std::string& path, const mechanisms::WorkspaceMap& map, bool hide_masked_points) {
+        check(without_gil([&] { return io::write_map_vti(path, map, io::MapVtiOptions{hide_masked_points}); }));
+      },
+      py::arg("path"), py::arg("map"), py::arg("hide_masked_points") = true,
+      "VTK ImageData for ParaView, as `kinestat map --vti`: one array per field 'NAME (UNIT)', NaN where no value, "
+      "'status'; points without values hidden (vtkGhostType) unless hide_masked_points is False.");
+  m.def(
+      "write_workspace_map_png",
+      [](const std::string& path, const mechanisms::WorkspaceMap& map, const MapFieldArg& field) {
+        const mechanisms::MapField f = map_field(field);
+        check(without_gil([&] { return io::write_workspace_map_png(path, map, f); }));
+      },
+      py::arg("path"), py::arg("map"), py::arg("field") = std::string("k_t_min"),
+      "The PNG of `kinestat map --png --field FIELD`: axes in mm, values in display units (map_field_display), "
+      "the map's curves over it; a box gives a sheet of z slices.");
+  m.def(
+      "map_field_display",
+      [](const MapFieldArg& field) {
+        const io::MapFieldDisplay d = io::map_field_display(map_field(field));
+        return py::make_tuple(d.unit, d.scale);
+      },
+      py::arg("field"), "(unit, scale): the field as the CLI shows it is its SI value times scale, in unit.");
+  m.def(
+      "design_sweep_to_json",
+      [](const mechanisms::FiveBarDesignSweep& s) { return to_python(io::design_sweep_to_json(s)); }, py::arg("sweep"),
+      "The sweep as the JSON document of `kinestat design fivebar --json` (without its timing), a dict.");
+  m.def(
+      "write_design_sweep_vti",
+      [](const std::string& path, const mechanisms::FiveBarDesignSweep& s) {
+        check(io::write_design_sweep_vti(path, s));
+      },
+      py::arg("path"), py::arg("sweep"), "The design grid (x = r1, y = r2, m) with the shares, for ParaView.");
+  m.def(
+      "write_design_sweep_png",
+      [](const std::string& path, const mechanisms::FiveBarDesignSweep& s) {
+        check(without_gil([&] { return io::write_design_sweep_png(path, s); }));
+      },
+      py::arg("path"), py::arg("sweep"), "The PNG of `kinestat design fivebar --png`: the share (%) over r1, r2 (mm).");
+  m.def(
+      "link_stiffness_to_json",
+      [](const std::string& mesh_file, double mesh_size, const fea::LinkStiffness& r, bool from_cache) {
+        return to_python(io::link_stiffness_to_json(mesh_file, mesh_size, r, from_cache));
+      },
+      py::arg("mesh_file"), py::arg("mesh_size"), py::arg("result"), py::arg("from_cache") = false,
+      "The JSON document of `kinestat link-stiffness --json` (mesh_size in m), a dict.");
+}
+
 }  // namespace
 
 void bind_io(py::module_& m) {
   bind_files(m);
   bind_results(m);
   bind_png(m);
+  bind_map_files(m);
 }
 
 }  // namespace kinestat::python

@@ -390,8 +390,12 @@ void bind_posture_kernels(py::module_& m) {
       .def_readwrite("assembly", &FiveBarKernelOptions::assembly)
       .def_readwrite("method", &FiveBarKernelOptions::method)
       .def_readwrite("load", &FiveBarKernelOptions::load, "wrench at P (N, N m) for the deflection");
+  m.def("make_five_bar_kernel", &make_five_bar_kernel, py::arg("options") = FiveBarKernelOptions{},
+        "The five-bar's sweep kernel (what `kinestat map fivebar` uses): the reference's model built once, then "
+        "fixed-size algebra per posture; the same values, many times faster (five_bar_kernel.hpp).");
   m.def("make_reference_five_bar_kernel", &make_reference_five_bar_kernel, py::arg("options") = FiveBarKernelOptions{},
-        "Five-bar stiffness at P over the plane (z ignored); singularity measure min(parallel, serial).");
+        "Five-bar stiffness at P over the plane (z ignored), posture by posture through make_five_bar_structure "
+        "(MSA) or five_bar_vjm_chains (VJM); singularity measure min(parallel, serial). The reference of tests.");
   py::class_<OrthoglideKernelOptions>(m, "OrthoglideKernelOptions")
       .def(py::init<>())
       .def_readwrite("model", &OrthoglideKernelOptions::model)
@@ -399,8 +403,13 @@ void bind_posture_kernels(py::module_& m) {
       .def_readwrite("wrench", &OrthoglideKernelOptions::wrench, "loaded mode: external wrench (N, N m), or None")
       .def_readwrite("displacement", &OrthoglideKernelOptions::displacement,
                      "loaded mode: prescribed tool displacement (m, rad), or None");
+  m.def("make_orthoglide_kernel", &make_orthoglide_kernel, py::arg("options") = OrthoglideKernelOptions{},
+        "The Orthoglide's sweep kernel (what `kinestat map MODEL.yaml` uses): the same VJM values as the reference, "
+        "with the chains' fixed parts computed once.");
   m.def("make_reference_orthoglide_kernel", &make_reference_orthoglide_kernel,
-        py::arg("options") = OrthoglideKernelOptions{}, "Orthoglide VJM stiffness over its Cartesian workspace.");
+        py::arg("options") = OrthoglideKernelOptions{},
+        "Orthoglide VJM stiffness over its Cartesian workspace, posture by posture through orthoglide_chains. The "
+        "reference of tests.");
 
   py::class_<PostureArrays>(m, "PostureResults",
                             "evaluate_postures' results as arrays of shape S = points.shape[:-1] plus the value's "

@@ -103,6 +103,7 @@ PYBIND11_MODULE(_kinestat, m) {
   auto mech = m.def_submodule("mechanisms", "Five-bar and Orthoglide: kinematics, design, stiffness models, "
                                             "identification, posture kernels (C++ kinestat::mechanisms).");
   kp::bind_mechanisms(mech);
+  kp::bind_workspace_maps(mech);
   auto io = m.def_submodule("io", "Structure and model files, JSON results, VTK and PNG output (C++ kinestat::io).");
   kp::bind_io(io);
 }

@@ -27,12 +27,22 @@ def test_box_link_against_the_cantilever_formula():
 
 
 def test_mesh_file_through_the_cache(source_dir, tmp_path):
+    # link_stiffness_from_file is fea.compute_link_stiffness on the request the CLI builds.
     args = dict(clamp="x=0", reference="x=200", size=20.0, cache=str(tmp_path / "cache"))
     first = fea.link_stiffness_from_file(str(source_dir / "meshes/bar.off"), **args)
-    assert not first.from_cache and first.mesh is not None
+    assert not first.from_cache and first.mesh is None and first.mesh_size == pytest.approx(0.02)
+    assert "reference" in first.report and first.cache_file.startswith(str(tmp_path))
     second = fea.link_stiffness_from_file(str(source_dir / "meshes/bar.off"), **args)
-    assert second.from_cache and second.mesh is None
+    assert second.from_cache and second.cache_file == first.cache_file
     np.testing.assert_allclose(second.result.compliance, first.result.compliance, rtol=1e-12)
+    # With the fields kept the link is solved again, and the mesh comes back for VTK.
+    fields = fea.link_stiffness_from_file(str(source_dir / "meshes/bar.off"), keep_fields=True, **args)
+    assert not fields.from_cache and fields.mesh is not None and len(fields.result.displacement) == 6
+    # Equal to round-off of a parallel solve (the tiny off-diagonal terms carry it).
+    tol = dict(rtol=1e-9, atol=1e-12 * np.abs(first.result.compliance).max())
+    np.testing.assert_allclose(fields.result.compliance, first.result.compliance, **tol)
+    j = ks.io.link_stiffness_to_json("bar.off", fields.mesh_size, fields.result)
+    np.testing.assert_allclose(np.array(j["compliance"]), first.result.compliance, **tol)
 
 
 def test_bad_mesh_inputs_raise_input_error(source_dir, tmp_path):

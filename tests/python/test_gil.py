@@ -1,24 +1,43 @@
-"""The long calls release the GIL. Asserted: Python code of another thread runs while a sweep is in
-C++ (it could not if the call held the GIL). Printed as a figure, not asserted (the machine may be
-busy): two threads running a sweep each take about as long as one when two cores are free."""
+"""The long calls release the GIL. Asserted: Python code of another thread runs while a sweep, a map
+or a design sweep is in C++ (it could not if the call held the GIL). Printed as a figure, not
+asserted (the machine may be busy): benchmarks/python/bench_gil.py, two threads running a map each
+against one (about 1.0 when two cores are free)."""
+import os
+import pathlib
+import subprocess
+import sys
 import threading
-import time
 
 import numpy as np
+import pytest
 
 import kinestat as ks
+from conftest import SOURCE_DIR
 
 mech = ks.mechanisms
 
 
-def sweep(kernel, points, out, k):
-    out[k] = mech.evaluate_postures(kernel, points, threads=1).stiffness
-
-
-def test_python_runs_during_a_sweep():
-    kernel = mech.make_reference_five_bar_kernel()
+def five_bar_sweep():
     x, y = np.meshgrid(np.linspace(-0.06, 0.06, 40), np.linspace(0.0, 0.15, 25))
-    points = np.stack([x, y, 0 * x], axis=-1)
+    mech.evaluate_postures(mech.make_reference_five_bar_kernel(), np.stack([x, y, 0 * x], axis=-1), threads=1)
+
+
+def five_bar_map():
+    options = mech.MapOptions()
+    options.threads = 1
+    grid = mech.make_map_grid([(-0.06, 0.06), (0.0, 0.15), 0.0], 0.004)
+    mech.compute_workspace_map(mech.make_reference_five_bar_kernel(), grid, options)
+
+
+def design_sweep():
+    o = mech.FiveBarDesignSweepOptions()
+    o.r1, o.r2, o.steps, o.threads = (0.08, 0.12), 0.1, 4, 1
+    o.region = mech.make_map_grid([(-0.06, 0.06), (0.0, 0.15), 0.0], 0.006)
+    mech.sweep_five_bar_designs(o)
+
+
+@pytest.mark.parametrize("call", [five_bar_sweep, five_bar_map, design_sweep], ids=lambda f: f.__name__)
+def test_python_runs_during_a_long_call(call):
     count, stop = [0], threading.Event()
 
     def counter():
@@ -30,7 +49,7 @@ def test_python_runs_during_a_sweep():
     try:
         for _ in range(3):
             before = count[0]
-            mech.evaluate_postures(kernel, points, threads=1)
+            call()
             during = count[0] - before
             if during > 1000:
                 break
@@ -41,21 +60,11 @@ def test_python_runs_during_a_sweep():
     assert during > 1000, during
 
 
-def test_two_threads_run_sweeps_side_by_side():
-    kernel = mech.make_reference_five_bar_kernel()
-    x, y = np.meshgrid(np.linspace(-0.06, 0.06, 40), np.linspace(0.0, 0.15, 25))
-    points = np.stack([x, y, 0 * x], axis=-1)
-    out = [None, None]
-    t0 = time.perf_counter()
-    sweep(kernel, points, out, 0)
-    one = time.perf_counter() - t0
-    threads = [threading.Thread(target=sweep, args=(kernel, points, out, k)) for k in range(2)]
-    t0 = time.perf_counter()
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    two = time.perf_counter() - t0
-    print(f"\nGIL figure: one sweep {one:.3f} s, two sweeps on two threads {two:.3f} s, ratio {two / one:.2f} "
-          f"(1.0 = fully parallel, 2.0 = serialized; {points.size // 3} postures per sweep)")
-    np.testing.assert_array_equal(out[0], out[1])
+def test_gil_benchmark_runs_and_prints_the_figure():
+    script = SOURCE_DIR / "benchmarks" / "python" / "bench_gil.py"
+    env = dict(os.environ, PYTHONPATH=str(pathlib.Path(ks.__file__).resolve().parents[1]))
+    run = subprocess.run([sys.executable, str(script), "--step", "5", "--repeat", "1"], env=env,
+                         capture_output=True, text=True, timeout=300)
+    print(run.stdout)
+    assert run.returncode == 0, run.stderr
+    assert "ratio two / one:" in run.stdout

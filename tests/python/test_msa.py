@@ -1,6 +1,9 @@
 """MSA through Python: the same oracles as the C++ tests (Table 1 row 14 of Goncalves et al. 2010,
 the cantilever formula), the errors and the arrays' shapes and units."""
 import math
+import os
+import pathlib
+import subprocess
 
 import numpy as np
 import pytest
@@ -71,9 +74,8 @@ def test_arrays_shapes_and_units(source_dir):
     assert np.abs(K - K.T).max() <= 1e-9 * np.abs(K).max()
 
 
-def test_bad_structure_file_raises_input_error_with_line(tmp_path):
-    path = tmp_path / "bad.yaml"
-    path.write_text("""units: SI
+# A steel beam A-B, 1 m along x, without supports or loads.
+BEAM = """units: SI
 nodes:
   - {id: A, xyz: [0, 0, 0]}
   - {id: B, xyz: [1, 0, 0]}
@@ -82,8 +84,13 @@ materials:
 sections:
   - {id: bar, type: rectangle, b: 0.02, h: 0.04}
 beams:
-  - {id: arm, nodes: [A, C], material: steel, section: bar}
-""")
+  - {id: arm, nodes: [A, B], material: steel, section: bar}
+"""
+
+
+def test_bad_structure_file_raises_input_error_with_line(tmp_path):
+    path = tmp_path / "bad.yaml"
+    path.write_text(BEAM.replace("[A, B]", "[A, C]"))
     with pytest.raises(ks.InputError) as e:
         ks.io.read_structure_yaml(str(path))
     message = str(e.value)
@@ -91,6 +98,36 @@ beams:
     assert "'C'" in message
     assert e.value.code == ks.StatusCode.INVALID_INPUT
     assert isinstance(e.value, ValueError) and isinstance(e.value, ks.KinestatError)
+
+
+# Free to rotate about z at A (a missing support), with a tip load.
+SINGULAR_CANTILEVER = BEAM + """supports:
+  - {node: A, fixed: [ux, uy, uz, rx, ry]}
+load_cases:
+  - {LOAD_CASE: tip, loads: [{node: B, force: [0, 0, -1000]}]}
+"""
+
+
+def test_errors_carry_the_messages_the_cli_prints(tmp_path):
+    cli = pathlib.Path(os.environ.get("KINESTAT_BINARY_DIR", "build")) / "src" / "cli" / "kinestat"
+    if not cli.exists():
+        pytest.skip(f"{cli} is not built")
+    # Bad input: the CLI prints "kinestat solve: MESSAGE" and exits 2; Python raises InputError(MESSAGE).
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(SINGULAR_CANTILEVER.replace("LOAD_CASE", "id"))
+    with pytest.raises(ks.InputError) as e:
+        ks.io.read_structure_yaml(str(bad))
+    run = subprocess.run([str(cli), "solve", str(bad)], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 2 and run.stderr == f"kinestat solve: {e.value}\n"
+    assert str(e.value).startswith(f"{bad}:14: load case #1: unknown key 'id'")
+    # Singular (the rotation about z is free): exit 3 with the diagnosis; Python raises it as SingularError.
+    singular = tmp_path / "singular.yaml"
+    singular.write_text(SINGULAR_CANTILEVER.replace("LOAD_CASE", "name"))
+    with pytest.raises(ks.SingularError) as e:
+        ks.msa.solve(ks.io.read_structure_yaml(str(singular)))
+    run = subprocess.run([str(cli), "solve", str(singular)], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 3 and str(e.value) in run.stdout
+    assert "node 'B' translates along +y (1) and rotates about +z" in str(e.value)
 
 
 def test_structure_in_code_is_validated_like_a_file():

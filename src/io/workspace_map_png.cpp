@@ -1,0 +1,130 @@
+#include "kinestat/io/workspace_map_png.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "kinestat/io/map_png.hpp"
+
+namespace kinestat::io {
+namespace {
+
+using namespace mechanisms;
+
+constexpr double kMm = 1e-3;  // m per mm
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // breaks a plotted line
+
+// "x -100:100 mm" or "x = 0 mm" for axis i of a grid.
+std::string axis_text(const MapGrid& g, int i) {
+  const double lo = g.origin(i) / kMm, hi = (g.origin(i) + (g.dimensions[i] - 1) * g.spacing(i)) / kMm;
+  return lo == hi ? fmt::format("{} = {:g} mm", "xyz"[i], lo) : fmt::format("{} {:g}:{:g} mm", "xyz"[i], lo, hi);
+}
+
+}  // namespace
+
+MapFieldDisplay map_field_display(MapField f) {
+  switch (f) {
+    case MapField::kTranslationalMin:
+    case MapField::kTranslationalMax: return {"N/mm", kMm};
+    case MapField::kRotationalMin:
+    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kMm};
+    case MapField::kDeflectionTranslation: return {"mm", 1.0 / kMm};
+    case MapField::kDeflectionRotation: return {"deg", 1.0 / kDeg};
+    default: return {field_info(f).unit, 1.0};
+  }
+}
+
+Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map, MapField field) {
+  const FieldValues* found = map.find(field);
+  if (found == nullptr)
+    return Status::Invalid(fmt::format("{}: the map has no field {} (the deflections need a load)", path,
+                                       field_info(field).name));
+  const MapGrid& g = map.grid;
+  // The plane's two axes (a, b) and the slicing axis c.
+  int a = 0, b = 1, c = 2;
+  if (g.num_varying_axes() == 2) {
+    if (g.dimensions[0] == 1) a = 1, b = 2, c = 0;
+    else if (g.dimensions[1] == 1) a = 0, b = 2, c = 1;
+  }
+  const MapFieldDisplay d = map_field_display(field);
+  const std::vector<double>& values = found->values;
+  std::vector<int> slices;
+  const int nc = g.dimensions[c];
+  constexpr int kMaxPanels = 9;
+  for (int k = 0; k < std::min(nc, kMaxPanels); ++k)
+    slices.push_back(nc <= kMaxPanels ? k : static_cast<int>(std::lround(k * (nc - 1.0) / (kMaxPanels - 1))));
+  const std::size_t stride[3] = {1, static_cast<std::size_t>(g.dimensions[0]),
+                                 static_cast<std::size_t>(g.dimensions[0]) * g.dimensions[1]};
+  std::vector<PlotField2D> panels;
+  for (int k : slices) {
+    PlotField2D p;
+    p.nx = g.dimensions[a];
+    p.ny = g.dimensions[b];
+    p.x0 = g.origin(a) / kMm;
+    p.y0 = g.origin(b) / kMm;
+    p.dx = g.spacing(a) / kMm;
+    p.dy = g.spacing(b) / kMm;
+    p.values.resize(static_cast<std::size_t>(p.nx) * p.ny);
+    for (int j = 0; j < p.ny; ++j)
+      for (int i = 0; i < p.nx; ++i)
+        p.values[i + static_cast<std::size_t>(p.nx) * j] = values[i * stride[a] + j * stride[b] + k * stride[c]] * d.scale;
+    if (nc > 1) p.title = fmt::format("{} = {:g} mm", "xyz"[c], (g.origin(c) + k * g.spacing(c)) / kMm);
+    panels.push_back(std::move(p));
+  }
+  PlotOptions o;
+  const char* name = field_info(field).name;
+  o.title = fmt::format("{}: {}", map.description, name);
+  o.x_label = fmt::format("{} (mm)", "xyz"[a]);
+  o.y_label = fmt::format("{} (mm)", "xyz"[b]);
+  o.colorbar_label = fmt::format("{} ({})", name, d.unit);
+  o.log_scale = field == MapField::kConditionNumber;
+  for (std::size_t i = 0; i < map.curves.size(); ++i) {
+    PlotCurve curve;
+    curve.label = map.curves[i].label;
+    curve.style = static_cast<int>(i % 3);
+    for (const std::vector<Vec3>& line : map.curves[i].lines) {
+      if (!curve.points.empty()) curve.points.push_back({kNaN, kNaN});
+      for (const Vec3& q : line) curve.points.push_back({q(a) / kMm, q(b) / kMm});
+    }
+    o.curves.push_back(std::move(curve));
+  }
+  if (panels.size() == 1) return write_png_map(path, panels.front(), o);
+  return write_png_sheet(path, panels, o);
+}
+
+std::string design_sweep_criteria(const FiveBarDesignSweep& s) {
+  return fmt::format("singularity measure >= {:g}{}", s.near_singular_threshold,
+                     s.min_stiffness ? fmt::format(", k_t_min >= {:g} N/mm", *s.min_stiffness * kMm) : std::string());
+}
+
+Status write_design_sweep_png(const std::string& path, const FiveBarDesignSweep& s) {
+  if (s.results.empty() || s.best >= s.results.size())
+    return Status::Invalid(fmt::format("{}: the design sweep has no designs to draw", path));
+  const MapGrid& g = s.designs;
+  PlotField2D f;
+  f.nx = g.dimensions[0], f.ny = g.dimensions[1];
+  f.x0 = g.origin.x() / kMm, f.y0 = g.origin.y() / kMm;
+  f.dx = g.spacing.x() / kMm, f.dy = g.spacing.y() / kMm;
+  for (const auto& r : s.results) f.values.push_back(100.0 * s.share(r.stiff));
+  PlotOptions o;
+  o.title = fmt::format("{} design sweep: share of {}, {}\nreached with {}", s.description, axis_text(s.region, 0),
+                        axis_text(s.region, 1), design_sweep_criteria(s));
+  o.x_label = "r1 (mm)";
+  o.y_label = "r2 (mm)";
+  o.colorbar_label = "share of the region (%)";
+  o.colour_range = {0.0, 100.0};  // shares of different runs compare
+  const auto& b = s.results[s.best];
+  const double x = b.r1 / kMm, y = b.r2 / kMm;
+  o.curves.push_back({{{x - 0.4 * f.dx, y}, {x + 0.4 * f.dx, y}, {kNaN, kNaN}, {x, y - 0.4 * f.dy}, {x, y + 0.4 * f.dy}},
+                      fmt::format("best design: r1 = {:.4g} mm, r2 = {:.4g} mm ({:.1f}% of the region)", x, y,
+                                  100.0 * s.share(b.stiff)),
+                      0});
+  return write_png_map(path, f, o);
+}
+
+}  // namespace kinestat::io
