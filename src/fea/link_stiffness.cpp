@@ -194,7 +194,8 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
 
   progress(fmt::format("factorizing {} dofs", map.num_dofs));
   auto cholesky = solver::make_sparse_cholesky(options.cholesky);
-  cholesky->SetNearNullSpace(rigid_body_modes(mesh, map, reference_point));
+  if (options.cholesky.backend == solver::Backend::kPetscCg)  // multigrid only: n x 6 numbers for nothing else
+    cholesky->SetNearNullSpace(rigid_body_modes(mesh, map, reference_point));
   r.backend = cholesky->backend_description();
   if (Status s = cholesky->Factorize(*K, &r.factorization); !s.ok()) {
     if (s.code() == StatusCode::kSingular)
