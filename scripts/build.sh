@@ -1,9 +1,14 @@
 #!/usr/bin/env bash
 # Configures and builds kinestat (Release) in build/. Extra arguments are passed to `cmake --build`
-# (e.g. `--target kinestat`). Used by demo.sh and test.sh.
+# (e.g. `--target kinestat`). Used by demo.sh and test.sh. KINESTAT_PETSC=1 also installs PETSc
+# (the optional distributed backends; test.sh sets it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-"$(dirname "$0")/install-deps.sh"
+if [ "${KINESTAT_PETSC:-0}" = 1 ]; then
+  "$(dirname "$0")/install-deps.sh" --petsc
+else
+  "$(dirname "$0")/install-deps.sh"
+fi
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$jobs" "$@"

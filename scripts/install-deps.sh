@@ -27,6 +27,12 @@ PACKAGES=(
   clang-16 libclang-rt-16-dev libfuzzer-16-dev  # scripts/sanitize.sh, scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 
+# Optional: the distributed backends petsc-mumps and petsc-cg (docs/fea.md, "Large meshes").
+# Installed with --petsc (scripts/test.sh, so CI covers them); demo.sh does without.
+if [ "${1:-}" = "--petsc" ]; then
+  PACKAGES+=(libpetsc-real-dev)  # PETSc 3.18 with Open MPI (mpiexec), MUMPS and hypre
+fi
+
 missing=()
 for p in "${PACKAGES[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -5,7 +5,8 @@
 # harness for 30 s (scripts/fuzz.sh). docs/reliability.md describes both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/build.sh
+# PETSc too, so that the distributed backends are built and tested on 1 and 2 MPI ranks.
+KINESTAT_PETSC=1 scripts/build.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 (cd build && ctest --output-on-failure -j"$jobs" --timeout 600)
 scripts/check_install.sh

@@ -1,5 +1,6 @@
 // kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE|-]
-//     [--convergence] [--quiet]
+//     [--convergence] [--solver cholmod|petsc-mumps|petsc-cg [--cg-rtol R]] [--quiet]
+// Under `mpirun -np N` with a PETSc solver every rank computes, rank 0 alone writes.
 // The 6x6 stiffness of one link by FEA (fea/link_stiffness.hpp; docs/fea.md).
 #include <algorithm>
 #include <chrono>
@@ -19,6 +20,7 @@
 #include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/io/fea_vtk.hpp"
 #include "kinestat/io/link_stiffness_json.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -52,9 +54,11 @@ std::string result_error_line(const fea::ConvergenceStudy& study, const Mat6& C,
 void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   struct Args {
     std::string mesh, material = "steel", clamp, reference, unit = "mm", model = "rigid", vtk_dir, cache_dir;
-    std::string reference_point;
+    std::string reference_point, solver = "cholmod";
     std::optional<double> size_mm;  // absent: the default size; given: checked, never replaced
     double stiff_ratio = 1e4, max_elements = fea::MeshingOptions{}.max_elements;
+    double cg_rtol = solver::SparseCholeskyOptions{}.relative_tolerance;
+    int max_iterations = solver::SparseCholeskyOptions{}.max_iterations;
     bool linear = false;
     bool convergence = false;
     OutputOptions out;
@@ -95,9 +99,32 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--vtk", args->vtk_dir,
                   "write the six deformed-link .vtu files and a .pvd that groups them (ParaView, SI units) to DIR");
   cmd->add_option("--cache", args->cache_dir, "reuse / store results in this directory (keyed by mesh, material, options)");
+  cmd->add_option("--solver", args->solver,
+                  "cholmod (direct, shared memory), petsc-mumps (MUMPS direct over MPI) or petsc-cg (CG + multigrid "
+                  "over MPI, for meshes no factor fits); run the PETSc ones under mpirun -np N (docs/fea.md)")
+      ->check(CLI::IsMember({"cholmod", "petsc-mumps", "petsc-cg"}))
+      ->capture_default_str();
+  cmd->add_option("--cg-rtol", args->cg_rtol,
+                  "petsc-cg: stop at ||b - Kx|| <= R ||b|| per load case (dimensionless, 0 < R < 1)")
+      ->capture_default_str();
+  cmd->add_option("--max-iterations", args->max_iterations, "petsc-cg: iterations per load case (count, >= 1)")
+      ->capture_default_str();
   add_output_options(*cmd, args->out, "kinestat-link-stiffness");
   cmd->callback([args, &ctx] {
     auto fail = [&ctx](const Status& s) { ctx.exit_code = report_failure(ctx, "link-stiffness", s); };
+    const solver::Backend backend = *solver::backend_from_name(args->solver);  // checked by IsMember
+    if (Status s = solver::check_backend_built(backend); !s.ok()) return fail(s);
+    if (!(args->cg_rtol > 0.0 && args->cg_rtol < 1.0))
+      return fail(Status::Invalid(fmt::format("--cg-rtol {:g}: give a relative tolerance between 0 and 1 (e.g. 1e-10)",
+                                              args->cg_rtol)));
+    if (args->max_iterations < 1)
+      return fail(Status::Invalid(fmt::format("--max-iterations {}: give at least 1", args->max_iterations)));
+    if (backend != solver::Backend::kCholmod) {
+      // Under mpirun every rank runs this command; only rank 0 writes the report, JSON and VTK.
+      auto group = solver::start_parallel();
+      if (!group.ok()) return fail(group.status());
+      if (group->rank != 0) args->out = OutputOptions{.json = "", .quiet = true}, args->vtk_dir.clear();
+    }
     Output out(ctx, args->out);
     const double scale = args->unit == "mm" ? 1e-3 : 1.0;
     fea::LinkStiffnessRequest request;
@@ -128,6 +155,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       if (!p.ok()) return fail(p.status());
       options.reference_point = *p;
     }
+    options.cholesky.backend = backend;
+    options.cholesky.relative_tolerance = args->cg_rtol;
+    options.cholesky.max_iterations = args->max_iterations;
     options.keep_fields = !args->vtk_dir.empty();
     options.progress = [&out](const std::string& stage) { out.progress() << "link-stiffness: " << stage << " ...\n"; };
 

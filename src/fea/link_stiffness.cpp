@@ -6,6 +6,8 @@
 #include <limits>
 #include <sstream>
 
+#include <sys/resource.h>
+
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
@@ -21,6 +23,27 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The peak resident set of this process (getrusage reports it in KiB on Linux).
+double peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024.0 * static_cast<double>(usage.ru_maxrss);
+}
+
+// The rigid-body modes of the reduced dofs about `point` (num_dofs x 6, columns ux uy uz rx ry rz):
+// a free node moves by u + theta x (x - point), the reference node's six dofs are (u, theta) itself.
+// Multigrid backends take them as the near-null space of the unclamped link.
+MatX rigid_body_modes(const TetMesh& mesh, const DofMap& map, const Vec3& point) {
+  MatX modes = MatX::Zero(map.num_dofs, 6);
+  for (int n = 0; n < mesh.num_nodes(); ++n) {
+    const DofMap::Terms& t = map.terms[3 * n];
+    if (t.count == 1 && (map.reference_dof < 0 || t.index[0] < map.reference_dof))
+      modes.middleRows<3>(t.index[0]) = rigid_transfer(mesh.nodes[n] - point).topRows<3>();
+  }
+  if (map.reference_dof >= 0) modes.middleRows<6>(map.reference_dof).setIdentity();
+  return modes;
 }
 
 Vec6 symmetric_eigenvalues(const Mat6& A) {
@@ -101,6 +124,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   auto progress = [&](const std::string& stage) {
     if (options.progress) options.progress(stage);
   };
+  if (Status s = solver::check_backend_built(options.cholesky.backend); !s.ok()) return s;
   const auto t0 = std::chrono::steady_clock::now();
   LinkStiffness r;
   r.reference_model = options.reference_model;
@@ -200,6 +224,8 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   solver::SparseCholeskyOptions cholesky_options = options.cholesky;
   if (!cholesky_options.progress) cholesky_options.progress = options.progress;
   auto cholesky = solver::make_sparse_cholesky(cholesky_options);
+  if (cholesky_options.backend == solver::Backend::kPetscCg)  // multigrid only: n x 6 numbers for nothing else
+    cholesky->SetNearNullSpace(rigid_body_modes(mesh, map, reference_point));
   r.backend = cholesky->backend_description();
   if (Status s = cholesky->Factorize(*K, &r.factorization); !s.ok()) {
     if (r.factorization.refused_for_memory()) return memory_refusal(mesh, map.num_dofs, r.factorization);
@@ -209,8 +235,9 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
     return s;
   }
   progress("solving the six unit load cases");
+  const auto t1 = std::chrono::steady_clock::now();
   MatX X;
-  if (Status s = cholesky->Solve(F, &X); !s.ok()) return s;
+  if (Status s = cholesky->SolveAndReport(F, &X, &r.solve); !s.ok()) return s;
   set_compliance(r, stiff_body ? Mat6(F.transpose() * X) : Mat6(X.middleRows<6>(map.reference_dof)), reference_point);
   if (options.keep_fields) {
     for (int k = 0; k < 6; ++k) {
@@ -219,6 +246,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
     }
   }
   r.solve_seconds = seconds_since(t1);
+  r.peak_memory_bytes = peak_memory_bytes();
   return r;
 }
 
@@ -230,10 +258,22 @@ std::string link_stiffness_report(const LinkStiffness& r) {
                     r.num_clamped_nodes, r.num_reference_nodes);
   if (r.reference_model == ReferenceModel::kStiffBody) os << fmt::format(", {} stiff-body elements", r.num_stiff_elements);
   os << "\n";
-  if (!r.backend.empty())  // empty for a result read back from the cache
-    os << fmt::format("  solver: {} dofs, {}, ordering {}, nnz(L) = {}; assembly {:.3f} s, factor+solve {:.3f} s\n",
-                      r.num_dofs, r.backend, r.factorization.ordering, r.factorization.nnz_factor, r.assembly_seconds,
-                      r.solve_seconds);
+  if (!r.backend.empty()) {  // empty for a result read back from the cache
+    const solver::FactorizationReport& f = r.factorization;
+    os << fmt::format("  solver: {} dofs, {}, ordering {}, nnz(L) = {}\n", r.num_dofs, r.backend, f.ordering,
+                      f.nnz_factor);
+    os << fmt::format("  time: assembly {:.3f} s, analysis {:.3f} s, factorization {:.3f} s ({:.3g} Gflop), "
+                      "six solves {:.3f} s; peak memory {:.0f} MB\n",
+                      r.assembly_seconds, f.analyze_seconds, f.factor_seconds, f.flops * 1e-9, r.solve_seconds,
+                      r.peak_memory_bytes / 1e6);
+    if (r.solve.relative_tolerance > 0.0) {
+      os << fmt::format("  iterations (Fx Fy Fz Mx My Mz, relative tolerance {:g}):", r.solve.relative_tolerance);
+      for (int it : r.solve.iterations) os << fmt::format(" {}", it);
+      os << "\n  relative residuals ||b - K x|| / ||b||:";
+      for (double res : r.solve.relative_residual) os << fmt::format(" {:.2e}", res);
+      os << "\n";
+    }
+  }
   os << cartesian_stiffness_report(r.cartesian, "  6x6 of the reference");
   os << fmt::format("  symmetry error (diagonally scaled, Frobenius): compliance {:.2e}, stiffness {:.2e}\n",
                     r.compliance_symmetry_error, r.stiffness_symmetry_error);

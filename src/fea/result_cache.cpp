@@ -32,12 +32,15 @@ std::uint64_t fnv1a(std::string_view data, std::uint64_t seed) {
 
 std::string link_stiffness_cache_key(std::string_view mesh_identity, const Material& m, const LinkStiffnessOptions& o) {
   const Vec3 p = o.reference_point.value_or(Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
-  const std::string values = fmt::format(
+  std::string values = fmt::format(
       "{}|E {:.17g} G {:.17g}|clamp {}|reference {}|model {} ratio {:.17g}|point {} {:.17g} {:.17g} {:.17g}|"
       "ordering {} pivot {:.17g}",
       kHeader, m.E, m.G, region_text(o.clamp), region_text(o.reference), static_cast<int>(o.reference_model),
       o.stiff_body_ratio, o.reference_point.has_value(), p.x(), p.y(), p.z(), static_cast<int>(o.cholesky.ordering),
       o.cholesky.singular_pivot_ratio);
+  // An iterative result is only as accurate as its tolerance: not interchangeable with a direct one.
+  if (o.cholesky.backend == solver::Backend::kPetscCg)
+    values += fmt::format("|cg rtol {:.17g}", o.cholesky.relative_tolerance);
   return fmt::format("{:016x}", fnv1a(values, fnv1a(mesh_identity)));
 }
 

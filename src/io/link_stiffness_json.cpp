@@ -25,6 +25,21 @@ json link_stiffness_to_json(const std::string& mesh_file, double mesh_size, cons
             {"symmetry_error", {{"compliance", r.compliance_symmetry_error}, {"stiffness", r.stiffness_symmetry_error}}},
             {"eigenvalues_SI_mixed_units",
              {{"stiffness", r.cartesian.indices ? to_array(r.cartesian.indices->eigenvalues) : json::array()}, {"compliance", to_array(r.compliance_eigenvalues)}}}};
+  if (!r.backend.empty()) {  // a computed result (not read from the cache): how it was solved
+    const auto& f = r.factorization;
+    j["solver"] = {{"backend", r.backend},
+                   {"ordering", f.ordering},
+                   {"nnz_factor", f.nnz_factor},
+                   {"factor_flops", f.flops},
+                   {"assembly_seconds", r.assembly_seconds},
+                   {"analysis_seconds", f.analyze_seconds},
+                   {"factorization_seconds", f.factor_seconds},
+                   {"solve_seconds", r.solve_seconds},
+                   {"peak_memory_bytes", r.peak_memory_bytes},
+                   {"relative_tolerance", r.solve.relative_tolerance},
+                   {"iterations", r.solve.iterations},
+                   {"relative_residuals", r.solve.relative_residual}};
+  }
   encode_non_finite(j);
   return j;
 }

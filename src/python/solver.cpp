@@ -16,8 +16,17 @@ void bind_solver(py::module_& m) {
       .value("METIS", solver::Ordering::kMetis)
       .value("NATURAL", solver::Ordering::kNatural);
 
+  py::enum_<solver::Backend>(m, "Backend", "CHOLMOD, or PETSc over MPI (MUMPS, CG + GAMG) when built in")
+      .value("CHOLMOD", solver::Backend::kCholmod)
+      .value("PETSC_MUMPS", solver::Backend::kPetscMumps)
+      .value("PETSC_CG", solver::Backend::kPetscCg);
+
   py::class_<SparseCholeskyOptions>(m, "SparseCholeskyOptions")
       .def(py::init<>())
+      .def_readwrite("backend", &SparseCholeskyOptions::backend)
+      .def_readwrite("relative_tolerance", &SparseCholeskyOptions::relative_tolerance,
+                     "PETSC_CG: stop at ||b - Ax|| <= tol ||b|| per right-hand side (default 1e-10)")
+      .def_readwrite("max_iterations", &SparseCholeskyOptions::max_iterations)
       .def_readwrite("ordering", &SparseCholeskyOptions::ordering)
       .def_readwrite("singular_pivot_ratio", &SparseCholeskyOptions::singular_pivot_ratio,
                      "a pivot below this fraction of its diagonal entry is a free motion (default 1e-12)");

@@ -16,6 +16,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include "kinestat/cli/app.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 #include "cli_run.hpp"
 
 namespace kinestat::cli {
@@ -71,6 +72,34 @@ TEST(LinkStiffnessCommand, BadInputExitsWith2AndSaysWhatToFix) {
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find(open.string()), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("not closed"), std::string::npos) << r.err;
+}
+
+// --solver: its options validated (exit 2); the PETSc backends, when built in, refuse a link that
+// turns about its clamped edge (exit 3, as CHOLMOD does), and say they are not built in otherwise.
+// Their 6x6 against CHOLMOD on 1 and 2 MPI ranks: tests/mpi/compare_link_stiffness.py.
+TEST(LinkStiffnessCommand, SolverOptionsAreCheckedAndPetscRefusesAFreeMotion) {
+  const std::vector<std::string> bar = {kBar, "--clamp", "x=0", "--reference", "x=200", "--size", "20"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = bar;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  CliRun r = run_link_stiffness(with({"--solver", "petsc-cg", "--cg-rtol", "0"}));
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find(solver::backend_built(solver::Backend::kPetscCg) ? "--cg-rtol" : "not built"),
+            std::string::npos) << r.err;
+  r = run_link_stiffness(with({"--max-iterations", "0"}));
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--max-iterations"), std::string::npos) << r.err;
+  r = run_link_stiffness({kBar, "--clamp", "box:-1,-11,-16,150,-9,-14", "--reference", "x=200", "--size", "20",
+                          "--solver", "petsc-mumps"});
+  if (solver::backend_built(solver::Backend::kPetscMumps)) {
+    EXPECT_EQ(r.code, kExitSingular) << r.err;
+    EXPECT_NE(r.err.find("null and"), std::string::npos) << r.err;
+  } else {
+    EXPECT_EQ(r.code, kExitBadInput);
+    EXPECT_NE(r.err.find("libpetsc-real-dev"), std::string::npos) << r.err;
+  }
 }
 
 // The README's bar (20 x 30 x 200 mm, default size 1/20 of 200 mm = 10 mm): --convergence solves

@@ -61,9 +61,13 @@ struct LinkStiffness {
   int num_nodes = 0, num_elements = 0, nodes_per_element = 0, num_dofs = 0;
   int num_clamped_nodes = 0, num_reference_nodes = 0, num_stiff_elements = 0;
   ReferenceModel reference_model = ReferenceModel::kRigidCoupling;
-  solver::FactorizationReport factorization;
+  solver::FactorizationReport factorization;  // analysis and factorization times, nnz(L), flops
+  solver::SolveReport solve;                   // per load case: iterations and relative residual
   std::string backend;
+  // Wall time of the assembly and of the six solves (s); the peak resident memory of this process
+  // (bytes, after the solves: under MPI, that of the rank that writes the report).
   double assembly_seconds = 0.0, solve_seconds = 0.0;
+  double peak_memory_bytes = 0.0;
   // Per load case (Fx Fy Fz Mx My Mz, unit): node displacements (m per N or N m) and element
   // von Mises stress at the centroid (Pa per N or N m). Empty unless keep_fields.
   std::array<std::vector<Vec3>, 6> displacement;

@@ -19,8 +19,10 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 enum class Ordering { kAuto, kAmd, kMetis, kNatural };
 
-// The implementations behind SparseCholesky (solver/linear_solver_factory.hpp makes them).
-enum class Backend { kCholmod };
+// The implementations behind SparseCholesky (solver/linear_solver_factory.hpp makes them):
+// CHOLMOD (shared memory), and PETSc over MPI (docs/fea.md, "Large meshes"): MUMPS's distributed
+// Cholesky, or conjugate gradients preconditioned by smoothed-aggregation multigrid (GAMG).
+enum class Backend { kCholmod, kPetscMumps, kPetscCg };
 
 // What the caller chooses; passed unchanged to every factorization made for that caller
 // (its solves, the null-space diagnosis, a regularized solve), only the pivot check varies.
@@ -40,6 +42,23 @@ struct SparseCholeskyOptions {
   // Told, when set, what the numeric factorization is about to do (its flops and memory) once the
   // analysis is done: progress for large models (the caller prints it on stderr).
   std::function<void(const std::string& stage)> progress = nullptr;
+  // kPetscCg: stop when ||b - A x|| <= relative_tolerance ||b|| (true residual) for each right-hand
+  // side. The 6x6 of a link is read off the solutions, so its relative error follows the residual's:
+  // on meshes/bar.off (5 289 dofs) max |dC_ij| / sqrt(C_ii C_jj) was 0.07-0.2 x the tolerance (7e-6
+  // at 1e-4, 1.2e-7 at 1e-6, 1.7e-9 at 1e-8). The bound grows with the condition number (finer
+  // meshes), so the default 1e-10 keeps the 6x6 within 1e-6 with four orders of margin, for ~30 %
+  // more iterations than 1e-7 (tests/mpi/compare_link_stiffness.py checks 1e-6 against CHOLMOD).
+  double relative_tolerance = 1e-10;
+  int max_iterations = 20000;
+};
+
+// What a solve did, per right-hand side (iterative backends; a direct one reports 0 iterations and
+// the residual of its solution).
+struct SolveReport {
+  std::vector<int> iterations;             // per column of B
+  std::vector<double> relative_residual;   // ||b - A x|| / ||b|| per column
+  double relative_tolerance = 0.0;         // the stopping tolerance (0: direct solve)
+  double seconds = 0.0;
 };
 
 // What a factorization did and found; printed by the MSA/FEA summaries.
@@ -80,6 +99,14 @@ class SparseCholesky {
 
   // Solves A X = B for all columns of B with the last successful factorization.
   virtual Status Solve(const MatX& B, MatX* X) const = 0;
+
+  // Solve, and what it took per column. The default (direct backends) reports no iterations.
+  virtual Status SolveAndReport(const MatX& B, MatX* X, SolveReport* report) const;
+
+  // The rigid-body modes of A's unconstrained structure (n x 6, the columns need not be orthonormal),
+  // used by multigrid preconditioners as near-null space; ignored by direct backends. Call before
+  // Factorize.
+  virtual void SetNearNullSpace(const MatX& /*modes*/) {}
 
   // How many symbolic analyses this object has done (a posture sweep should do one).
   virtual int num_symbolic_analyses() const = 0;

@@ -1,0 +1,368 @@
+// The PETSc backends (docs/fea.md, "Large meshes"). Every rank holds the whole matrix handed to
+// Factorize (the FEA assembles it on every rank) and gives PETSc only its own block of rows, so PETSc
+// distributes the factor (MUMPS) or the multigrid hierarchy (GAMG); the solution is gathered back to
+// every rank, so every rank computes the same 6x6. Compiled without PETSc (KINESTAT_HAVE_PETSC
+// unset) the backends exist but say they are not built in.
+#include "solver/petsc_solver.hpp"
+
+#include <chrono>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "kinestat/solver/linear_solver_factory.hpp"
+
+#if KINESTAT_HAVE_PETSC
+#include <Eigen/QR>
+#include <petscksp.h>
+#endif
+
+namespace kinestat::solver {
+
+#if KINESTAT_HAVE_PETSC
+
+namespace {
+
+// PETSc calls return an error code; it becomes a Status (kInternal) naming the call and PETSc's text.
+Status petsc_error(PetscErrorCode code, const char* call) {
+  const char* text = nullptr;
+  PetscErrorMessage(code, &text, nullptr);
+  return Status::Internal(fmt::format("PETSc: {} failed: {}", call, text ? text : "unknown error"));
+}
+#define KINESTAT_PETSC(call)                                                      \
+  do {                                                                            \
+    if (PetscErrorCode code_ = (call); code_ != 0) return petsc_error(code_, #call); \
+  } while (0)
+
+enum class Lifecycle { kNotStarted, kRunning, kFinished };
+Lifecycle lifecycle = Lifecycle::kNotStarted;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string petsc_version() {
+  return fmt::format("PETSc {}.{}.{}", PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR);
+}
+
+class PetscSolver final : public SparseCholesky {
+ public:
+  explicit PetscSolver(const SparseCholeskyOptions& options) : options_(options) {}
+  ~PetscSolver() override { Release(); }
+
+  void SetNearNullSpace(const MatX& modes) override { near_null_ = modes; }
+
+  Status Factorize(const SparseMatrix& A, FactorizationReport* report) override {
+    FactorizationReport r;
+    Status s = FactorizeImpl(A, &r);
+    if (!s.ok()) Release();  // no Solve with a half-made or singular factor
+    if (report) *report = r;
+    return s;
+  }
+
+  Status Solve(const MatX& B, MatX* X) const override { return SolveAndReport(B, X, nullptr); }
+
+  Status SolveAndReport(const MatX& B, MatX* X, SolveReport* report) const override {
+    if (!ksp_) return Status::Internal("PETSc solver: Solve called without a successful Factorize");
+    if (B.rows() != n_) return Status::Invalid(fmt::format("PETSc solver: B has {} rows, A has {}", B.rows(), n_));
+    const auto t0 = std::chrono::steady_clock::now();
+    SolveReport rep;
+    rep.relative_tolerance = iterative() ? options_.relative_tolerance : 0.0;
+    X->resize(n_, B.cols());
+    Vec b = nullptr, x = nullptr, residual = nullptr, all = nullptr;
+    VecScatter gather = nullptr;
+    auto release = [&] {
+      VecDestroy(&b), VecDestroy(&x), VecDestroy(&residual), VecDestroy(&all), VecScatterDestroy(&gather);
+    };
+    Status s = [&]() -> Status {
+      KINESTAT_PETSC(MatCreateVecs(A_, &x, &b));
+      KINESTAT_PETSC(VecDuplicate(b, &residual));
+      KINESTAT_PETSC(VecScatterCreateToAll(x, &gather, &all));
+      const std::vector<PetscInt> rows = owned_rows();
+      for (Eigen::Index k = 0; k < B.cols(); ++k) {
+        KINESTAT_PETSC(VecSetValues(b, rend_ - rstart_, rows.data(), B.col(k).data() + rstart_, INSERT_VALUES));
+        KINESTAT_PETSC(VecAssemblyBegin(b));
+        KINESTAT_PETSC(VecAssemblyEnd(b));
+        KINESTAT_PETSC(KSPSolve(ksp_, b, x));
+        KSPConvergedReason reason;
+        PetscInt iterations = 0;
+        KINESTAT_PETSC(KSPGetConvergedReason(ksp_, &reason));
+        KINESTAT_PETSC(KSPGetIterationNumber(ksp_, &iterations));
+        // The true residual, whatever the KSP measured: what the report promises.
+        PetscReal norm_b = 0.0, norm_r = 0.0;
+        KINESTAT_PETSC(MatMult(A_, x, residual));
+        KINESTAT_PETSC(VecAYPX(residual, -1.0, b));
+        KINESTAT_PETSC(VecNorm(b, NORM_2, &norm_b));
+        KINESTAT_PETSC(VecNorm(residual, NORM_2, &norm_r));
+        const double relative = norm_b > 0.0 ? norm_r / norm_b : norm_r;
+        if (reason < 0)
+          return Status::Singular(fmt::format(
+              "PETSc {} stopped on right-hand side {} after {} iterations ({}), relative residual {:.3e} > {:g}; "
+              "the matrix is singular or not positive definite (a free motion), or give a larger --max-iterations",
+              backend_name(options_.backend), k + 1, iterations, KSPConvergedReasons[reason], relative,
+              options_.relative_tolerance));
+        rep.iterations.push_back(iterative() ? static_cast<int>(iterations) : 0);  // preonly counts the one solve
+        rep.relative_residual.push_back(relative);
+        KINESTAT_PETSC(VecScatterBegin(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
+        KINESTAT_PETSC(VecScatterEnd(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
+        const PetscScalar* values = nullptr;
+        KINESTAT_PETSC(VecGetArrayRead(all, &values));
+        X->col(k) = Eigen::Map<const VecX>(values, n_);
+        KINESTAT_PETSC(VecRestoreArrayRead(all, &values));
+      }
+      return Status::Ok();
+    }();
+    release();
+    rep.seconds = seconds_since(t0);
+    if (report) *report = rep;
+    return s;
+  }
+
+  int num_symbolic_analyses() const override { return analyses_; }
+
+  std::string backend_description() const override {
+    const ProcessGroup group = process_group();
+    const std::string ranks = fmt::format("{} MPI rank{}", group.size, group.size == 1 ? "" : "s");
+    if (iterative())
+      return fmt::format("{} CG + GAMG (rigid-body near-null space), relative tolerance {:g}, on {}", petsc_version(),
+                         options_.relative_tolerance, ranks);
+    return fmt::format("{} MUMPS Cholesky on {}", petsc_version(), ranks);
+  }
+
+ private:
+  bool iterative() const { return options_.backend == Backend::kPetscCg; }
+
+  std::vector<PetscInt> owned_rows() const {
+    std::vector<PetscInt> rows(rend_ - rstart_);
+    for (PetscInt i = rstart_; i < rend_; ++i) rows[i - rstart_] = i;
+    return rows;
+  }
+
+  void Release() {
+    if (lifecycle != Lifecycle::kRunning) return;  // PETSc already finished: its objects went with it
+    KSPDestroy(&ksp_);
+    MatDestroy(&A_);
+  }
+
+  Status FactorizeImpl(const SparseMatrix& lower, FactorizationReport* r) {
+    if (StatusOr<ProcessGroup> g = start_parallel(); !g.ok()) return g.status();
+    if (lower.rows() != lower.cols()) return Status::Invalid("PETSc solver: the matrix is not square");
+    if (iterative() && !(options_.relative_tolerance > 0.0 && options_.relative_tolerance < 1.0))
+      return Status::Invalid(fmt::format("PETSc CG: relative tolerance {:g} must lie in (0, 1)",
+                                         options_.relative_tolerance));
+    if (iterative() && options_.max_iterations < 1)
+      return Status::Invalid(fmt::format("PETSc CG: at most {} iterations; need at least 1", options_.max_iterations));
+    Release();
+    ++analyses_;
+    const auto t0 = std::chrono::steady_clock::now();
+    n_ = static_cast<int>(lower.rows());
+    r->n = n_;
+    // PETSc wants both triangles of its rows. The lower triangle (column-major) holds row c's upper
+    // part in column c, and row r's strictly lower part spread over the columns c < r: counted and
+    // inserted in one pass each, without a second (full) copy of the matrix.
+    // Rows in blocks of 3 (x, y, z of a node) when the dofs come in triples, as GAMG's aggregates want.
+    const PetscInt bs = n_ % 3 == 0 ? 3 : 1;
+    PetscInt local = PETSC_DECIDE, global = n_;
+    KINESTAT_PETSC(PetscSplitOwnershipBlock(PETSC_COMM_WORLD, bs, &local, &global));
+    PetscInt end = 0;
+    MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+    rstart_ = end - local;
+    rend_ = end;
+    auto owned = [&](PetscInt row) { return row >= rstart_ && row < rend_; };
+    std::vector<PetscInt> diagonal_nnz(local, 0), off_nnz(local, 0);
+    auto count = [&](PetscInt row, PetscInt col) {
+      ++(owned(col) ? diagonal_nnz : off_nnz)[row - rstart_];
+    };
+    for (int c = 0; c < n_; ++c)
+      for (SparseMatrix::InnerIterator it(lower, c); it; ++it) {
+        if (it.row() < c) continue;  // an upper entry: ignored
+        ++r->nnz_matrix;
+        if (owned(it.row())) count(it.row(), c);
+        if (it.row() != c && owned(c)) count(c, it.row());
+      }
+    KINESTAT_PETSC(MatCreate(PETSC_COMM_WORLD, &A_));
+    KINESTAT_PETSC(MatSetSizes(A_, local, local, n_, n_));
+    KINESTAT_PETSC(MatSetType(A_, MATAIJ));
+    KINESTAT_PETSC(MatSetBlockSize(A_, bs));
+    KINESTAT_PETSC(MatSeqAIJSetPreallocation(A_, 0, diagonal_nnz.data()));
+    KINESTAT_PETSC(MatMPIAIJSetPreallocation(A_, 0, diagonal_nnz.data(), 0, off_nnz.data()));
+    std::vector<PetscInt> columns;
+    std::vector<PetscScalar> values;
+    for (PetscInt c = 0; c < n_; ++c) {
+      columns.clear();
+      values.clear();
+      for (SparseMatrix::InnerIterator it(lower, static_cast<int>(c)); it; ++it) {
+        if (it.row() < c) continue;
+        if (owned(c)) columns.push_back(it.row()), values.push_back(it.value());  // row c, upper part
+        if (it.row() != c && owned(it.row()))  // row r, lower part
+          KINESTAT_PETSC(MatSetValue(A_, it.row(), c, it.value(), INSERT_VALUES));
+      }
+      if (!columns.empty())
+        KINESTAT_PETSC(MatSetValues(A_, 1, &c, static_cast<PetscInt>(columns.size()), columns.data(), values.data(),
+                                    INSERT_VALUES));
+    }
+    KINESTAT_PETSC(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
+    KINESTAT_PETSC(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
+    KINESTAT_PETSC(MatSetOption(A_, MAT_SYMMETRIC, PETSC_TRUE));
+    // SPD only for CG: MUMPS then runs its symmetric-indefinite LDL^T (SYM=2), the one mode with
+    // null-pivot detection and a count of negative pivots, which check positive definiteness below.
+    if (iterative()) KINESTAT_PETSC(MatSetOption(A_, MAT_SPD, PETSC_TRUE));
+    if (iterative() && near_null_.rows() == n_ && near_null_.cols() > 0) KINESTAT_PETSC(AttachNearNullSpace());
+    r->analyze_seconds = seconds_since(t0);
+
+    const auto t1 = std::chrono::steady_clock::now();
+    KINESTAT_PETSC(KSPCreate(PETSC_COMM_WORLD, &ksp_));
+    KINESTAT_PETSC(KSPSetOperators(ksp_, A_, A_));
+    PC pc;
+    KINESTAT_PETSC(KSPGetPC(ksp_, &pc));
+    if (iterative()) {
+      KINESTAT_PETSC(KSPSetType(ksp_, KSPCG));
+      KINESTAT_PETSC(PCSetType(pc, PCGAMG));
+      // The true residual ||b - A x|| / ||b|| is what the tolerance bounds (not the preconditioned one).
+      KINESTAT_PETSC(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED));
+      KINESTAT_PETSC(KSPSetTolerances(ksp_, options_.relative_tolerance, 0.0, PETSC_DEFAULT, options_.max_iterations));
+      r->ordering = "none (algebraic multigrid)";
+    } else {
+      KINESTAT_PETSC(KSPSetType(ksp_, KSPPREONLY));
+      KINESTAT_PETSC(PCSetType(pc, PCCHOLESKY));
+      KINESTAT_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+      // Null-pivot detection (MUMPS ICNTL(24)): a free motion must stop here, not give numbers. A
+      // pivot below CNTL(3) * ||A|| (of MUMPS's scaled matrix) is null: the mechanism's pivot is
+      // round-off, which MUMPS's default threshold (1e-5 eps ||A||) lets pass; the same ratio as
+      // CHOLMOD's pivot check.
+      KINESTAT_PETSC(PCFactorSetUpMatSolverType(pc));
+      Mat factor;
+      KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
+      KINESTAT_PETSC(MatMumpsSetIcntl(factor, 24, 1));
+      KINESTAT_PETSC(MatMumpsSetCntl(factor, 3, options_.singular_pivot_ratio));
+      r->ordering = "MUMPS automatic";
+    }
+    // PETSC_OPTIONS (e.g. "-ksp_monitor -pc_gamg_threshold 0.01") may tune the solver further.
+    KINESTAT_PETSC(KSPSetFromOptions(ksp_));
+    KINESTAT_PETSC(KSPSetUp(ksp_));
+    PCFailedReason failed = PC_NOERROR;
+    KINESTAT_PETSC(PCGetFailedReason(pc, &failed));
+    if (failed != PC_NOERROR) {
+      r->failed_column = 0;  // MUMPS does not say which
+      return Status::Singular(fmt::format("{} found the matrix singular or not positive definite ({})",
+                                          iterative() ? "GAMG" : "MUMPS", PCFailedReasons[failed]));
+    }
+    if (!iterative()) {
+      Mat factor;
+      PetscInt entries = 0, null_pivots = 0, negative_pivots = 0;
+      PetscReal flops = 0.0;
+      KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
+      KINESTAT_PETSC(MatMumpsGetInfog(factor, 28, &null_pivots));
+      KINESTAT_PETSC(MatMumpsGetInfog(factor, 12, &negative_pivots));
+      if (null_pivots > 0 || negative_pivots > 0) {
+        r->failed_column = 0;  // MUMPS does not say which
+        return Status::Singular(fmt::format("MUMPS found {} null and {} negative pivots: the matrix is singular (a "
+                                            "free motion) or not positive definite",
+                                            null_pivots, negative_pivots));
+      }
+      KINESTAT_PETSC(MatMumpsGetInfog(factor, 29, &entries));  // entries of the factor (< 0: millions)
+      KINESTAT_PETSC(MatMumpsGetRinfog(factor, 3, &flops));    // flops of the elimination (estimated)
+      r->nnz_factor = entries >= 0 ? static_cast<long>(entries) : -1000000L * static_cast<long>(entries);
+      r->flops = flops;
+      r->supernodal = true;  // multifrontal
+    }
+    r->factor_seconds = seconds_since(t1);
+    return Status::Ok();
+  }
+
+  // The rigid-body modes, orthonormalized (MatNullSpaceCreate wants an orthonormal basis), each
+  // rank setting its own rows.
+  PetscErrorCode AttachNearNullSpace() {
+    const MatX Q = Eigen::HouseholderQR<MatX>(near_null_).householderQ() * MatX::Identity(n_, near_null_.cols());
+    std::vector<Vec> vectors(Q.cols(), nullptr);
+    const std::vector<PetscInt> rows = owned_rows();
+    for (Eigen::Index k = 0; k < Q.cols(); ++k) {
+      PetscCall(MatCreateVecs(A_, &vectors[k], nullptr));
+      PetscCall(VecSetValues(vectors[k], rend_ - rstart_, rows.data(), Q.col(k).data() + rstart_, INSERT_VALUES));
+      PetscCall(VecAssemblyBegin(vectors[k]));
+      PetscCall(VecAssemblyEnd(vectors[k]));
+    }
+    MatNullSpace space;
+    PetscCall(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, static_cast<PetscInt>(Q.cols()), vectors.data(), &space));
+    PetscCall(MatSetNearNullSpace(A_, space));
+    PetscCall(MatNullSpaceDestroy(&space));
+    for (Vec& v : vectors) PetscCall(VecDestroy(&v));
+    return 0;
+  }
+
+  SparseCholeskyOptions options_;
+  MatX near_null_;
+  Mat A_ = nullptr;
+  KSP ksp_ = nullptr;
+  int n_ = 0;
+  PetscInt rstart_ = 0, rend_ = 0;
+  int analyses_ = 0;
+};
+
+}  // namespace
+
+bool petsc_built() { return true; }
+
+std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& options) {
+  return std::make_unique<PetscSolver>(options);
+}
+
+StatusOr<ProcessGroup> start_parallel() {
+  if (lifecycle == Lifecycle::kFinished)
+    return Status::Internal("PETSc was finished in this process and cannot start again");
+  if (lifecycle == Lifecycle::kNotStarted) {
+    // No command line: kinestat's options are not PETSc's; PETSC_OPTIONS still reaches PETSc.
+    if (PetscErrorCode code = PetscInitializeNoArguments(); code != 0) return petsc_error(code, "PetscInitialize");
+    // Errors come back as codes (turned into Status), not as tracebacks on stderr.
+    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    lifecycle = Lifecycle::kRunning;
+    std::atexit(finish_parallel);
+  }
+  return process_group();
+}
+
+ProcessGroup process_group() {
+  ProcessGroup g;
+  if (lifecycle != Lifecycle::kRunning) return g;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &g.rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &g.size);
+  return g;
+}
+
+void finish_parallel() {
+  if (lifecycle != Lifecycle::kRunning) return;
+  lifecycle = Lifecycle::kFinished;
+  PetscFinalize();
+}
+
+#else  // PETSc not built in
+
+namespace {
+
+class UnavailableSolver final : public SparseCholesky {
+ public:
+  explicit UnavailableSolver(Backend backend) : backend_(backend) {}
+  Status Factorize(const SparseMatrix&, FactorizationReport*) override { return check_backend_built(backend_); }
+  Status Solve(const MatX&, MatX*) const override { return check_backend_built(backend_); }
+  int num_symbolic_analyses() const override { return 0; }
+  std::string backend_description() const override { return std::string(backend_name(backend_)) + " (not built in)"; }
+
+ private:
+  Backend backend_;
+};
+
+}  // namespace
+
+bool petsc_built() { return false; }
+
+std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& options) {
+  return std::make_unique<UnavailableSolver>(options.backend);
+}
+
+StatusOr<ProcessGroup> start_parallel() { return ProcessGroup{}; }
+ProcessGroup process_group() { return {}; }
+void finish_parallel() {}
+
+#endif
+
+}  // namespace kinestat::solver

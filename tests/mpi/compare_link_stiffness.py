@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""The PETSc backends against CHOLMOD on a bundled link: runs `kinestat link-stiffness` once with
+--solver cholmod, once under `MPIEXEC -np RANKS` with --solver SOLVER, and checks that every entry
+of the two 6x6 compliances agrees to TOL relative to the diagonal, |C1_ij - C2_ij| / sqrt(C_ii C_jj)
+(unit-free: the SI entries differ by orders of magnitude), and that only rank 0 wrote the JSON.
+
+usage: compare_link_stiffness.py KINESTAT MPIEXEC RANKS SOLVER TOL MESH [link-stiffness options...]
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+
+def run(command):
+    done = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    if done.returncode != 0:
+        sys.exit(f"{' '.join(command)}: exit {done.returncode}\n{done.stderr}")
+    return done.stdout
+
+
+def main():
+    kinestat, mpiexec, ranks, solver, tol, mesh, *options = sys.argv[1:]
+    tol = float(tol)
+    base = [kinestat, "link-stiffness", mesh, *options, "--json", "-", "--quiet"]
+    reference = json.loads(run(base))["compliance"]
+    # As root (CI containers) Open MPI wants both the flag and the environment variables.
+    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                      OMPI_MCA_rmaps_base_oversubscribe="1")
+    out = run([mpiexec, "-np", ranks, *base, "--solver", solver])
+    # One JSON document on stdout: rank 0's (json.loads fails on two).
+    result = json.loads(out)
+    worst = 0.0
+    for i in range(6):
+        for j in range(6):
+            scale = math.sqrt(reference[i][i] * reference[j][j])
+            worst = max(worst, abs(result["compliance"][i][j] - reference[i][j]) / scale)
+    s = result["solver"]
+    print(f"{solver} on {ranks} rank(s): {s['backend']}; iterations {s['iterations']}, "
+          f"residuals {s['relative_residuals']}; max |dC_ij| / sqrt(C_ii C_jj) = {worst:.3e} (tolerance {tol:g})")
+    if not worst <= tol:
+        sys.exit(f"{solver} differs from cholmod by {worst:.3e} > {tol:g}")
+
+
+if __name__ == "__main__":
+    main()
