@@ -11,12 +11,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)
-# -gline-tables-only: file and line in the reports at little build cost.
+# -gline-tables-only: file and line in the reports at little build cost. PETSc is left out: Open MPI
+# keeps allocations past MPI_Finalize that LeakSanitizer would report as ours; the PETSc backends are
+# tested in the Release build (1 and 2 ranks).
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -gline-tables-only"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-16 \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DKINESTAT_BUILD_BENCHMARKS=OFF -DKINESTAT_BUILD_PYTHON=OFF -DKINESTAT_BUILD_FUZZERS=ON >/dev/null
+  -DKINESTAT_BUILD_BENCHMARKS=OFF -DKINESTAT_BUILD_PYTHON=OFF -DKINESTAT_USE_PETSC=OFF \
+  -DKINESTAT_BUILD_FUZZERS=ON >/dev/null
 cmake --build build-sanitize -j"$jobs"
 if [ "${1:-}" = "--build" ]; then exit 0; fi
 export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:check_initialization_order=1"

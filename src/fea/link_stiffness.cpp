@@ -219,7 +219,6 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
     F.middleRows<6>(map.reference_dof).setIdentity();
   }
 
-  const auto t1 = std::chrono::steady_clock::now();
   progress(fmt::format("analysing {} dofs ({} matrix entries)", map.num_dofs, K->nonZeros()));
   solver::SparseCholeskyOptions cholesky_options = options.cholesky;
   if (!cholesky_options.progress) cholesky_options.progress = options.progress;
