@@ -97,6 +97,7 @@ Status check_ply(const std::string& path, std::uintmax_t bytes) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   bool element_seen = false;
+  std::string element;  // the element the properties below belong to
   for (int n = 0; n < 10000 && std::getline(in, line); ++n) {
     std::istringstream words(line);
     std::string first;
@@ -107,6 +108,7 @@ Status check_ply(const std::string& path, std::uintmax_t bytes) {
       double count = -1;
       words >> name >> count;
       element_seen = true;
+      element = name;
       // Every element takes at least one byte, in any format.
       if (!(count >= 0 && count <= static_cast<double>(bytes)))
         return Status::Invalid(fmt::format("{}: the PLY header announces {} '{}' elements, more than the file's {} "
@@ -125,6 +127,17 @@ Status check_ply(const std::string& path, std::uintmax_t bytes) {
         return Status::Invalid(fmt::format("{}: a PLY list's length is of type '{}'; write uchar (as exporters do): "
                                            "wider lengths are not read",
                                            path, length_type));
+      // CGAL reads a vertex's coordinates and normals as float or double and dereferences anything
+      // else as a float (found by fuzz_surface_mesh): refuse other types here.
+      static const char* kCoordinates[] = {"x", "y", "z", "nx", "ny", "nz"};
+      static const char* kReal[] = {"float", "double", "float32", "float64"};
+      const std::string& name = length_type;  // for a scalar property the second word is its name
+      if (element == "vertex" && kind != "list" &&
+          std::any_of(std::begin(kCoordinates), std::end(kCoordinates), [&](const char* c) { return name == c; }) &&
+          std::none_of(std::begin(kReal), std::end(kReal), [&](const char* t) { return kind == t; }))
+        return Status::Invalid(fmt::format("{}: the PLY vertex property '{}' is of type '{}'; coordinates and "
+                                           "normals must be float or double",
+                                           path, name, kind));
     }
   }
   return Status::Ok();  // no end_header: CGAL's reader refuses the file

@@ -69,6 +69,11 @@ TEST(SurfaceInputChecks, FaceRecordsThatWouldAllocateOrConvertOutOfRangeAreRefus
   // Found by fuzz_surface_mesh: CGAL's PLY reader attached the property to an element that did not exist.
   expect_refused("property_first.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n",
                  "a PLY property is declared before any element");
+  // Found by fuzz_surface_mesh: CGAL dereferenced a coordinate of another type than float or double as a float.
+  expect_refused("int_coordinate.ply",
+                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty uchar y\nproperty float z\n"
+                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                 "the PLY vertex property 'y' is of type 'uchar'");
   expect_refused("out_of_range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "cannot read a triangle surface");
 }
 
