@@ -13,6 +13,7 @@ scripts/sanitize.sh --build >/dev/null
 root=build-sanitize/fuzz
 export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1"
 export UBSAN_OPTIONS="print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$(pwd)/scripts/lsan.supp"  # third-party caches kept until exit
 
 # Seeds: what each reader reads in the repository. The surface and option harnesses take a first
 # byte choosing the format or the parser (see their sources): the bundled meshes get byte 0 (OFF).

@@ -24,5 +24,6 @@ cmake --build build-sanitize -j"$jobs"
 if [ "${1:-}" = "--build" ]; then exit 0; fi
 export ASAN_OPTIONS="detect_leaks=1:strict_string_checks=1:check_initialization_order=1"
 export UBSAN_OPTIONS="print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$(pwd)/scripts/lsan.supp"  # third-party caches kept until exit
 cd build-sanitize
 ctest --output-on-failure -j"$jobs" --timeout 900
