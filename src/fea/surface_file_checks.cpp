@@ -104,11 +104,17 @@ Status check_ply(const std::string& path, std::uintmax_t bytes) {
     words >> first;
     if (first == "end_header") return Status::Ok();
     if (first == "element") {
-      std::string name;
-      double count = -1;
-      words >> name >> count;
+      std::string name, count_text;
+      words >> name >> count_text;
       element_seen = true;
       element = name;
+      // A count is digits only: CGAL reads "90000001eader" as 90000001 (found by fuzz_surface_mesh).
+      const bool digits = !count_text.empty() && count_text.size() <= 18 &&
+                          std::all_of(count_text.begin(), count_text.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (!digits)
+        return Status::Invalid(fmt::format("{}: the PLY element '{}' has the count '{}'; write a whole number", path,
+                                           name, count_text));
+      const double count = std::stod(count_text);
       // Every element takes at least one byte, in any format.
       if (!(count >= 0 && count <= static_cast<double>(bytes)))
         return Status::Invalid(fmt::format("{}: the PLY header announces {} '{}' elements, more than the file's {} "

@@ -69,6 +69,9 @@ TEST(SurfaceInputChecks, FaceRecordsThatWouldAllocateOrConvertOutOfRangeAreRefus
   // Found by fuzz_surface_mesh: CGAL's PLY reader attached the property to an element that did not exist.
   expect_refused("property_first.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n",
                  "a PLY property is declared before any element");
+  // Found by fuzz_surface_mesh: CGAL read the count's leading digits and allocated 1.6 GB for a 48-byte file.
+  expect_refused("count_with_letters.ply", "ply\nformat ascii 1.0\nelement vertex 90000001eader\n",
+                 "the PLY element 'vertex' has the count '90000001eader'");
   // Found by fuzz_surface_mesh: CGAL dereferenced a coordinate of another type than float or double as a float.
   expect_refused("int_coordinate.ply",
                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty uchar y\nproperty float z\n"
