@@ -98,14 +98,7 @@ TEST(BadInput, ALoadWithNoEquilibriumIsTheUsersLoadNotAnInternalFailure) {
   EXPECT_NE(r.code, kExitInternal);
 }
 
-#if defined(__SANITIZE_ADDRESS__)
-#define KINESTAT_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define KINESTAT_ASAN 1
-#endif
-#endif
-
+// KINESTAT_ASAN: defined by tests/CMakeLists.txt in the sanitizer build.
 TEST(BadInput, OutOfMemoryIsAMessageAndExitOneNotAnAbort) {
 #ifdef KINESTAT_ASAN
   GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit this test sets";

@@ -23,14 +23,7 @@
 // Heap allocations counted on the current thread (the no-allocation test): malloc is interposed
 // (glibc's own is __libc_malloc), which sees operator new and Eigen's dynamic matrices alike. Not
 // under AddressSanitizer, which owns malloc itself (scripts/sanitize.sh): an interposed malloc runs
-// before ASan is initialized and crashes the program at start.
-#if defined(__SANITIZE_ADDRESS__)
-#define KINESTAT_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define KINESTAT_ASAN 1
-#endif
-#endif
+// before ASan is initialized and crashes the program at start (KINESTAT_ASAN: tests/CMakeLists.txt).
 namespace {
 thread_local long g_allocations = 0;
 }  // namespace
