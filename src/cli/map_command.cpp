@@ -210,11 +210,8 @@ int run_map(MapArgs& a, Context& ctx) {
     return fail(Status::Invalid(fmt::format("--near-singular {:g}: the threshold is in [0, 1]", a.near_singular)));
   if (a.threads < 0) return fail(Status::Invalid("--threads must be 0 (all cores) or a positive count"));
   const std::optional<MapField> field = field_from_name(a.field);
-  if (!field) {
-    std::string names;
-    for (int i = 0; i < kNumMapFields; ++i) names += fmt::format("{}{}", i ? ", " : "", field_info(static_cast<MapField>(i)).name);
-    return fail(Status::Invalid(fmt::format("--field '{}' is not a map field; use one of {}", a.field, names)));
-  }
+  if (!field)
+    return fail(Status::Invalid(fmt::format("--field '{}' is not a map field; use one of {}", a.field, field_names())));
 
   StatusOr<MapSetup> setup = five_bar ? five_bar_setup(a) : model_setup(a);
   if (!setup.ok()) return fail(setup.status());

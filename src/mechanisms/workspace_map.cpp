@@ -122,6 +122,12 @@ std::optional<MapField> field_from_name(const std::string& name) {
   return std::nullopt;
 }
 
+std::string field_names() {
+  std::string names;
+  for (int i = 0; i < kNumMapFields; ++i) names += fmt::format("{}{}", i ? ", " : "", kFields[i].name);
+  return names;
+}
+
 std::array<double, kNumMapFields> point_fields(const PostureResult& r) {
   // Stiffness under a pure force (moment): the inverse of the compliance block, i.e. the Schur
   // complement K_tt - K_tr K_rr^-1 K_rt; judged by its symmetric part like every index here.

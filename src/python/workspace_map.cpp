@@ -44,12 +44,6 @@ py::array_t<double> design_array(const FiveBarDesignSweep& s, F&& value) {
   return a;
 }
 
-std::string field_names() {
-  std::string names;
-  for (int i = 0; i < kNumMapFields; ++i) names += fmt::format("{}{}", i ? ", " : "", field_info(static_cast<MapField>(i)).name);
-  return names;
-}
-
 const FieldValues& map_field_values(const WorkspaceMap& m, MapField f) {
   const FieldValues* v = m.find(f);
   if (v == nullptr)

@@ -89,6 +89,8 @@ struct MapFieldInfo {
 };
 const MapFieldInfo& field_info(MapField f);
 std::optional<MapField> field_from_name(const std::string& name);
+// Every field's name, comma-separated, for messages that list the choices.
+std::string field_names();
 // Every field of a point with values (has_values(status)), indexed by MapField; the deflection is
 // r.deflection (zero without a load).
 std::array<double, kNumMapFields> point_fields(const PostureResult& r);
