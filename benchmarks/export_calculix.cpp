@@ -100,10 +100,11 @@ int main(int argc, char** argv) {
   if (!solve) return 0;
 
   const Material steel = Material::from_E_nu("steel", kE, kNu);
-  auto K = fea::assemble_stiffness(mesh, {fea::elasticity_matrix(steel)}, {}, map);
+  solver::SparseMatrix K;
+  const bool assembled = fea::assemble_stiffness(mesh, {fea::elasticity_matrix(steel)}, {}, map, &K).ok();
   auto chol = solver::make_sparse_cholesky();
   solver::FactorizationReport report;
-  if (!K.ok() || !chol->Factorize(*K, &report).ok()) {
+  if (!assembled || !chol->Factorize(K, &report).ok()) {
     std::fprintf(stderr, "kinestat assembly or factorization failed\n");
     return 1;
   }

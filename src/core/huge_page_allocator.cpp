@@ -2,17 +2,42 @@
 
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <thread>
+#include <vector>
 
 namespace kinestat {
+namespace {
+
+constexpr std::size_t kHugePage = std::size_t{2} << 20;
+
+// Touches every page of [p, p + bytes) on all cores: the kernel zeroes fresh pages on their first
+// touch, ~1 s per 0.5 GB in this VM and on one thread (benchmarks/README.md, "Factorization rate");
+// spread over the cores it costs that time divided by their number, and the factorization that
+// fills the block then runs without page faults. The block is fresh (uninitialized), so writing
+// zeros changes nothing it promises.
+void touch_in_parallel(char* p, std::size_t bytes) {
+  const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t chunk = (bytes / threads + kHugePage - 1) / kHugePage * kHugePage;
+  auto touch = [p, bytes](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < std::min(end, bytes); k += 4096) p[k] = 0;
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < threads && t * chunk < bytes; ++t) pool.emplace_back(touch, t * chunk, (t + 1) * chunk);
+  touch(0, chunk);
+  for (std::thread& t : pool) t.join();
+}
+
+}  // namespace
 
 void* allocate_large(std::size_t bytes) {
   if (bytes < kHugePageThreshold) return std::malloc(bytes == 0 ? 1 : bytes);
-  constexpr std::size_t kHugePage = std::size_t{2} << 20;
   void* p = nullptr;
   if (posix_memalign(&p, kHugePage, bytes) != 0) return nullptr;
   // Advice only: without transparent huge pages (enabled = never) the block keeps 4 kB pages.
   madvise(p, bytes, MADV_HUGEPAGE);
+  if (bytes >= kPrefaultThreshold) touch_in_parallel(static_cast<char*>(p), bytes);
   return p;
 }
 

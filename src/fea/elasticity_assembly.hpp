@@ -38,10 +38,12 @@ DofMap free_dof_map(const TetMesh& mesh);
 // Mesh displacements (per node, m) from the reduced solution.
 std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduced);
 
-// Lower triangle of the reduced stiffness (N/m, and N or N m for the reference node's dofs).
+// Lower triangle of the reduced stiffness (N/m, and N or N m for the reference node's dofs), compressed
+// with sorted rows (what CHOLMOD reads in place), into *stiffness (an output argument: Eigen's
+// SparseMatrix has no move constructor, and a returned StatusOr would copy it twice).
 // Element e uses the elasticity matrix D[material[e]] (material empty: D[0] for all). Elements are
 // integrated in parallel; fails (kInvalidInput) on an element with a non-positive Jacobian.
-StatusOr<solver::SparseMatrix> assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D,
-                                                  const std::vector<int>& material, const DofMap& map);
+Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
+                          const DofMap& map, solver::SparseMatrix* stiffness);
 
 }  // namespace kinestat::fea

@@ -198,8 +198,8 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   progress(fmt::format("assembling {} elements", mesh.num_elements()));
   const DofMap map = make_dof_map(mesh, clamped, stiff_body ? std::vector<int>{} : reference_nodes, reference_point);
   r.num_dofs = map.num_dofs;
-  StatusOr<solver::SparseMatrix> K = assemble_stiffness(mesh, D, element_material, map);
-  if (!K.ok()) return K.status();
+  solver::SparseMatrix K;
+  if (Status s = assemble_stiffness(mesh, D, element_material, map, &K); !s.ok()) return s;
   r.assembly_seconds = seconds_since(t0);
 
   // Right-hand sides: unit wrenches on the reference node, or spread over the stiff body.
@@ -219,14 +219,14 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
     F.middleRows<6>(map.reference_dof).setIdentity();
   }
 
-  progress(fmt::format("analysing {} dofs ({} matrix entries)", map.num_dofs, K->nonZeros()));
+  progress(fmt::format("analysing {} dofs ({} matrix entries)", map.num_dofs, K.nonZeros()));
   solver::SparseCholeskyOptions cholesky_options = options.cholesky;
   if (!cholesky_options.progress) cholesky_options.progress = options.progress;
   auto cholesky = solver::make_sparse_cholesky(cholesky_options);
   if (cholesky_options.backend == solver::Backend::kPetscCg)  // multigrid only: n x 6 numbers for nothing else
     cholesky->SetNearNullSpace(rigid_body_modes(mesh, map, reference_point));
   r.backend = cholesky->backend_description();
-  if (Status s = cholesky->Factorize(*K, &r.factorization); !s.ok()) {
+  if (Status s = cholesky->Factorize(K, &r.factorization); !s.ok()) {
     if (r.factorization.refused_for_memory()) return memory_refusal(mesh, map.num_dofs, r.factorization);
     if (s.code() == StatusCode::kSingular)
       return Status::Singular("link stiffness: the clamped link still has a free motion (" + s.message() +

@@ -3,27 +3,53 @@
 #include <array>
 #include <cmath>
 
+#include "kinestat/fea/tet_mesh.hpp"
+
 namespace kinestat::fea {
 
 namespace {
 
-// Derivatives of the n shape functions with respect to (xi, eta, zeta): an n x 3 matrix.
+// Derivatives of the N shape functions with respect to (xi, eta, zeta): an N x 3 matrix.
 // Volume coordinates L0 = 1 - xi - eta - zeta, L1 = xi, L2 = eta, L3 = zeta.
-Eigen::MatrixXd natural_gradients(int n, const Vec3& p) {
+template <int N>
+Eigen::Matrix<double, N, 3> natural_gradients(const Vec3& p) {
   const std::array<double, 4> L = {1.0 - p.x() - p.y() - p.z(), p.x(), p.y(), p.z()};
   // dL_i / d(xi, eta, zeta)
   static const double dL[4][3] = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  Eigen::MatrixXd g(n, 3);
+  Eigen::Matrix<double, N, 3> g;
   for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) g(i, k) = n == 4 ? dL[i][k] : (4.0 * L[i] - 1.0) * dL[i][k];  // N = L(2L-1)
-  if (n == 10) {
-    static const int kEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};  // = kTet10Edges
+    for (int k = 0; k < 3; ++k) g(i, k) = N == 4 ? dL[i][k] : (4.0 * L[i] - 1.0) * dL[i][k];  // N = L(2L-1)
+  if constexpr (N == 10) {
     for (int e = 0; e < 6; ++e) {
-      const int a = kEdges[e][0], b = kEdges[e][1];
+      const int a = kTet10Edges[e][0], b = kTet10Edges[e][1];
       for (int k = 0; k < 3; ++k) g(4 + e, k) = 4.0 * (dL[a][k] * L[b] + L[a] * dL[b][k]);  // N = 4 La Lb
     }
   }
   return g;
+}
+
+template <int N>
+Eigen::Matrix<double, 6, 3 * N> strain_matrix(const Vec3* x, const Vec3& natural, double* det_jacobian) {
+  const Eigen::Matrix<double, N, 3> g = natural_gradients<N>(natural);
+  Mat3 J = Mat3::Zero();  // J(i, k) = d x_i / d xi_k
+  for (int a = 0; a < N; ++a) J += x[a] * g.row(a);
+  *det_jacobian = J.determinant();
+  const Eigen::Matrix<double, N, 3> dN = g * J.inverse();  // d N_a / d x_j
+  Eigen::Matrix<double, 6, 3 * N> B = Eigen::Matrix<double, 6, 3 * N>::Zero();
+  for (int a = 0; a < N; ++a) {
+    const double dx = dN(a, 0), dy = dN(a, 1), dz = dN(a, 2);
+    const int c = 3 * a;
+    B(0, c) = dx;
+    B(1, c + 1) = dy;
+    B(2, c + 2) = dz;
+    B(3, c + 1) = dz;
+    B(3, c + 2) = dy;
+    B(4, c) = dz;
+    B(4, c + 2) = dx;
+    B(5, c) = dy;
+    B(5, c + 1) = dx;
+  }
+  return B;
 }
 
 }  // namespace
@@ -41,43 +67,38 @@ Mat6 elasticity_matrix(const Material& m) {
 }
 
 MatX tet_strain_matrix(const Vec3* x, int n, const Vec3& natural, double* det_jacobian) {
-  const Eigen::MatrixXd g = natural_gradients(n, natural);
-  Mat3 J = Mat3::Zero();  // J(i, k) = d x_i / d xi_k
-  for (int a = 0; a < n; ++a) J += x[a] * g.row(a);
-  *det_jacobian = J.determinant();
-  const Eigen::MatrixXd dN = g * J.inverse();  // n x 3: d N_a / d x_j
-  MatX B = MatX::Zero(6, 3 * n);
-  for (int a = 0; a < n; ++a) {
-    const double dx = dN(a, 0), dy = dN(a, 1), dz = dN(a, 2);
-    const int c = 3 * a;
-    B(0, c) = dx;
-    B(1, c + 1) = dy;
-    B(2, c + 2) = dz;
-    B(3, c + 1) = dz;
-    B(3, c + 2) = dy;
-    B(4, c) = dz;
-    B(4, c + 2) = dx;
-    B(5, c) = dy;
-    B(5, c + 1) = dx;
-  }
-  return B;
+  if (n == 4) return strain_matrix<4>(x, natural, det_jacobian);
+  return strain_matrix<10>(x, natural, det_jacobian);
 }
 
-MatX tet_stiffness(const Vec3* x, int n, const Mat6& D) {
+template <int N>
+bool tet_stiffness(const Vec3* x, const Mat6& D, TetMatrix<N>* K) {
   // 4-point rule of degree 2 on the unit tetrahedron (weights sum to its volume 1/6).
   static const double a = 0.5854101966249685, b = 0.1381966011250105;
   static const Vec3 kPoints[4] = {{b, b, b}, {a, b, b}, {b, a, b}, {b, b, a}};
-  const int npoints = n == 4 ? 1 : 4;  // constant strain: one point is exact
-  MatX K = MatX::Zero(3 * n, 3 * n);
-  for (int q = 0; q < npoints; ++q) {
+  constexpr int kPointCount = N == 4 ? 1 : 4;  // constant strain: one point is exact
+  K->setZero();
+  for (int q = 0; q < kPointCount; ++q) {
     double det = 0.0;
-    const Vec3 p = n == 4 ? Vec3(0.25, 0.25, 0.25) : kPoints[q];
-    const MatX B = tet_strain_matrix(x, n, p, &det);
-    if (!(det > 0.0)) return MatX();
-    const double w = (n == 4 ? 1.0 / 6.0 : 1.0 / 24.0) * det;
-    K.noalias() += w * B.transpose() * D * B;
+    const Vec3 p = N == 4 ? Vec3(0.25, 0.25, 0.25) : kPoints[q];
+    const Eigen::Matrix<double, 6, 3 * N> B = strain_matrix<N>(x, p, &det);
+    if (!(det > 0.0)) return false;
+    const double w = (N == 4 ? 1.0 / 6.0 : 1.0 / 24.0) * det;
+    const Eigen::Matrix<double, 6, 3 * N> DB = w * D * B;
+    K->noalias() += B.transpose() * DB;
   }
-  return K;
+  return true;
+}
+template bool tet_stiffness<4>(const Vec3*, const Mat6&, TetMatrix<4>*);
+template bool tet_stiffness<10>(const Vec3*, const Mat6&, TetMatrix<10>*);
+
+MatX tet_stiffness(const Vec3* x, int n, const Mat6& D) {
+  if (n == 4) {
+    TetMatrix<4> K;
+    return tet_stiffness<4>(x, D, &K) ? MatX(K) : MatX();
+  }
+  TetMatrix<10> K;
+  return tet_stiffness<10>(x, D, &K) ? MatX(K) : MatX();
 }
 
 double von_mises(const Vec6& s) {

@@ -15,6 +15,8 @@ namespace kinestat {
 // Blocks from this size on get huge pages (at least two of 2 MB; the alignment wastes address
 // space, not memory: glibc maps such blocks on their own and untouched pages cost nothing).
 inline constexpr std::size_t kHugePageThreshold = std::size_t{4} << 20;
+// Blocks from this size on are also touched (faulted in) by all cores at once when allocated.
+inline constexpr std::size_t kPrefaultThreshold = std::size_t{64} << 20;
 
 // `bytes` of uninitialized memory (nullptr when the system has none): std::malloc below
 // kHugePageThreshold, 2 MB-aligned and madvise(MADV_HUGEPAGE)d from it. Free with std::free.

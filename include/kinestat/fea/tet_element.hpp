@@ -8,7 +8,6 @@
 
 namespace kinestat::fea {
 
-
 // 6x6 isotropic elasticity matrix D (Pa) from E and G of the material (sigma = D epsilon).
 Mat6 elasticity_matrix(const Material& m);
 
@@ -16,6 +15,15 @@ Mat6 elasticity_matrix(const Material& m);
 // element is integrated with the 4-point degree-2 rule, exact for straight-sided elements where
 // B^T D B is quadratic. Returns an empty matrix when the Jacobian is not positive at a point.
 MatX tet_stiffness(const Vec3* x, int n, const Mat6& D);
+
+// The same, fixed-size (no heap allocation: the assembly's inner loop), N = 4 or 10; false when the
+// Jacobian is not positive at a point.
+template <int N>
+using TetMatrix = Eigen::Matrix<double, 3 * N, 3 * N>;
+template <int N>
+bool tet_stiffness(const Vec3* x, const Mat6& D, TetMatrix<N>* K);
+extern template bool tet_stiffness<4>(const Vec3*, const Mat6&, TetMatrix<4>*);
+extern template bool tet_stiffness<10>(const Vec3*, const Mat6&, TetMatrix<10>*);
 
 // Strain-displacement matrix B (6 x 3n) at the natural point (xi, eta, zeta) and det J there.
 MatX tet_strain_matrix(const Vec3* x, int n, const Vec3& natural, double* det_jacobian);
