@@ -271,6 +271,10 @@ std::string link_stiffness_report(const LinkStiffness& r) {
       os << "\n  relative residuals ||b - K x|| / ||b||:";
       for (double res : r.solve.relative_residual) os << fmt::format(" {:.2e}", res);
       os << "\n";
+      if (std::any_of(r.solve.relative_residual.begin(), r.solve.relative_residual.end(),
+                      [&](double res) { return res > r.solve.relative_tolerance; }))
+        os << "  (above the tolerance: round-off bounds the true residual there; restarting CG from its last iterate "
+              "stopped halving it)\n";
     }
   }
   os << cartesian_stiffness_report(r.cartesian, "  6x6 of the reference");

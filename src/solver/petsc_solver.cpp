@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -83,18 +84,42 @@ class PetscSolver final : public SparseCholesky {
         KINESTAT_PETSC(VecSetValues(b, rend_ - rstart_, rows.data(), B.col(k).data() + rstart_, INSERT_VALUES));
         KINESTAT_PETSC(VecAssemblyBegin(b));
         KINESTAT_PETSC(VecAssemblyEnd(b));
-        KINESTAT_PETSC(KSPSolve(ksp_, b, x));
+        // The true residual ||b - A x|| / ||b||, whatever the KSP measured: what the report promises.
+        PetscReal norm_b = 0.0;
+        KINESTAT_PETSC(VecNorm(b, NORM_2, &norm_b));
+        auto true_residual = [&](double* relative) -> PetscErrorCode {
+          PetscReal norm_r = 0.0;
+          PetscCall(MatMult(A_, x, residual));
+          PetscCall(VecAYPX(residual, -1.0, b));
+          PetscCall(VecNorm(residual, NORM_2, &norm_r));
+          *relative = norm_b > 0.0 ? norm_r / norm_b : norm_r;
+          return 0;
+        };
+        Monitor monitor{this, static_cast<int>(k), static_cast<int>(B.cols()), norm_b, std::chrono::steady_clock::now()};
+        KINESTAT_PETSC(KSPMonitorCancel(ksp_));
+        if (options_.progress) KINESTAT_PETSC(KSPMonitorSet(ksp_, &Monitor::call, &monitor, nullptr));
+        KINESTAT_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_FALSE));
         KSPConvergedReason reason;
-        PetscInt iterations = 0;
+        PetscInt iterations = 0, more = 0;
+        double relative = 0.0;
+        KINESTAT_PETSC(KSPSolve(ksp_, b, x));
         KINESTAT_PETSC(KSPGetConvergedReason(ksp_, &reason));
         KINESTAT_PETSC(KSPGetIterationNumber(ksp_, &iterations));
-        // The true residual, whatever the KSP measured: what the report promises.
-        PetscReal norm_b = 0.0, norm_r = 0.0;
-        KINESTAT_PETSC(MatMult(A_, x, residual));
-        KINESTAT_PETSC(VecAYPX(residual, -1.0, b));
-        KINESTAT_PETSC(VecNorm(b, NORM_2, &norm_b));
-        KINESTAT_PETSC(VecNorm(residual, NORM_2, &norm_r));
-        const double relative = norm_b > 0.0 ? norm_r / norm_b : norm_r;
+        KINESTAT_PETSC(true_residual(&relative));
+        // CG updates its residual by recurrence, which drifts from the true one near 1e-10 (2.9M dofs:
+        // CG stopped at 1e-10 with true residuals up to 1.6e-9): restart from x while the true
+        // residual is above the tolerance and a restart still halves it. Round-off bounds what any
+        // restart reaches (~1e-10 on the 41k-dof bar for the moment cases); what was reached is reported.
+        KINESTAT_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
+        for (double before = std::numeric_limits<double>::infinity(); iterative() && reason > 0 && relative > options_.relative_tolerance &&
+                                             relative < 0.5 * before;) {
+          before = relative;
+          KINESTAT_PETSC(KSPSolve(ksp_, b, x));
+          KINESTAT_PETSC(KSPGetConvergedReason(ksp_, &reason));
+          KINESTAT_PETSC(KSPGetIterationNumber(ksp_, &more));
+          iterations += more;
+          KINESTAT_PETSC(true_residual(&relative));
+        }
         if (reason < 0)
           return Status::Singular(fmt::format(
               "PETSc {} stopped on right-hand side {} after {} iterations ({}), relative residual {:.3e} > {:g}; "
@@ -131,6 +156,23 @@ class PetscSolver final : public SparseCholesky {
 
  private:
   bool iterative() const { return options_.backend == Backend::kPetscCg; }
+
+  // CG's progress on stderr (through options_.progress) at most every 10 s: a 3M-dof solve takes minutes.
+  struct Monitor {
+    const PetscSolver* solver;
+    int column, columns;
+    double norm_b;
+    std::chrono::steady_clock::time_point last;
+    static PetscErrorCode call(KSP, PetscInt iteration, PetscReal norm, void* context) {
+      auto* m = static_cast<Monitor*>(context);
+      if (seconds_since(m->last) < 10.0) return 0;
+      m->last = std::chrono::steady_clock::now();
+      m->solver->options_.progress(fmt::format("load case {} of {}: CG iteration {}, relative residual {:.2e}",
+                                               m->column + 1, m->columns, iteration,
+                                               m->norm_b > 0.0 ? norm / m->norm_b : norm));
+      return 0;
+    }
+  };
 
   std::vector<PetscInt> owned_rows() const {
     std::vector<PetscInt> rows(rend_ - rstart_);
@@ -239,6 +281,9 @@ class PetscSolver final : public SparseCholesky {
     }
     // PETSC_OPTIONS (e.g. "-ksp_monitor -pc_gamg_threshold 0.01") may tune the solver further.
     KINESTAT_PETSC(KSPSetFromOptions(ksp_));
+    if (options_.progress)
+      options_.progress(iterative() ? fmt::format("setting up the multigrid preconditioner (GAMG) for {} dofs", n_)
+                                    : fmt::format("factorizing {} dofs with MUMPS", n_));
     KINESTAT_PETSC(KSPSetUp(ksp_));
     PCFailedReason failed = PC_NOERROR;
     KINESTAT_PETSC(PCGetFailedReason(pc, &failed));
