@@ -1,9 +1,10 @@
-// Memory for the big arrays of a large model (assembly triplets, the sparse factor): blocks of 4 MB
+// Memory for the big arrays of a large model (the sparse factor, its workspace): blocks of 4 MB
 // and more are aligned to 2 MB and marked for transparent huge pages (madvise), so that touching
 // them the first time costs one page fault per 2 MB instead of one per 4 kB, and the TLB covers
-// them. Measured on the 88k-dof bench bar (benchmarks/README.md, "Factorization rate"): the
-// assembly's 220 000 page faults fall to 10 000 and its CPU time by a factor of ~3. Smaller blocks
-// are plain malloc. Memory from allocate_large is released with std::free.
+// them (measured on the 88k-dof bench bar, benchmarks/README.md, "Factorization rate": page faults
+// 127 000 -> 2 200 per factorization). Blocks of 64 MB and more are also faulted in at once by all
+// cores (the kernel zeroes fresh pages at ~0.5 GB/s per core in this VM), so the factorization
+// does not pay that on one thread. Smaller blocks are plain malloc. Release with std::free.
 #pragma once
 
 #include <cstddef>
