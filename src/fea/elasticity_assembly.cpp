@@ -98,21 +98,22 @@ Blocks make_blocks(const TetMesh& mesh, const DofMap& map) {
   return b;
 }
 
-// Elements around each node (compressed rows).
+// Elements [first, last) around each node (compressed rows).
 struct NodeElements {
   std::vector<long> start;
   std::vector<int> element;
 };
 
-NodeElements node_elements(const TetMesh& mesh) {
+NodeElements node_elements(const TetMesh& mesh, int first, int last) {
   NodeElements ne;
   const int npe = mesh.nodes_per_element;
   ne.start.assign(mesh.num_nodes() + 1, 0);
-  for (int v : mesh.connectivity) ++ne.start[v + 1];
+  for (int e = first; e < last; ++e)
+    for (int a = 0; a < npe; ++a) ++ne.start[mesh.element(e)[a] + 1];
   for (int n = 0; n < mesh.num_nodes(); ++n) ne.start[n + 1] += ne.start[n];
-  ne.element.resize(mesh.connectivity.size());
+  ne.element.resize(ne.start.back());
   std::vector<long> next(ne.start.begin(), ne.start.end() - 1);
-  for (int e = 0; e < mesh.num_elements(); ++e)
+  for (int e = first; e < last; ++e)
     for (int a = 0; a < npe; ++a) ne.element[next[mesh.element(e)[a]]++] = e;
   return ne;
 }
@@ -130,8 +131,8 @@ struct BlockPattern {
   }
 };
 
-BlockPattern block_pattern(const TetMesh& mesh, const Blocks& blocks) {
-  const NodeElements ne = node_elements(mesh);
+BlockPattern block_pattern(const TetMesh& mesh, const Blocks& blocks, int first, int last) {
+  const NodeElements ne = node_elements(mesh, first, last);
   const int npe = mesh.nodes_per_element, nb = blocks.count();
   // Two passes (count, then fill) over the same neighbour sets: no per-block vectors at 1M blocks.
   auto neighbours = [&](int a, std::vector<int>& out) {
@@ -147,7 +148,7 @@ BlockPattern block_pattern(const TetMesh& mesh, const Blocks& blocks) {
       for (int n : blocks.coupled_nodes) add_node(n);
     else
       add_node(blocks.node_of_free[a]);
-    if (out.empty()) out.push_back(a);  // a node in no element: its diagonal block only
+    if (out.empty()) out.push_back(a);  // a node in none of the elements: its diagonal block only
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   };
@@ -181,9 +182,9 @@ struct ElementScatter {
   double* values;
 
   template <int N>
-  void add_elements(std::atomic<int>& bad_element) const {
+  void add_elements(int first, int last, std::atomic<int>& bad_element) const {
     const int ref_dof = map.reference_dof;
-    tbb::parallel_for(tbb::blocked_range<int>(0, mesh.num_elements(), 256), [&](const tbb::blocked_range<int>& range) {
+    tbb::parallel_for(tbb::blocked_range<int>(first, last, 256), [&](const tbb::blocked_range<int>& range) {
       std::array<Vec3, N> x;
       std::array<int, N> node_block;
       std::array<std::array<int, N>, N> k_of{};  // k_of[p][q]: place of node q's block in node p's block's list
@@ -224,13 +225,14 @@ struct ElementScatter {
 }  // namespace
 
 Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
-                          const DofMap& map, solver::SparseMatrix* stiffness) {
+                          const DofMap& map, solver::SparseMatrix* stiffness, std::pair<int, int> elements) {
+  const int first = elements.first, last = elements.second < 0 ? mesh.num_elements() : elements.second;
   // Straight into compressed columns: the pattern first (from the blocks' adjacency), then every
   // element adds its entries in place. Triplets would hold ~465 entries of 16 bytes per Tet10
   // element and a sorted copy (5 GB and more at 3M dofs, and the fresh memory's page faults at any
   // size: benchmarks/README.md, "Factorization rate"); the matrix itself holds 12 bytes per entry.
   const Blocks blocks = make_blocks(mesh, map);
-  const BlockPattern pattern = block_pattern(mesh, blocks);
+  const BlockPattern pattern = block_pattern(mesh, blocks, first, last);
   const int n = map.num_dofs, nb = blocks.count();
   const int ref_dof = map.reference_dof;
 
@@ -268,9 +270,9 @@ Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const
   std::atomic<int> bad_element{-1};
   const ElementScatter scatter{mesh, D, material, map, blocks, pattern, K.outerIndexPtr(), K.valuePtr()};
   if (mesh.quadratic())
-    scatter.add_elements<10>(bad_element);
+    scatter.add_elements<10>(first, last, bad_element);
   else
-    scatter.add_elements<4>(bad_element);
+    scatter.add_elements<4>(first, last, bad_element);
   if (bad_element >= 0)
     return Status::Invalid(fmt::format("tetrahedral mesh: element {} has a non-positive Jacobian (inverted or "
                                        "degenerate); remesh the link",

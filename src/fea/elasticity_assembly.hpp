@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "kinestat/core/status.hpp"
@@ -41,9 +42,11 @@ std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduce
 // Lower triangle of the reduced stiffness (N/m, and N or N m for the reference node's dofs), compressed
 // with sorted rows (what CHOLMOD reads in place), into *stiffness (an output argument: Eigen's
 // SparseMatrix has no move constructor, and a returned StatusOr would copy it twice).
-// Element e uses the elasticity matrix D[material[e]] (material empty: D[0] for all). Elements are
-// integrated in parallel; fails (kInvalidInput) on an element with a non-positive Jacobian.
+// Element e uses the elasticity matrix D[material[e]] (material empty: D[0] for all). Only the
+// elements [elements.first, elements.second) are assembled (second < 0: to the last; default: all),
+// one MPI rank's summand of a distributed stiffness. Elements are integrated in parallel; fails
+// (kInvalidInput) on an element with a non-positive Jacobian.
 Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
-                          const DofMap& map, solver::SparseMatrix* stiffness);
+                          const DofMap& map, solver::SparseMatrix* stiffness, std::pair<int, int> elements = {0, -1});
 
 }  // namespace kinestat::fea
