@@ -237,6 +237,12 @@ class CholmodCholesky final : public SparseCholesky {
       } else {
         factor_ = cholmod_analyze(&M, &common_);
       }
+      if (common_.status == CHOLMOD_TOO_LARGE)  // e.g. 2.9M dofs of a 10-node tetrahedral mesh
+        return Status::Invalid(fmt::format(
+            "sparse Cholesky of {} unknowns: the factor would have more than 2^31 entries, beyond CHOLMOD's 32-bit "
+            "indices (at least 26 GB); make the model smaller or use the iterative or distributed backend (--solver "
+            "petsc-cg or petsc-mumps, docs/fea.md \"Large meshes\")",
+            n));
       if (!factor_ || common_.status < CHOLMOD_OK)
         return Status::Internal(fmt::format("CHOLMOD analysis failed (status {})", common_.status));
       ++analyses_;
