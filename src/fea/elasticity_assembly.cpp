@@ -55,15 +55,22 @@ std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduce
   return u;
 }
 
+std::pair<int, int> element_range(int num_elements, int rank, int ranks) {
+  auto first = [&](int r) { return static_cast<int>(static_cast<long>(num_elements) * r / ranks); };
+  return {first(rank), first(rank + 1)};
+}
+
 StatusOr<solver::SparseMatrix> assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D,
-                                                  const std::vector<int>& material, const DofMap& map) {
+                                                  const std::vector<int>& material, const DofMap& map,
+                                                  std::pair<int, int> elements) {
   using Triplet = Eigen::Triplet<double, int>;
   // Hundreds of MB at 100k dofs: huge pages (core/huge_page_allocator.hpp).
   using Triplets = std::vector<Triplet, HugePageAllocator<Triplet>>;
   const int npe = mesh.nodes_per_element, ndof = 3 * npe;
   tbb::enumerable_thread_specific<Triplets> local;
   std::atomic<int> bad_element{-1};
-  tbb::parallel_for(tbb::blocked_range<int>(0, mesh.num_elements(), 512), [&](const tbb::blocked_range<int>& range) {
+  const int last = elements.second < 0 ? mesh.num_elements() : elements.second;
+  tbb::parallel_for(tbb::blocked_range<int>(elements.first, last, 512), [&](const tbb::blocked_range<int>& range) {
     Triplets& out = local.local();
     std::array<Vec3, 10> x;
     for (int e = range.begin(); e != range.end(); ++e) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "kinestat/core/status.hpp"
@@ -39,9 +40,16 @@ DofMap free_dof_map(const TetMesh& mesh);
 std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduced);
 
 // Lower triangle of the reduced stiffness (N/m, and N or N m for the reference node's dofs).
-// Element e uses the elasticity matrix D[material[e]] (material empty: D[0] for all). Elements are
-// integrated in parallel; fails (kInvalidInput) on an element with a non-positive Jacobian.
+// Element e uses the elasticity matrix D[material[e]] (material empty: D[0] for all). Only the
+// elements [elements.first, elements.second) are assembled (second < 0: to the last; default: all),
+// one MPI rank's summand of a distributed stiffness. Elements are integrated in parallel; fails
+// (kInvalidInput) on an element with a non-positive Jacobian.
 StatusOr<solver::SparseMatrix> assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D,
-                                                  const std::vector<int>& material, const DofMap& map);
+                                                  const std::vector<int>& material, const DofMap& map,
+                                                  std::pair<int, int> elements = {0, -1});
+
+// The elements rank `rank` of `ranks` assembles in a distributed assembly: the rank-th of `ranks`
+// consecutive ranges of equal length (within one element).
+std::pair<int, int> element_range(int num_elements, int rank, int ranks);
 
 }  // namespace kinestat::fea
