@@ -1,6 +1,7 @@
 // kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE|-]
 //     [--convergence] [--solver cholmod|petsc-mumps|petsc-cg [--cg-rtol R]] [--quiet]
-// Under `mpirun -np N` with a PETSc solver every rank computes, rank 0 alone writes.
+// Under `mpirun -np N` with a PETSc solver rank 0 meshes, every rank assembles its share of the
+// elements and solves, rank 0 alone writes.
 // The 6x6 stiffness of one link by FEA (fea/link_stiffness.hpp; docs/fea.md).
 #include <algorithm>
 #include <chrono>
@@ -111,20 +112,25 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->capture_default_str();
   add_output_options(*cmd, args->out, "kinestat-link-stiffness");
   cmd->callback([args, &ctx] {
-    auto fail = [&ctx](const Status& s) { ctx.exit_code = report_failure(ctx, "link-stiffness", s); };
+    // Under mpirun every rank fails alike (solver::agree_on_status): rank 0 alone says why.
+    int rank = 0;
+    auto fail = [&ctx, &rank](const Status& s) {
+      ctx.exit_code = rank == 0 ? report_failure(ctx, "link-stiffness", s) : exit_code_for(s);
+    };
     const solver::Backend backend = *solver::backend_from_name(args->solver);  // checked by IsMember
     if (Status s = solver::check_backend_built(backend); !s.ok()) return fail(s);
+    if (backend != solver::Backend::kCholmod) {
+      // Under mpirun every rank runs this command; only rank 0 writes the report, JSON and VTK.
+      auto group = solver::start_parallel();
+      if (!group.ok()) return fail(group.status());
+      rank = group->rank;
+      if (rank != 0) args->out = OutputOptions{.json = "", .quiet = true}, args->vtk_dir.clear();
+    }
     if (!(args->cg_rtol > 0.0 && args->cg_rtol < 1.0))
       return fail(Status::Invalid(fmt::format("--cg-rtol {:g}: give a relative tolerance between 0 and 1 (e.g. 1e-10)",
                                               args->cg_rtol)));
     if (args->max_iterations < 1)
       return fail(Status::Invalid(fmt::format("--max-iterations {}: give at least 1", args->max_iterations)));
-    if (backend != solver::Backend::kCholmod) {
-      // Under mpirun every rank runs this command; only rank 0 writes the report, JSON and VTK.
-      auto group = solver::start_parallel();
-      if (!group.ok()) return fail(group.status());
-      if (group->rank != 0) args->out = OutputOptions{.json = "", .quiet = true}, args->vtk_dir.clear();
-    }
     Output out(ctx, args->out);
     const double scale = args->unit == "mm" ? 1e-3 : 1.0;
     fea::LinkStiffnessRequest request;

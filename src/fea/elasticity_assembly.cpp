@@ -56,6 +56,11 @@ std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduce
   return u;
 }
 
+std::pair<int, int> element_range(int num_elements, int rank, int ranks) {
+  auto first = [&](int r) { return static_cast<int>(static_cast<long>(num_elements) * r / ranks); };
+  return {first(rank), first(rank + 1)};
+}
+
 namespace {
 
 // The reduced dofs in blocks, in dof order: a free node's three (3b, 3b+1, 3b+2: make_dof_map numbers

@@ -49,4 +49,8 @@ std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduce
 Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
                           const DofMap& map, solver::SparseMatrix* stiffness, std::pair<int, int> elements = {0, -1});
 
+// The elements rank `rank` of `ranks` assembles in a distributed assembly: the rank-th of `ranks`
+// consecutive ranges of equal length (within one element).
+std::pair<int, int> element_range(int num_elements, int rank, int ranks);
+
 }  // namespace kinestat::fea

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <sstream>
 
 #include <sys/resource.h>
@@ -195,11 +196,31 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
     reference_point = 0.5 * (lo + hi);
   }
 
-  progress(fmt::format("assembling {} elements", mesh.num_elements()));
   const DofMap map = make_dof_map(mesh, clamped, stiff_body ? std::vector<int>{} : reference_nodes, reference_point);
   r.num_dofs = map.num_dofs;
+  solver::SparseCholeskyOptions cholesky_options = options.cholesky;
+  if (!cholesky_options.progress) cholesky_options.progress = options.progress;
+  auto cholesky = solver::make_sparse_cholesky(cholesky_options);
+  // A distributed backend (PETSc on several MPI ranks): each rank assembles one range of elements,
+  // its summand of K, and the backend adds the summands in its distributed matrix (entries of rows
+  // another rank owns are sent to it), so no rank holds all of K. Equal element ranges balance the
+  // work exactly. Giving each element to the rank owning its lowest row would send fewer entries but,
+  // for 10-node elements on two ranks, give rank 0 all of them: an element's lowest row is a vertex's,
+  // and the vertices, numbered before the mid-edge nodes (to_quadratic), are far fewer than half.
+  const int ranks = cholesky->summing_ranks(), rank = ranks > 1 ? solver::process_group().rank : 0;
+  for (int q = 0; q < ranks; ++q) {
+    const auto [first, last] = element_range(mesh.num_elements(), q, ranks);
+    r.elements_per_rank.push_back(last - first);
+  }
+  progress(ranks == 1 ? fmt::format("assembling {} elements", mesh.num_elements())
+                      : fmt::format("assembling {} of the {} elements on MPI rank {} of {}", r.elements_per_rank[rank],
+                                    mesh.num_elements(), rank, ranks));
   solver::SparseMatrix K;
-  if (Status s = assemble_stiffness(mesh, D, element_material, map, &K); !s.ok()) return s;
+  // A bad element stops the rank that assembles it: every rank stops with it, none waits in Factorize.
+  if (Status s = solver::agree_on_status(
+          assemble_stiffness(mesh, D, element_material, map, &K, element_range(mesh.num_elements(), rank, ranks)));
+      !s.ok())
+    return s;
   r.assembly_seconds = seconds_since(t0);
 
   // Right-hand sides: unit wrenches on the reference node, or spread over the stiff body.
@@ -219,20 +240,19 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
     F.middleRows<6>(map.reference_dof).setIdentity();
   }
 
-  progress(fmt::format("analysing {} dofs ({} matrix entries)", map.num_dofs, K.nonZeros()));
-  solver::SparseCholeskyOptions cholesky_options = options.cholesky;
-  if (!cholesky_options.progress) cholesky_options.progress = options.progress;
-  auto cholesky = solver::make_sparse_cholesky(cholesky_options);
+  progress(fmt::format("analysing {} dofs ({} matrix entries{})", map.num_dofs, K.nonZeros(),
+                       ranks == 1 ? "" : " on this rank"));
   if (cholesky_options.backend == solver::Backend::kPetscCg)  // multigrid only: n x 6 numbers for nothing else
     cholesky->SetNearNullSpace(rigid_body_modes(mesh, map, reference_point));
   r.backend = cholesky->backend_description();
-  if (Status s = cholesky->Factorize(K, &r.factorization); !s.ok()) {
+  if (Status s = cholesky->FactorizeSum(std::span(&K, 1), &r.factorization); !s.ok()) {
     if (r.factorization.refused_for_memory()) return memory_refusal(mesh, map.num_dofs, r.factorization);
     if (s.code() == StatusCode::kSingular)
       return Status::Singular("link stiffness: the clamped link still has a free motion (" + s.message() +
                               "); the clamp region must hold at least three non-collinear nodes");
     return s;
   }
+  solver::SparseMatrix().swap(K);  // the backend holds its own copy (CHOLMOD's factor, PETSc's rows)
   progress("solving the six unit load cases");
   const auto t1 = std::chrono::steady_clock::now();
   MatX X;
@@ -261,6 +281,11 @@ std::string link_stiffness_report(const LinkStiffness& r) {
     const solver::FactorizationReport& f = r.factorization;
     os << fmt::format("  solver: {} dofs, {}, ordering {}, nnz(L) = {}\n", r.num_dofs, r.backend, f.ordering,
                       f.nnz_factor);
+    if (r.elements_per_rank.size() > 1) {
+      os << "  distributed assembly: elements per MPI rank";
+      for (int count : r.elements_per_rank) os << fmt::format(" {}", count);
+      os << fmt::format(" (rank 0: {:.1f} %)\n", 100.0 * r.elements_per_rank[0] / std::max(1, r.num_elements));
+    }
     os << fmt::format("  time: assembly {:.3f} s, analysis {:.3f} s, factorization {:.3f} s ({:.3g} Gflop), "
                       "six solves {:.3f} s; peak memory {:.0f} MB\n",
                       r.assembly_seconds, f.analyze_seconds, f.factor_seconds, f.flops * 1e-9, r.solve_seconds,

@@ -4,6 +4,7 @@
 
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/result_cache.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace kinestat::fea {
 namespace {
@@ -17,11 +18,52 @@ MeshingOptions meshing_options(const LinkStiffnessRequest& r, double size) {
   return m;
 }
 
+// What rank 0 alone computes, shared with the other MPI ranks (one process: computed here). The
+// surface is read and checked, and the volume mesh made, once: CGAL's meshing is not bit-repeatable
+// at some sizes, so ranks meshing on their own could solve different meshes. Rank 0's failure
+// becomes every rank's (solver::agree_on_status) before anything is sent.
+StatusOr<SurfaceInfo> surface_from_rank0(const std::string& file) {
+  const bool root = solver::process_group().rank == 0;
+  StatusOr<SurfaceInfo> surface = root ? check_surface_file(file) : StatusOr<SurfaceInfo>(SurfaceInfo{});
+  if (Status s = solver::agree_on_status(surface.status()); !s.ok()) return s;
+  SurfaceInfo& info = *surface;
+  std::vector<double> values = {static_cast<double>(info.triangles), info.lo.x(), info.lo.y(), info.lo.z(),
+                                info.hi.x(), info.hi.y(), info.hi.z(), info.volume, info.area};
+  if (Status s = solver::broadcast_from_root(values); !s.ok()) return s;
+  info = {static_cast<int>(values[0]), Vec3(values[1], values[2], values[3]), Vec3(values[4], values[5], values[6]),
+          values[7], values[8]};
+  return surface;
+}
+
+// The mesh goes as its node coordinates and connectivity: 24 bytes per node and 4 per element node,
+// ~18 bytes per dof for 10-node tetrahedra, about 2 % of the ~1 KB per dof of the stiffness matrix
+// PETSc stores (both triangles, ~80 entries per row); its element ranges are then assembled apart.
+StatusOr<TetMesh> mesh_from_rank0(const std::string& file, const MeshingOptions& meshing) {
+  const solver::ProcessGroup group = solver::process_group();
+  StatusOr<TetMesh> mesh = group.rank == 0 ? mesh_surface_file(file, meshing) : StatusOr<TetMesh>(TetMesh{});
+  if (Status s = solver::agree_on_status(mesh.status()); !s.ok()) return s;
+  if (group.size == 1) return mesh;
+  TetMesh& m = *mesh;
+  std::vector<double> xyz;
+  xyz.reserve(3 * m.nodes.size());
+  for (const Vec3& x : m.nodes) xyz.insert(xyz.end(), x.data(), x.data() + 3);
+  std::vector<int> nodes_per_element = {m.nodes_per_element};
+  if (Status s = solver::broadcast_from_root(xyz); !s.ok()) return s;
+  if (Status s = solver::broadcast_from_root(m.connectivity); !s.ok()) return s;
+  if (Status s = solver::broadcast_from_root(nodes_per_element); !s.ok()) return s;
+  m.nodes_per_element = nodes_per_element[0];
+  if (group.rank != 0) {
+    m.nodes.resize(xyz.size() / 3);
+    for (size_t n = 0; n < m.nodes.size(); ++n) m.nodes[n] = Vec3(xyz[3 * n], xyz[3 * n + 1], xyz[3 * n + 2]);
+  }
+  return mesh;
+}
+
 }  // namespace
 
 StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& request) {
   LinkStiffnessRun run;
-  StatusOr<SurfaceInfo> surface = check_surface_file(request.mesh_file);
+  StatusOr<SurfaceInfo> surface = surface_from_rank0(request.mesh_file);
   if (!surface.ok()) return surface.status();
   run.surface = *surface;
   run.mesh_size = request.mesh_size > 0.0 ? request.mesh_size : default_mesh_size(*surface, request.unit_scale);
@@ -47,7 +89,7 @@ StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& re
   }
   if (request.options.progress)
     request.options.progress(fmt::format("meshing {} with size {:g} m", request.mesh_file, run.mesh_size));
-  StatusOr<TetMesh> mesh = mesh_surface_file(request.mesh_file, meshing);
+  StatusOr<TetMesh> mesh = mesh_from_rank0(request.mesh_file, meshing);
   if (!mesh.ok()) return mesh.status();
   StatusOr<LinkStiffness> result = link_stiffness(*mesh, request.material, request.options);
   if (!result.ok()) return Status(result.status().code(), request.mesh_file + ": " + result.status().message());
@@ -61,7 +103,7 @@ StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& re
 
 StatusOr<ConvergenceStudy> link_stiffness_convergence(const LinkStiffnessRequest& request,
                                                       const std::vector<double>& sizes) {
-  auto make = [&](double h) { return mesh_surface_file(request.mesh_file, meshing_options(request, h)); };
+  auto make = [&](double h) { return mesh_from_rank0(request.mesh_file, meshing_options(request, h)); };
   return mesh_convergence_study(make, sizes, request.material, request.options);
 }
 

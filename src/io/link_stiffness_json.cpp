@@ -36,6 +36,7 @@ json link_stiffness_to_json(const std::string& mesh_file, double mesh_size, cons
                    {"factorization_seconds", f.factor_seconds},
                    {"solve_seconds", r.solve_seconds},
                    {"peak_memory_bytes", r.peak_memory_bytes},
+                   {"elements_per_rank", r.elements_per_rank},
                    {"relative_tolerance", r.solve.relative_tolerance},
                    {"iterations", r.solve.iterations},
                    {"relative_residuals", r.solve.relative_residual}};

@@ -1,5 +1,7 @@
 #include "kinestat/solver/linear_solver_factory.hpp"
 
+#include <fmt/format.h>
+
 #include "solver/cholmod_cholesky.hpp"
 #include "solver/petsc_solver.hpp"
 
@@ -52,6 +54,19 @@ Status SparseCholesky::SolveAndReport(const MatX& B, MatX* X, SolveReport* repor
     report->iterations.assign(B.cols(), 0);
   }
   return s;
+}
+
+Status SparseCholesky::FactorizeSum(std::span<const SparseMatrix> summands, FactorizationReport* report) {
+  if (summands.empty()) return Status::Invalid("FactorizeSum: no summand given");
+  if (summands.size() == 1) return Factorize(summands[0], report);
+  SparseMatrix A = summands[0];
+  for (const SparseMatrix& s : summands.subspan(1)) {
+    if (s.rows() != A.rows() || s.cols() != A.cols())
+      return Status::Invalid(fmt::format("FactorizeSum: a {} x {} summand of a {} x {} matrix", s.rows(), s.cols(),
+                                         A.rows(), A.cols()));
+    A += s;
+  }
+  return Factorize(A, report);
 }
 
 }  // namespace kinestat::solver

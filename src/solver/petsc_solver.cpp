@@ -1,10 +1,13 @@
-// The PETSc backends (docs/fea.md, "Large meshes"). Every rank holds the whole matrix handed to
-// Factorize (the FEA assembles it on every rank) and gives PETSc only its own block of rows, so PETSc
-// distributes the factor (MUMPS) or the multigrid hierarchy (GAMG); the solution is gathered back to
-// every rank, so every rank computes the same 6x6. Compiled without PETSc (KINESTAT_HAVE_PETSC
-// unset) the backends exist but say they are not built in.
+// The PETSc backends (docs/fea.md, "Large meshes"). Factorize takes the whole matrix on every rank
+// and gives PETSc only this rank's block of rows; FactorizeSum takes each rank's summand (the
+// elements it assembled) and lets PETSc add them, sending entries of other ranks' rows to their
+// owners, so that no rank holds the whole matrix. PETSc distributes the factor (MUMPS) or the
+// multigrid hierarchy (GAMG); the solution is gathered back to every rank, so every rank computes
+// the same 6x6. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) the backends exist but say they
+// are not built in, and the collective helpers do nothing.
 #include "solver/petsc_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <limits>
@@ -46,6 +49,28 @@ std::string petsc_version() {
   return fmt::format("PETSc {}.{}.{}", PETSC_VERSION_MAJOR, PETSC_VERSION_MINOR, PETSC_VERSION_SUBMINOR);
 }
 
+// Rows in blocks of 3 (x, y, z of a node) when the dofs come in triples, as GAMG's aggregates want.
+PetscInt block_size(int n) { return n % 3 == 0 ? 3 : 1; }
+
+// The offsets of every rank's block of rows (PETSc's split, whole blocks of block_size(n) rows):
+// the same on every rank, and the same rows the PETSc matrix gives each rank.
+StatusOr<std::vector<int>> split_rows(int n) {
+  StatusOr<ProcessGroup> group = start_parallel();
+  if (!group.ok()) return group.status();
+  PetscInt local = PETSC_DECIDE, global = n;
+  KINESTAT_PETSC(PetscSplitOwnershipBlock(PETSC_COMM_WORLD, block_size(n), &local, &global));
+  std::vector<PetscInt> locals(group->size);
+  if (MPI_Allgather(&local, 1, MPIU_INT, locals.data(), 1, MPIU_INT, PETSC_COMM_WORLD) != MPI_SUCCESS)
+    return Status::Internal("MPI_Allgather of the row ownership failed");
+  std::vector<int> offsets(group->size + 1, 0);
+  for (int r = 0; r < group->size; ++r) offsets[r + 1] = offsets[r] + static_cast<int>(locals[r]);
+  return offsets;
+}
+
+int owner_of(const std::vector<int>& offsets, int row) {
+  return static_cast<int>(std::upper_bound(offsets.begin(), offsets.end(), row) - offsets.begin()) - 1;
+}
+
 class PetscSolver final : public SparseCholesky {
  public:
   explicit PetscSolver(const SparseCholeskyOptions& options) : options_(options) {}
@@ -54,11 +79,16 @@ class PetscSolver final : public SparseCholesky {
   void SetNearNullSpace(const MatX& modes) override { near_null_ = modes; }
 
   Status Factorize(const SparseMatrix& A, FactorizationReport* report) override {
-    FactorizationReport r;
-    Status s = FactorizeImpl(A, &r);
-    if (!s.ok()) Release();  // no Solve with a half-made or singular factor
-    if (report) *report = r;
-    return s;
+    return FactorizeParts(std::span(&A, 1), /*summed=*/false, report);
+  }
+
+  Status FactorizeSum(std::span<const SparseMatrix> summands, FactorizationReport* report) override {
+    return FactorizeParts(summands, /*summed=*/true, report);
+  }
+
+  int summing_ranks() const override {
+    StatusOr<ProcessGroup> group = start_parallel();
+    return group.ok() ? group->size : 1;  // PETSc failed to start: FactorizeSum will say so
   }
 
   Status Solve(const MatX& B, MatX* X) const override { return SolveAndReport(B, X, nullptr); }
@@ -186,9 +216,121 @@ class PetscSolver final : public SparseCholesky {
     MatDestroy(&A_);
   }
 
-  Status FactorizeImpl(const SparseMatrix& lower, FactorizationReport* r) {
+  Status FactorizeParts(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* report) {
+    FactorizationReport r;
+    Status s = FactorizeImpl(parts, summed, &r);
+    if (!s.ok()) Release();  // no Solve with a half-made or singular factor
+    if (report) *report = r;
+    return s;
+  }
+
+  // Makes A_ from `parts`: with `summed`, A = the sum of every rank's parts (each rank inserts all
+  // its entries, PETSc's stash moves those of other ranks' rows during the assembly); without, every
+  // rank holds the whole A in parts[0] and inserts only its own rows.
+  Status AssembleMatrix(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* r) {
+    if (parts.empty()) return Status::Invalid("PETSc solver: no matrix given");
+    n_ = static_cast<int>(parts[0].rows());
+    for (const SparseMatrix& p : parts)
+      if (p.rows() != n_ || p.cols() != n_)
+        return Status::Invalid(fmt::format("PETSc solver: a {} x {} matrix where a square one of {} rows is wanted",
+                                           p.rows(), p.cols(), n_));
+    // Every rank must bring the same n (a collective call with different sizes would not return).
+    int n_min = n_, n_max = n_;
+    MPI_Allreduce(&n_, &n_min, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+    MPI_Allreduce(&n_, &n_max, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+    if (n_min != n_max)
+      return Status::Internal(fmt::format("PETSc solver: the ranks hold matrices of {} to {} rows", n_min, n_max));
+    r->n = n_;
+    StatusOr<std::vector<int>> offsets = split_rows(n_);
+    if (!offsets.ok()) return offsets.status();
+    const int rank = process_group().rank;
+    rstart_ = (*offsets)[rank];
+    rend_ = (*offsets)[rank + 1];
+    const PetscInt local = rend_ - rstart_;
+    auto take = [&](PetscInt row) { return summed || (row >= rstart_ && row < rend_); };
+
+    // PETSc wants both triangles of its rows. The lower triangle (column-major) holds row c's upper
+    // part in column c, and rows r > c's lower parts in the same column: each column is inserted as
+    // one column of rows r >= c and one row c, without a second (full) copy of the matrix.
+    auto for_each_column = [&](auto&& visit) -> Status {
+      std::vector<PetscInt> lower_rows, upper_cols;
+      std::vector<PetscScalar> lower_values, upper_values;
+      for (const SparseMatrix& part : parts)
+        for (PetscInt c = 0; c < n_; ++c) {
+          lower_rows.clear(), upper_cols.clear(), lower_values.clear(), upper_values.clear();
+          for (SparseMatrix::InnerIterator it(part, static_cast<int>(c)); it; ++it) {
+            if (it.row() < c) continue;  // an upper entry: ignored
+            if (take(it.row())) lower_rows.push_back(it.row()), lower_values.push_back(it.value());
+            if (it.row() != c && take(c)) upper_cols.push_back(it.row()), upper_values.push_back(it.value());
+          }
+          if (Status s = visit(c, lower_rows, lower_values, upper_cols, upper_values); !s.ok()) return s;
+        }
+      return Status::Ok();
+    };
+
+    // Preallocation: per owned row, the entries in the diagonal block (columns this rank owns) and
+    // off it. Each rank counts what it inserts into every row (two O(n) arrays) and the counts are
+    // summed onto the rows' owners. An entry that several ranks (summands) hold is counted once per
+    // holder: an upper bound, capped at the row's length, whose excess is the ranks' shared rows only.
+    std::vector<PetscInt> diagonal(n_, 0), off(n_, 0);
+    auto count = [&](PetscInt row, PetscInt col) {
+      ++(owner_of(*offsets, static_cast<int>(row)) == owner_of(*offsets, static_cast<int>(col)) ? diagonal : off)[row];
+    };
+    Status counted = for_each_column([&](PetscInt c, const auto& lower_rows, const auto&, const auto& upper_cols,
+                                         const auto&) {
+      for (PetscInt row : lower_rows) count(row, c);
+      for (PetscInt col : upper_cols) count(c, col);
+      return Status::Ok();
+    });
+    if (!counted.ok()) return counted;
+    const int ranks = process_group().size;
+    std::vector<int> local_sizes(ranks);
+    for (int q = 0; q < ranks; ++q) local_sizes[q] = (*offsets)[q + 1] - (*offsets)[q];
+    std::vector<PetscInt> diagonal_nnz(local), off_nnz(local);
+    if (MPI_Reduce_scatter(diagonal.data(), diagonal_nnz.data(), local_sizes.data(), MPIU_INT, MPI_SUM,
+                           PETSC_COMM_WORLD) != MPI_SUCCESS ||
+        MPI_Reduce_scatter(off.data(), off_nnz.data(), local_sizes.data(), MPIU_INT, MPI_SUM, PETSC_COMM_WORLD) !=
+            MPI_SUCCESS)
+      return Status::Internal("MPI_Reduce_scatter of the preallocation counts failed");
+    std::vector<PetscInt>().swap(diagonal), std::vector<PetscInt>().swap(off);
+    for (PetscInt i = 0; i < local; ++i) {
+      diagonal_nnz[i] = std::min(diagonal_nnz[i], local);
+      off_nnz[i] = std::min(off_nnz[i], static_cast<PetscInt>(n_) - local);
+    }
+    KINESTAT_PETSC(MatCreate(PETSC_COMM_WORLD, &A_));
+    KINESTAT_PETSC(MatSetSizes(A_, local, local, n_, n_));
+    KINESTAT_PETSC(MatSetType(A_, MATAIJ));
+    KINESTAT_PETSC(MatSetBlockSize(A_, block_size(n_)));
+    KINESTAT_PETSC(MatSeqAIJSetPreallocation(A_, 0, diagonal_nnz.data()));
+    KINESTAT_PETSC(MatMPIAIJSetPreallocation(A_, 0, diagonal_nnz.data(), 0, off_nnz.data()));
+    Status inserted = for_each_column([&](PetscInt c, const auto& lower_rows, const auto& lower_values,
+                                          const auto& upper_cols, const auto& upper_values) -> Status {
+      if (!lower_rows.empty())  // rows r >= c, column c
+        KINESTAT_PETSC(MatSetValues(A_, static_cast<PetscInt>(lower_rows.size()), lower_rows.data(), 1, &c,
+                                    lower_values.data(), ADD_VALUES));
+      if (!upper_cols.empty())  // row c, columns r > c
+        KINESTAT_PETSC(MatSetValues(A_, 1, &c, static_cast<PetscInt>(upper_cols.size()), upper_cols.data(),
+                                    upper_values.data(), ADD_VALUES));
+      return Status::Ok();
+    });
+    if (!inserted.ok()) return inserted;
+    KINESTAT_PETSC(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
+    KINESTAT_PETSC(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
+    // Stored entries of the lower triangle of the assembled A, over all ranks.
+    long lower = 0;
+    for (PetscInt row = rstart_; row < rend_; ++row) {
+      PetscInt ncols = 0;
+      const PetscInt* cols = nullptr;
+      KINESTAT_PETSC(MatGetRow(A_, row, &ncols, &cols, nullptr));
+      lower += std::count_if(cols, cols + ncols, [&](PetscInt col) { return col <= row; });
+      KINESTAT_PETSC(MatRestoreRow(A_, row, &ncols, &cols, nullptr));
+    }
+    MPI_Allreduce(&lower, &r->nnz_matrix, 1, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD);
+    return Status::Ok();
+  }
+
+  Status FactorizeImpl(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* r) {
     if (StatusOr<ProcessGroup> g = start_parallel(); !g.ok()) return g.status();
-    if (lower.rows() != lower.cols()) return Status::Invalid("PETSc solver: the matrix is not square");
     if (iterative() && !(options_.relative_tolerance > 0.0 && options_.relative_tolerance < 1.0))
       return Status::Invalid(fmt::format("PETSc CG: relative tolerance {:g} must lie in (0, 1)",
                                          options_.relative_tolerance));
@@ -197,54 +339,7 @@ class PetscSolver final : public SparseCholesky {
     Release();
     ++analyses_;
     const auto t0 = std::chrono::steady_clock::now();
-    n_ = static_cast<int>(lower.rows());
-    r->n = n_;
-    // PETSc wants both triangles of its rows. The lower triangle (column-major) holds row c's upper
-    // part in column c, and row r's strictly lower part spread over the columns c < r: counted and
-    // inserted in one pass each, without a second (full) copy of the matrix.
-    // Rows in blocks of 3 (x, y, z of a node) when the dofs come in triples, as GAMG's aggregates want.
-    const PetscInt bs = n_ % 3 == 0 ? 3 : 1;
-    PetscInt local = PETSC_DECIDE, global = n_;
-    KINESTAT_PETSC(PetscSplitOwnershipBlock(PETSC_COMM_WORLD, bs, &local, &global));
-    PetscInt end = 0;
-    MPI_Scan(&local, &end, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
-    rstart_ = end - local;
-    rend_ = end;
-    auto owned = [&](PetscInt row) { return row >= rstart_ && row < rend_; };
-    std::vector<PetscInt> diagonal_nnz(local, 0), off_nnz(local, 0);
-    auto count = [&](PetscInt row, PetscInt col) {
-      ++(owned(col) ? diagonal_nnz : off_nnz)[row - rstart_];
-    };
-    for (int c = 0; c < n_; ++c)
-      for (SparseMatrix::InnerIterator it(lower, c); it; ++it) {
-        if (it.row() < c) continue;  // an upper entry: ignored
-        ++r->nnz_matrix;
-        if (owned(it.row())) count(it.row(), c);
-        if (it.row() != c && owned(c)) count(c, it.row());
-      }
-    KINESTAT_PETSC(MatCreate(PETSC_COMM_WORLD, &A_));
-    KINESTAT_PETSC(MatSetSizes(A_, local, local, n_, n_));
-    KINESTAT_PETSC(MatSetType(A_, MATAIJ));
-    KINESTAT_PETSC(MatSetBlockSize(A_, bs));
-    KINESTAT_PETSC(MatSeqAIJSetPreallocation(A_, 0, diagonal_nnz.data()));
-    KINESTAT_PETSC(MatMPIAIJSetPreallocation(A_, 0, diagonal_nnz.data(), 0, off_nnz.data()));
-    std::vector<PetscInt> columns;
-    std::vector<PetscScalar> values;
-    for (PetscInt c = 0; c < n_; ++c) {
-      columns.clear();
-      values.clear();
-      for (SparseMatrix::InnerIterator it(lower, static_cast<int>(c)); it; ++it) {
-        if (it.row() < c) continue;
-        if (owned(c)) columns.push_back(it.row()), values.push_back(it.value());  // row c, upper part
-        if (it.row() != c && owned(it.row()))  // row r, lower part
-          KINESTAT_PETSC(MatSetValue(A_, it.row(), c, it.value(), INSERT_VALUES));
-      }
-      if (!columns.empty())
-        KINESTAT_PETSC(MatSetValues(A_, 1, &c, static_cast<PetscInt>(columns.size()), columns.data(), values.data(),
-                                    INSERT_VALUES));
-    }
-    KINESTAT_PETSC(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
-    KINESTAT_PETSC(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
+    if (Status s = AssembleMatrix(parts, summed, r); !s.ok()) return s;
     KINESTAT_PETSC(MatSetOption(A_, MAT_SYMMETRIC, PETSC_TRUE));
     // SPD only for CG: MUMPS then runs its symmetric-indefinite LDL^T (SYM=2), the one mode with
     // null-pivot detection and a count of negative pivots, which check positive definiteness below.
@@ -380,6 +475,44 @@ void finish_parallel() {
   PetscFinalize();
 }
 
+namespace {
+
+// Rank `root`'s vector to every rank: its length, then its values in pieces that MPI's int counts hold.
+template <class T>
+Status broadcast_vector(std::vector<T>& values, MPI_Datatype type, int root) {
+  if (process_group().size == 1) return Status::Ok();
+  unsigned long long count = values.size();
+  if (MPI_Bcast(&count, 1, MPI_UNSIGNED_LONG_LONG, root, PETSC_COMM_WORLD) != MPI_SUCCESS)
+    return Status::Internal("MPI_Bcast of a length failed");
+  values.resize(count);
+  constexpr unsigned long long kPiece = 1ull << 30;
+  for (unsigned long long first = 0; first < count; first += kPiece) {
+    const int piece = static_cast<int>(std::min(kPiece, count - first));
+    if (MPI_Bcast(values.data() + first, piece, type, root, PETSC_COMM_WORLD) != MPI_SUCCESS)
+      return Status::Internal("MPI_Bcast of shared data failed");
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status broadcast_from_root(std::vector<double>& values) { return broadcast_vector(values, MPI_DOUBLE, 0); }
+Status broadcast_from_root(std::vector<int>& values) { return broadcast_vector(values, MPI_INT, 0); }
+
+Status agree_on_status(const Status& mine) {
+  const ProcessGroup group = process_group();
+  if (group.size == 1) return mine;
+  int failed = mine.ok() ? group.size : group.rank, first = group.size;
+  if (MPI_Allreduce(&failed, &first, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD) != MPI_SUCCESS)
+    return Status::Internal("MPI_Allreduce of the ranks' outcomes failed");
+  if (first == group.size) return Status::Ok();
+  std::vector<int> code = {static_cast<int>(mine.code())};
+  std::vector<char> text(mine.message().begin(), mine.message().end());
+  if (Status s = broadcast_vector(code, MPI_INT, first); !s.ok()) return s;
+  if (Status s = broadcast_vector(text, MPI_CHAR, first); !s.ok()) return s;
+  return Status(static_cast<StatusCode>(code[0]), std::string(text.begin(), text.end()));
+}
+
 #else  // PETSc not built in
 
 namespace {
@@ -407,6 +540,9 @@ std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& o
 StatusOr<ProcessGroup> start_parallel() { return ProcessGroup{}; }
 ProcessGroup process_group() { return {}; }
 void finish_parallel() {}
+Status broadcast_from_root(std::vector<double>&) { return Status::Ok(); }
+Status broadcast_from_root(std::vector<int>&) { return Status::Ok(); }
+Status agree_on_status(const Status& mine) { return mine; }
 
 #endif
 

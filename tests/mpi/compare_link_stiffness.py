@@ -2,7 +2,9 @@
 """The PETSc backends against CHOLMOD on a bundled link: runs `kinestat link-stiffness` once with
 --solver cholmod, once under `MPIEXEC -np RANKS` with --solver SOLVER, and checks that every entry
 of the two 6x6 compliances agrees to TOL relative to the diagonal, |C1_ij - C2_ij| / sqrt(C_ii C_jj)
-(unit-free: the SI entries differ by orders of magnitude), and that only rank 0 wrote the JSON.
+(unit-free: the SI entries differ by orders of magnitude), that only rank 0 wrote the JSON, and that
+the ranks shared the assembly (solver.elements_per_rank: one entry per rank adding up to the mesh's
+elements; on two ranks rank 0 assembled 30-70 % of them).
 
 usage: compare_link_stiffness.py KINESTAT MPIEXEC RANKS SOLVER TOL MESH [link-stiffness options...]
 """
@@ -41,6 +43,12 @@ def main():
           f"residuals {s['relative_residuals']}; max |dC_ij| / sqrt(C_ii C_jj) = {worst:.3e} (tolerance {tol:g})")
     if not worst <= tol:
         sys.exit(f"{solver} differs from cholmod by {worst:.3e} > {tol:g}")
+    per_rank, elements = s["elements_per_rank"], result["mesh"]["elements"]
+    print(f"elements assembled per rank: {per_rank} of {elements}")
+    if len(per_rank) != int(ranks) or sum(per_rank) != elements:
+        sys.exit(f"elements per rank {per_rank}: want {ranks} ranks sharing the {elements} elements")
+    if int(ranks) == 2 and not 0.3 <= per_rank[0] / elements <= 0.7:
+        sys.exit(f"rank 0 assembled {per_rank[0]} of {elements} elements: the assembly was not shared")
 
 
 if __name__ == "__main__":

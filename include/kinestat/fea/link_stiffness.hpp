@@ -64,6 +64,9 @@ struct LinkStiffness {
   solver::FactorizationReport factorization;  // analysis and factorization times, nnz(L), flops
   solver::SolveReport solve;                   // per load case: iterations and relative residual
   std::string backend;
+  // Elements each MPI rank assembled (a distributed backend: docs/fea.md, "Large meshes"); one entry,
+  // all elements, on one process.
+  std::vector<int> elements_per_rank;
   // Wall time of the assembly and of the six solves (s); the peak resident memory of this process
   // (bytes, after the solves: under MPI, that of the rank that writes the report).
   double assembly_seconds = 0.0, solve_seconds = 0.0;

@@ -41,4 +41,16 @@ ProcessGroup process_group();  // {0, 1} until start_parallel
 // Ends PETSc and MPI (no solver object may outlive it); also done at exit.
 void finish_parallel();
 
+// Sharing what rank 0 alone computed (e.g. the FEA mesh: rank 0 meshes, the others receive it).
+// Collective: every rank of process_group() calls them, in the same order; without PETSc, before
+// start_parallel or on one rank they do nothing. On return every rank holds rank 0's `values`
+// (resized on the others).
+Status broadcast_from_root(std::vector<double>& values);
+Status broadcast_from_root(std::vector<int>& values);
+// Every rank's outcome of a step that may fail on some ranks only (rank 0's meshing, a rank's own
+// elements): returns to every rank the failure of the lowest failing rank (code and message), or Ok.
+// Call it before the next collective step, so that a failure stops every rank instead of leaving the
+// others waiting for the failed one. Returns `mine` without MPI.
+Status agree_on_status(const Status& mine);
+
 }  // namespace kinestat::solver

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,18 @@ class SparseCholesky {
   // from the last one analysed. Returns kSingular (with the report filled) when a pivot fails or
   // falls below the tolerance; the factor is then unusable for Solve.
   virtual Status Factorize(const SparseMatrix& A, FactorizationReport* report) = 0;
+
+  // Distributed assembly (docs/fea.md, "Large meshes"): factorizes A = the sum of `summands` over
+  // all of them and over every MPI rank, so that no rank holds A. Each summand is n x n, stored as
+  // for Factorize (lower triangle read); a rank passes what it assembled (its elements), which may
+  // reach into rows other ranks own (the PETSc backends send those entries to their owners).
+  // Collective: every rank of process_group() calls it. The default (CHOLMOD, one process) adds the
+  // summands and calls Factorize.
+  virtual Status FactorizeSum(std::span<const SparseMatrix> summands, FactorizationReport* report);
+
+  // How many MPI ranks share FactorizeSum's summands: process_group().size for the PETSc backends,
+  // 1 for a backend on one process (CHOLMOD), whose summands on each process must add up to all of A.
+  virtual int summing_ranks() const { return 1; }
 
   // Solves A X = B for all columns of B with the last successful factorization.
   virtual Status Solve(const MatX& B, MatX* X) const = 0;
