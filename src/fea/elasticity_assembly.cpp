@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <limits>
+#include <numeric>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
@@ -56,6 +57,22 @@ std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduce
   return u;
 }
 
+std::vector<int> elements_along_longest_axis(const TetMesh& mesh) {
+  Vec3 lo, hi;
+  bounding_box(mesh, lo, hi);
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  std::vector<double> centre(mesh.num_elements());
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    const int* v = mesh.element(e);
+    centre[e] = mesh.nodes[v[0]](axis) + mesh.nodes[v[1]](axis) + mesh.nodes[v[2]](axis) + mesh.nodes[v[3]](axis);
+  }
+  std::vector<int> order(mesh.num_elements());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return centre[a] < centre[b]; });
+  return order;
+}
+
 std::pair<int, int> element_range(int num_elements, int rank, int ranks) {
   auto first = [&](int r) { return static_cast<int>(static_cast<long>(num_elements) * r / ranks); };
   return {first(rank), first(rank + 1)};
@@ -103,23 +120,31 @@ Blocks make_blocks(const TetMesh& mesh, const DofMap& map) {
   return b;
 }
 
-// Elements [first, last) around each node (compressed rows).
+// The elements to assemble: a list of indices, or all of them (empty list).
+struct ElementSet {
+  std::span<const int> list;
+  int num_elements = 0;
+  int size() const { return list.empty() ? num_elements : static_cast<int>(list.size()); }
+  int operator[](int k) const { return list.empty() ? k : list[k]; }
+};
+
+// The elements of `set` around each node (compressed rows).
 struct NodeElements {
   std::vector<long> start;
   std::vector<int> element;
 };
 
-NodeElements node_elements(const TetMesh& mesh, int first, int last) {
+NodeElements node_elements(const TetMesh& mesh, const ElementSet& set) {
   NodeElements ne;
   const int npe = mesh.nodes_per_element;
   ne.start.assign(mesh.num_nodes() + 1, 0);
-  for (int e = first; e < last; ++e)
-    for (int a = 0; a < npe; ++a) ++ne.start[mesh.element(e)[a] + 1];
+  for (int k = 0; k < set.size(); ++k)
+    for (int a = 0; a < npe; ++a) ++ne.start[mesh.element(set[k])[a] + 1];
   for (int n = 0; n < mesh.num_nodes(); ++n) ne.start[n + 1] += ne.start[n];
   ne.element.resize(ne.start.back());
   std::vector<long> next(ne.start.begin(), ne.start.end() - 1);
-  for (int e = first; e < last; ++e)
-    for (int a = 0; a < npe; ++a) ne.element[next[mesh.element(e)[a]]++] = e;
+  for (int k = 0; k < set.size(); ++k)
+    for (int a = 0; a < npe; ++a) ne.element[next[mesh.element(set[k])[a]]++] = set[k];
   return ne;
 }
 
@@ -136,8 +161,8 @@ struct BlockPattern {
   }
 };
 
-BlockPattern block_pattern(const TetMesh& mesh, const Blocks& blocks, int first, int last) {
-  const NodeElements ne = node_elements(mesh, first, last);
+BlockPattern block_pattern(const TetMesh& mesh, const Blocks& blocks, const ElementSet& set) {
+  const NodeElements ne = node_elements(mesh, set);
   const int npe = mesh.nodes_per_element, nb = blocks.count();
   // Two passes (count, then fill) over the same neighbour sets: no per-block vectors at 1M blocks.
   auto neighbours = [&](int a, std::vector<int>& out) {
@@ -187,14 +212,15 @@ struct ElementScatter {
   double* values;
 
   template <int N>
-  void add_elements(int first, int last, std::atomic<int>& bad_element) const {
+  void add_elements(const ElementSet& set, std::atomic<int>& bad_element) const {
     const int ref_dof = map.reference_dof;
-    tbb::parallel_for(tbb::blocked_range<int>(first, last, 256), [&](const tbb::blocked_range<int>& range) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, set.size(), 256), [&](const tbb::blocked_range<int>& range) {
       std::array<Vec3, N> x;
       std::array<int, N> node_block;
       std::array<std::array<int, N>, N> k_of{};  // k_of[p][q]: place of node q's block in node p's block's list
       TetMatrix<N> Ke;
-      for (int e = range.begin(); e != range.end(); ++e) {
+      for (int k = range.begin(); k != range.end(); ++k) {
+        const int e = set[k];
         const int* v = mesh.element(e);
         for (int a = 0; a < N; ++a) x[a] = mesh.nodes[v[a]], node_block[a] = blocks.of_node[v[a]];
         if (!tet_stiffness<N>(x.data(), D[material.empty() ? 0 : material[e]], &Ke)) {
@@ -230,14 +256,14 @@ struct ElementScatter {
 }  // namespace
 
 Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
-                          const DofMap& map, solver::SparseMatrix* stiffness, std::pair<int, int> elements) {
-  const int first = elements.first, last = elements.second < 0 ? mesh.num_elements() : elements.second;
+                          const DofMap& map, solver::SparseMatrix* stiffness, std::span<const int> elements) {
+  const ElementSet set{elements, mesh.num_elements()};
   // Straight into compressed columns: the pattern first (from the blocks' adjacency), then every
   // element adds its entries in place. Triplets would hold ~465 entries of 16 bytes per Tet10
   // element and a sorted copy (5 GB and more at 3M dofs, and the fresh memory's page faults at any
   // size: benchmarks/README.md, "Factorization rate"); the matrix itself holds 12 bytes per entry.
   const Blocks blocks = make_blocks(mesh, map);
-  const BlockPattern pattern = block_pattern(mesh, blocks, first, last);
+  const BlockPattern pattern = block_pattern(mesh, blocks, set);
   const int n = map.num_dofs, nb = blocks.count();
   const int ref_dof = map.reference_dof;
 
@@ -275,9 +301,9 @@ Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const
   std::atomic<int> bad_element{-1};
   const ElementScatter scatter{mesh, D, material, map, blocks, pattern, K.outerIndexPtr(), K.valuePtr()};
   if (mesh.quadratic())
-    scatter.add_elements<10>(first, last, bad_element);
+    scatter.add_elements<10>(set, bad_element);
   else
-    scatter.add_elements<4>(first, last, bad_element);
+    scatter.add_elements<4>(set, bad_element);
   if (bad_element >= 0)
     return Status::Invalid(fmt::format("tetrahedral mesh: element {} has a non-positive Jacobian (inverted or "
                                        "degenerate); remesh the link",

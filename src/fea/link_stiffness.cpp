@@ -201,12 +201,13 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   solver::SparseCholeskyOptions cholesky_options = options.cholesky;
   if (!cholesky_options.progress) cholesky_options.progress = options.progress;
   auto cholesky = solver::make_sparse_cholesky(cholesky_options);
-  // A distributed backend (PETSc on several MPI ranks): each rank assembles one range of elements,
-  // its summand of K, and the backend adds the summands in its distributed matrix (entries of rows
-  // another rank owns are sent to it), so no rank holds all of K. Equal element ranges balance the
-  // work exactly. Giving each element to the rank owning its lowest row would send fewer entries but,
-  // for 10-node elements on two ranks, give rank 0 all of them: an element's lowest row is a vertex's,
-  // and the vertices, numbered before the mid-edge nodes (to_quadratic), are far fewer than half.
+  // A distributed backend (PETSc on several MPI ranks): each rank assembles one slab of the link (an
+  // equal range of the elements ordered along its longest axis), its summand of K, and the backend
+  // adds the summands in its distributed matrix (entries of rows another rank owns are sent to it),
+  // so no rank holds all of K. Equal ranges balance the work exactly. Giving each element to the rank
+  // owning its lowest row would send fewer entries but, for 10-node elements on two ranks, give rank
+  // 0 all of them: an element's lowest row is a vertex's, and the vertices, numbered before the
+  // mid-edge nodes (to_quadratic), are far fewer than half.
   const int ranks = cholesky->summing_ranks(), rank = ranks > 1 ? solver::process_group().rank : 0;
   for (int q = 0; q < ranks; ++q) {
     const auto [first, last] = element_range(mesh.num_elements(), q, ranks);
@@ -215,11 +216,15 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   progress(ranks == 1 ? fmt::format("assembling {} elements", mesh.num_elements())
                       : fmt::format("assembling {} of the {} elements on MPI rank {} of {}", r.elements_per_rank[rank],
                                     mesh.num_elements(), rank, ranks));
+  std::vector<int> slab;
+  if (ranks > 1) {
+    const std::vector<int> order = elements_along_longest_axis(mesh);
+    const auto [first, last] = element_range(mesh.num_elements(), rank, ranks);
+    slab.assign(order.begin() + first, order.begin() + last);
+  }
   solver::SparseMatrix K;
   // A bad element stops the rank that assembles it: every rank stops with it, none waits in Factorize.
-  if (Status s = solver::agree_on_status(
-          assemble_stiffness(mesh, D, element_material, map, &K, element_range(mesh.num_elements(), rank, ranks)));
-      !s.ok())
+  if (Status s = solver::agree_on_status(assemble_stiffness(mesh, D, element_material, map, &K, slab)); !s.ok())
     return s;
   r.assembly_seconds = seconds_since(t0);
 
