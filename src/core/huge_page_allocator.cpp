@@ -12,11 +12,11 @@ namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
-// Touches every page of [p, p + bytes) on all cores: the kernel zeroes fresh pages on their first
-// touch, ~1 s per 0.5 GB in this VM and on one thread (benchmarks/README.md, "Factorization rate");
-// spread over the cores it costs that time divided by their number, and the factorization that
-// fills the block then runs without page faults. The block is fresh (uninitialized), so writing
-// zeros changes nothing it promises.
+// Touches every page of [p, p + bytes) on all cores: a fresh page costs its first touch (zeroing,
+// and in this VM the host backing memory it was given back: ~2 s per GB on one thread after 20 s
+// idle, benchmarks/README.md, "First touch in this VM"); spread over the cores it costs that time
+// divided by their number, and the factorization that fills the block then runs without page
+// faults. The block is fresh (uninitialized), so writing zeros changes nothing it promises.
 void touch_in_parallel(char* p, std::size_t bytes) {
   const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t chunk = (bytes / threads + kHugePage - 1) / kHugePage * kHugePage;
