@@ -3,7 +3,7 @@
 // them the first time costs one page fault per 2 MB instead of one per 4 kB, and the TLB covers
 // them (measured on the 88k-dof bench bar, benchmarks/README.md, "Factorization rate": page faults
 // 127 000 -> 2 200 per factorization). Blocks of 64 MB and more are also faulted in at once by all
-// cores (first touch of memory new to the process costs ~0.5-2 s per GB and core in this VM:
+// cores (first touch of memory new to the process costs up to ~2 s per GB on one core in this VM:
 // benchmarks/README.md, "First touch in this VM"), so the factorization does not pay that on one
 // thread. Smaller blocks are plain malloc. Release with std::free.
 #pragma once
