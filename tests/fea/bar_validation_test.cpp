@@ -107,8 +107,13 @@ TEST(BarValidation, LinearTetsLockInBending) {
   EXPECT_LT(e_fine(1), -0.05) << "still locked at 4 cells across";
 }
 
-// The paper's pseudo-rigid body (an end cap 10x stiffer, 100x, ...) tends to the exact rigid
-// coupling; the gap shrinks in proportion to 1 / ratio (the cap's own compliance).
+// The paper's pseudo-rigid body (an end cap 100x stiffer, 1000x, ...) tends to the exact rigid
+// coupling; the gap shrinks in proportion to 1 / ratio (the cap's own compliance) as long as that
+// gap is larger than the round-off, which grows with the ratio (the cap multiplies the condition
+// number of K). Measured here (largest relative gap of the diagonal): 6.5e-4, 6.5e-5, 6.6e-6,
+// 6.5e-7 at 1e2..1e5, all torsion and identical to 1e-3 across runs; from 1e6 on the bending
+// entries are round-off that changes with BLAS threads and CPU: 2.8e-6 to 6.2e-6 at 1e6 on this
+// machine (CI's CPU went above 1e-5), 1.5e-5 to 2.0e-5 at 1e7, 2.4e-4 to 3.9e-4 at 1e8.
 TEST(BarValidation, StiffBodyConvergesToRigidCoupling) {
   const double t = L / 10;  // cap length
   const TetMesh mesh = to_quadratic(make_box_mesh(Vec3(0, -b / 2, -h / 2), Vec3(L + t, b / 2, h / 2), 22, 2, 3));
@@ -118,7 +123,7 @@ TEST(BarValidation, StiffBodyConvergesToRigidCoupling) {
   o.reference_model = ReferenceModel::kStiffBody;
   o.reference = Region::box(Vec3(L, -b, -h), Vec3(L + t, b, h));
   std::vector<double> gaps;
-  for (double ratio : {1e2, 1e3, 1e4, 1e6}) {
+  for (double ratio : {1e2, 1e3, 1e4, 1e5, 1e6}) {
     o.stiff_body_ratio = ratio;
     auto body = link_stiffness(mesh, kSteel, o);
     ASSERT_TRUE(body.ok()) << body.status().message();
@@ -132,7 +137,10 @@ TEST(BarValidation, StiffBodyConvergesToRigidCoupling) {
   }
   EXPECT_NEAR(gaps[0] / gaps[1], 10.0, 2.0);
   EXPECT_NEAR(gaps[1] / gaps[2], 10.0, 2.0);
-  EXPECT_LT(gaps[3], 1e-5);
+  // 10.0 here, but the bending terms' round-off (up to 1.7e-7 here) is no longer far below the gap.
+  EXPECT_GT(gaps[2] / gaps[3], 5.0);
+  // Past the model error: a round-off bound, not a 1 / ratio one (a wrong body would be off by far more).
+  EXPECT_LT(gaps[4], 1e-4);
 }
 
 TEST(BarValidation, EmptyOrOverlappingRegionsAreInvalidInput) {
