@@ -8,6 +8,7 @@
 #include "kinestat/core/types.hpp"
 #include "kinestat/core/version.hpp"
 #include "kinestat/solver/library_versions.hpp"
+#include "kinestat/solver/parallel.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -47,7 +48,8 @@ int exit_code_for(const Status& status) {
 }
 
 int report_failure(Context& ctx, const std::string& command, const Status& status) {
-  ctx.err << "kinestat" << (command.empty() ? "" : " " + command) << ": " << status.message() << "\n";
+  ctx.failure = "kinestat" + (command.empty() ? "" : " " + command) + ": " + status.message();
+  ctx.err << ctx.failure << "\n";
   return exit_code_for(status);
 }
 
@@ -58,6 +60,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text, "print the version of kinestat and of the libraries it uses");
   Context ctx{out, err};
+  for (const std::string& a : args) ctx.command_line += (ctx.command_line.empty() ? "" : " ") + a;
   // Every subcommand is listed here once.
   for (const CommandRegistrar& r : std::initializer_list<CommandRegistrar>{
            register_solve_command,
@@ -79,7 +82,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
                           Status::Invalid(fmt::format("{}; see kinestat {}--help", e.what(),
                                                       command.empty() ? "" : command + " ")));
   }
-  return ctx.exit_code;
+  return solver::finish_job(ctx.exit_code, ctx.failure);
 }
 
 }  // namespace kinestat::cli

@@ -189,6 +189,7 @@ struct FiveBarDesignArgs {
   std::string mode = "++", assembly = "up", method = "msa";
   double near_singular = mechanisms::MapOptions{}.near_singular_threshold;
   int threads = 0;
+  double max_postures = mechanisms::kDefaultMaxDesignPostures;
   std::string vti, png, json;
   bool quiet = false;
 };
@@ -230,6 +231,7 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   o.near_singular_threshold = a.near_singular;
   if (a.threads < 0) return fail(Status::Invalid("--threads must be 0 (all cores) or a positive count"));
   o.threads = a.threads;
+  o.max_postures = a.max_postures;
 
   auto ranges = parse_ranges_mm(a.region, 2, "--region", "x0:x1,y0:y1");
   if (!ranges.ok()) return fail(ranges.status());
@@ -362,6 +364,9 @@ void add_five_bar_design(CLI::App* design, Context& ctx) {
   cmd->add_option("--near-singular", a->near_singular,
                   "points whose singularity measure (0..1) is below this are not usable (default 0.01)");
   cmd->add_option("--threads", a->threads, "threads (default 0: all cores)");
+  cmd->add_option("--max-postures", a->max_postures,
+                  "refuse sweeps of more designs x region points than this (default 2e8, about 7 min on 2 cores)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--vti", a->vti, "write the design map (x = r1, y = r2 in m) as VTK ImageData (.vti)");
   cmd->add_option("--png", a->png, "write the design map as a PNG (share in %, r1 and r2 in mm)");
   cmd->add_option("--json", a->json, "write every design's shares as JSON ('-': to stdout, nothing else on stdout)");

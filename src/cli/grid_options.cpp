@@ -1,10 +1,14 @@
 #include "cli/grid_options.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <ostream>
 
 #include <fmt/format.h>
+
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::cli {
 
@@ -12,7 +16,44 @@ using mechanisms::MapRange;
 
 namespace {
 constexpr double kMm = 1e-3;  // m per mm
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// The components of a vector option, each with its quantity and the unit it is written in.
+struct Component {
+  Quantity quantity;
+  UnitOfInput unit;
+};
+
+template <int N>
+StatusOr<Eigen::Matrix<double, N, 1>> vector_option(const std::vector<double>& v, const char* option, const char* form,
+                                                    const std::array<Component, N>& parts) {
+  if (static_cast<int>(v.size()) != N) return Status::Invalid(fmt::format("{} takes {} numbers: {}", option, N, form));
+  Eigen::Matrix<double, N, 1> si;
+  for (int i = 0; i < N; ++i) {
+    const Component& c = parts[static_cast<std::size_t>(i)];
+    if (Status st = check_quantity(v[i], c.quantity, fmt::format("{} component {}", option, i + 1), c.unit); !st.ok())
+      return st;
+    si(i) = v[i] * c.unit.scale;
+  }
+  return si;
+}
+
+const Component kN{Quantity::kForce, {1.0, "N"}}, kNmm{Quantity::kMoment, {kMm, "N mm"}},
+    kMillimetre{Quantity::kLength, {kMm, "mm"}}, kDegree{Quantity::kAngle, {kDeg, "deg"}};
 }  // namespace
+
+StatusOr<Vec6> parse_wrench_option(const std::vector<double>& v, const char* option) {
+  return vector_option<6>(v, option, "Fx,Fy,Fz (N), Mx,My,Mz (N mm)", {kN, kN, kN, kNmm, kNmm, kNmm});
+}
+
+StatusOr<Vec6> parse_displacement_option(const std::vector<double>& v, const char* option) {
+  return vector_option<6>(v, option, "dx,dy,dz (mm), rx,ry,rz (deg)",
+                          {kMillimetre, kMillimetre, kMillimetre, kDegree, kDegree, kDegree});
+}
+
+StatusOr<Vec3> parse_point_option(const std::vector<double>& v, const char* option) {
+  return vector_option<3>(v, option, "x,y,z (mm)", {kMillimetre, kMillimetre, kMillimetre});
+}
 
 std::optional<double> parse_number(const std::string& s) {
   double v = 0.0;

@@ -1,5 +1,5 @@
-// Options shared by the commands that sweep a grid (map, design fivebar): ranges in mm, the
-// five-bar's modes, and the progress line on stderr.
+// Options shared by several commands (map, design fivebar, vjm): ranges in mm, loads in the command
+// line's units, the five-bar's modes, and the progress line on stderr.
 #pragma once
 
 #include <chrono>
@@ -25,6 +25,13 @@ StatusOr<mechanisms::MapRange> parse_range_mm(const std::string& text, const std
 StatusOr<std::vector<mechanisms::MapRange>> parse_ranges_mm(const std::vector<std::string>& parts,
                                                             std::size_t count, const char* option,
                                                             const char* form);
+
+// Six numbers of a load option, each checked finite and in its physical range (core/input_checks)
+// in the unit written, then converted to SI. A wrench: Fx,Fy,Fz (N), Mx,My,Mz (N mm) -> N, N m.
+// A displacement: dx,dy,dz (mm), rx,ry,rz (deg) -> m, rad. A point: x,y,z (mm) -> m.
+StatusOr<Vec6> parse_wrench_option(const std::vector<double>& v, const char* option);
+StatusOr<Vec6> parse_displacement_option(const std::vector<double>& v, const char* option);
+StatusOr<Vec3> parse_point_option(const std::vector<double>& v, const char* option);
 
 // --mode ++|+-|-+|--, --assembly up|down, --method msa|vjm into `o`.
 Status parse_five_bar_modes(const std::string& mode, const std::string& assembly, const std::string& method,

@@ -22,6 +22,7 @@
 #include "kinestat/io/fea_vtk.hpp"
 #include "kinestat/io/link_stiffness_json.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
+#include "kinestat/solver/parallel.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -112,9 +113,11 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->capture_default_str();
   add_output_options(*cmd, args->out, "kinestat-link-stiffness");
   cmd->callback([args, &ctx] {
-    // Under mpirun every rank fails alike (solver::agree_on_status): rank 0 alone says why.
+    // Under mpirun every rank fails alike (solver::agree_on_status): rank 0 alone says why. A rank
+    // that fails alone keeps its reason for solver::finish_job, which then ends the job with it.
     int rank = 0;
     auto fail = [&ctx, &rank](const Status& s) {
+      ctx.failure = "kinestat link-stiffness: " + s.message();
       ctx.exit_code = rank == 0 ? report_failure(ctx, "link-stiffness", s) : exit_code_for(s);
     };
     const solver::Backend backend = *solver::backend_from_name(args->solver);  // checked by IsMember
@@ -125,6 +128,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       if (!group.ok()) return fail(group.status());
       rank = group->rank;
       if (rank != 0) args->out = OutputOptions{.json = "", .quiet = true}, args->vtk_dir.clear();
+      // Ranks given other options would mesh, cache and solve different things.
+      if (Status s = solver::same_on_every_rank("the command line", ctx.command_line); !s.ok()) return fail(s);
     }
     if (!(args->cg_rtol > 0.0 && args->cg_rtol < 1.0))
       return fail(Status::Invalid(fmt::format("--cg-rtol {:g}: give a relative tolerance between 0 and 1 (e.g. 1e-10)",

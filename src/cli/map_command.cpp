@@ -31,7 +31,6 @@ namespace {
 using namespace kinestat::mechanisms;
 
 constexpr double kMm = 1e-3;  // m per mm
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr const char* kCommand = "map";
 
 struct MapArgs {
@@ -50,17 +49,6 @@ struct MapArgs {
   CLI::Option *mode_opt = nullptr, *assembly_opt = nullptr, *method_opt = nullptr, *region_opt = nullptr,
               *box_opt = nullptr, *wrench_opt = nullptr;
 };
-
-StatusOr<Vec6> six_numbers(const std::vector<double>& v, const char* option, const char* form) {
-  if (v.size() != 6) return Status::Invalid(fmt::format("{} takes 6 numbers: {}", option, form));
-  return Vec6(v.data());
-}
-
-// A wrench given as Fx,Fy,Fz (N), Mx,My,Mz (N mm) -> N, N m.
-Vec6 wrench_si(Vec6 w) {
-  w.tail<3>() *= kMm;
-  return w;
-}
 
 // What the target needs before the grid: the kernel, the ranges, the curves, words for messages.
 struct MapSetup {
@@ -87,9 +75,9 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
   if (Status st = parse_five_bar_modes(a.mode, a.assembly, a.method, o); !st.ok()) return st;
   MapSetup s;
   if (!a.load.empty()) {
-    auto w = six_numbers(a.load, "--load", "Fx,Fy,Fz (N), Mx,My,Mz (N mm) at P");
+    auto w = parse_wrench_option(a.load, "--load");
     if (!w.ok()) return w.status();
-    o.load = wrench_si(*w);
+    o.load = *w;
     s.with_load = true;
   }
   auto box = five_bar_workspace_box(o.params, o.mode, o.assembly);
@@ -129,16 +117,13 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   s.ranges = {(*r)[0], (*r)[1], (*r)[2]};
   OrthoglideKernelOptions o;
   if (!a.load.empty()) {
-    auto d = six_numbers(a.load, "--load", "dx,dy,dz (mm), rx,ry,rz (deg)");
+    auto d = parse_displacement_option(a.load, "--load");
     if (!d.ok()) return d.status();
-    Vec6 disp = *d;
-    disp.head<3>() *= kMm;
-    disp.tail<3>() *= kDeg;
-    o.displacement = disp;
+    o.displacement = *d;
   } else if (!a.wrench.empty()) {
-    auto w = six_numbers(a.wrench, "--wrench", "Fx,Fy,Fz (N), Mx,My,Mz (N mm)");
+    auto w = parse_wrench_option(a.wrench, "--wrench");
     if (!w.ok()) return w.status();
-    o.wrench = wrench_si(*w);
+    o.wrench = *w;
   }
   s.with_load = o.displacement || o.wrench;
   // Read last: a model with fea: springs may mesh and solve its links.
@@ -247,6 +232,20 @@ int run_map(MapArgs& a, Context& ctx) {
   if (map->status_counts[static_cast<int>(MapPointStatus::kUnreachable)] == grid->num_points())
     return fail(Status::Invalid(fmt::format("no reachable point in {} ({}) for {}: {}; nothing written",
                                             setup->range_option, region, map->description, setup->workspace_hint)));
+  // Reachable points, none with a stiffness (a load past buckling everywhere, a region on a
+  // singular locus): a summary of NaN would look like a result.
+  const auto count = [&map](MapPointStatus s) { return map->status_counts[static_cast<int>(s)]; };
+  if (count(MapPointStatus::kOk) + count(MapPointStatus::kNearSingular) == 0) {
+    const std::size_t failed = count(MapPointStatus::kFailed), singular = count(MapPointStatus::kSingular);
+    const std::string what = fmt::format("no point of {} ({}) has a stiffness: {} failed, {} singular, {} unreachable; "
+                                         "nothing written",
+                                         setup->range_option, region, failed, singular,
+                                         count(MapPointStatus::kUnreachable));
+    if (failed > 0)
+      return fail(Status::NotConverged(what + ". The loaded equilibrium was not found at any posture: the load may "
+                                              "exceed the buckling load; give a smaller --load or --wrench"));
+    return fail(Status::Singular(what + "; choose a region away from the singular loci"));
+  }
   map->curves = std::move(setup->curves);
 
   std::vector<std::string> written;
@@ -307,7 +306,8 @@ void register_map_command(CLI::App& app, Context& ctx) {
                   "stiffness threshold K in N/mm: the summary gives the area/volume where k_t_min >= K");
   cmd->add_option("--near-singular", a->near_singular,
                   "points whose singularity measure (0..1) is below this are near-singular (default 0.01)");
-  cmd->add_option("--max-points", a->max_points, "refuse grids with more points than this (default 2000000)");
+  cmd->add_option("--max-points", a->max_points, "refuse grids with more points than this (default 2000000)")
+      ->check(CLI::PositiveNumber);  // a size_t would take -1 as 2^64 - 1
   cmd->add_option("--threads", a->threads, "threads (default 0: all cores)");
   cmd->add_option("--vti", a->vti, "write the map as VTK ImageData (.vti) for ParaView");
   cmd->add_option("--json", a->json, "write the map as JSON ('-': to stdout, nothing else on stdout)");

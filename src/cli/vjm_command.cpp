@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/command_output.hpp"
+#include "cli/grid_options.hpp"
 #include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/io/vjm_results_json.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
@@ -34,34 +35,25 @@ std::string stiffness_report(const CartesianStiffness& K, const std::string& wha
   return cartesian_stiffness_report(K, "Cartesian stiffness (" + what + ")");
 }
 
-template <int N>
-StatusOr<Eigen::Matrix<double, N, 1>> vector_option(const std::vector<double>& v, const char* option, const char* form) {
-  if (static_cast<int>(v.size()) != N) return Status::Invalid(fmt::format("{} takes {} numbers: {}", option, N, form));
-  return Eigen::Matrix<double, N, 1>(v.data());
-}
-
 int run_vjm(const VjmArgs& a, Context& ctx) {
   auto bad = [&](const Status& s) { return report_failure(ctx, "vjm", s); };
   // The options first, in SI: a bad one is reported before any result.
   std::optional<Vec3> point;
   if (!a.point.empty()) {
-    StatusOr<Vec3> p = vector_option<3>(a.point, "--point", "x,y,z in mm");
+    StatusOr<Vec3> p = parse_point_option(a.point, "--point");
     if (!p.ok()) return bad(p.status());
-    point = *p * kMm;
+    point = *p;
   }
   std::optional<Vec6> displacement, wrench;
   if (!a.load.empty()) {
-    StatusOr<Vec6> d = vector_option<6>(a.load, "--load", "dx,dy,dz in mm and rx,ry,rz in deg");
+    StatusOr<Vec6> d = parse_displacement_option(a.load, "--load");
     if (!d.ok()) return bad(d.status());
     displacement = *d;
-    displacement->head<3>() *= kMm;
-    displacement->tail<3>() *= kDeg;
   }
   if (!a.wrench.empty()) {
-    StatusOr<Vec6> w = vector_option<6>(a.wrench, "--wrench", "Fx,Fy,Fz in N and Mx,My,Mz in N mm");
+    StatusOr<Vec6> w = parse_wrench_option(a.wrench, "--wrench");
     if (!w.ok()) return bad(w.status());
     wrench = *w;
-    wrench->tail<3>() *= kMm;  // N mm -> N m
   }
   StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
   if (!model.ok()) return bad(model.status());

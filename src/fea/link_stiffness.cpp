@@ -17,6 +17,7 @@
 #include "fea/elasticity_assembly.hpp"
 #include "kinestat/fea/tet_element.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
+#include "kinestat/solver/parallel.hpp"
 
 namespace kinestat::fea {
 

@@ -5,6 +5,7 @@
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/result_cache.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
+#include "kinestat/solver/parallel.hpp"
 
 namespace kinestat::fea {
 namespace {

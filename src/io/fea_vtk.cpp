@@ -2,6 +2,8 @@
 
 #include "io/vtk_files.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -53,6 +55,14 @@ Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const f
   for (int i = 0; i < mesh.num_nodes(); ++i) u->SetTuple(i, result.displacement[k][i].data());
   grid->GetPointData()->AddArray(u);
   grid->GetPointData()->SetActiveVectors("displacement");
+  double size = 0.0, largest = 0.0;
+  for (int i = 0; i < mesh.num_nodes(); ++i) largest = std::max(largest, result.displacement[k][i].norm());
+  if (grid->GetNumberOfPoints() > 0) {
+    double b[6];
+    grid->GetBounds(b);
+    size = std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
+  }
+  add_display_hints(*grid, "", size, largest);
   vtkNew<vtkDoubleArray> vm;
   vm->SetName("von_mises");
   vm->SetNumberOfTuples(mesh.num_elements());

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <vtkCellData.h>
 
 #include "io/vti_image.hpp"
 #include "kinestat/io/map_json.hpp"
@@ -65,11 +66,23 @@ json design_sweep_to_json(const FiveBarDesignSweep& s) {
 }
 
 Status write_design_sweep_vti(const std::string& path, const FiveBarDesignSweep& s) {
-  auto image = make_vti_image(s.designs);
-  for (const auto& info : kDesignShares) add_vti_point_array(image, fmt::format("{} (1)", info.name), shares(s, info.count));
+  // One cell per design, centred on its (r1, r2): a design's value fills its cell instead of being
+  // blended with its neighbours' across a cell, as point data would be.
+  mechanisms::MapGrid cells = s.designs;
+  for (int i = 0; i < 2; ++i) {
+    cells.origin(i) -= 0.5 * cells.spacing(i);
+    cells.dimensions[i] += 1;
+  }
+  auto image = make_vti_image(cells);
+  for (const auto& info : kDesignShares) {
+    add_vti_cell_array(image, info.name, shares(s, info.count));
+    add_vti_string(image, fmt::format("{}_unit", info.name), "1");
+  }
   std::vector<double> worst;
   for (const auto& r : s.results) worst.push_back(r.k_t_min_worst);
-  add_vti_point_array(image, "k_t_min_worst (N/m)", worst);
+  add_vti_cell_array(image, "k_t_min_worst", worst);
+  add_vti_string(image, "k_t_min_worst_unit", "N/m");
+  image->GetCellData()->SetActiveScalars(kDesignShares[2].name);  // the share the best design is chosen by
   add_vti_string(image, "length_unit", "m");
   add_vti_string(image, "axes", "x: r1, y: r2 (m)");
   add_vti_string(image, "description", s.description);

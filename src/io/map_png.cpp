@@ -17,6 +17,17 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <vtkCellType.h>
+#include <vtkContourFilter.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStripper.h>
+#include <vtkUnstructuredGrid.h>
 
 #include "io/map_png_layout.hpp"
 
@@ -268,6 +279,7 @@ void draw(const std::vector<PlotField2D>& fields, const PlotOptions& o, const Ma
     plwind(w.x0, w.x1, w.y0, w.y1);
     draw_field(fields[k], w, o.log_scale, range);
     draw_curves(o.curves, line_width);
+    draw_curves(fields[k].curves, line_width);
     plcol0(kBlack);
     // Room per tick label: about five characters across, two lines up.
     plbox("bcnst", tick_step(w.x1 - w.x0, (b.x1 - b.x0) * o.width, 5.0 * layout.char_px), 0, "bcnstv",
@@ -362,6 +374,47 @@ Status write_png_map(const std::string& path, const PlotField2D& field, const Pl
 
 Status write_png_sheet(const std::string& path, const std::vector<PlotField2D>& fields, const PlotOptions& options) {
   return write_png(path, fields, options);
+}
+
+// VTK's contour filter does the contouring on the cells without a NaN corner; vtkStripper joins
+// its segments into lines.
+std::vector<std::array<double, 2>> contour_lines(const PlotField2D& p, double level) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto scalars = vtkSmartPointer<vtkDoubleArray>::New();
+  for (int j = 0; j < p.ny; ++j)
+    for (int i = 0; i < p.nx; ++i) {
+      points->InsertNextPoint(p.x0 + i * p.dx, p.y0 + j * p.dy, 0.0);
+      const double v = p.values[i + static_cast<std::size_t>(p.nx) * j];
+      scalars->InsertNextValue(std::isnan(v) ? 0.0 : v);  // only read by cells without NaN corners
+    }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  grid->GetPointData()->SetScalars(scalars);
+  for (int j = 0; j + 1 < p.ny; ++j)
+    for (int i = 0; i + 1 < p.nx; ++i) {
+      const vtkIdType ids[4] = {i + p.nx * j, i + 1 + p.nx * j, i + 1 + p.nx * (j + 1), i + p.nx * (j + 1)};
+      if (std::none_of(ids, ids + 4, [&p](vtkIdType id) { return std::isnan(p.values[static_cast<std::size_t>(id)]); }))
+        grid->InsertNextCell(VTK_QUAD, 4, ids);
+    }
+  std::vector<std::array<double, 2>> lines;
+  if (grid->GetNumberOfCells() == 0) return lines;
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputData(grid);
+  contour->SetValue(0, level);
+  vtkNew<vtkStripper> stripper;
+  stripper->SetInputConnection(contour->GetOutputPort());
+  stripper->Update();
+  vtkPolyData* out = stripper->GetOutput();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c) {
+    out->GetCellPoints(c, ids);
+    if (!lines.empty()) lines.push_back({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
+      const double* x = out->GetPoint(ids->GetId(k));
+      lines.push_back({x[0], x[1]});
+    }
+  }
+  return lines;
 }
 
 }  // namespace kinestat::io

@@ -1,7 +1,9 @@
 #include "kinestat/io/map_vti.hpp"
 
 #include <fmt/format.h>
+#include <vtkCellData.h>
 #include <vtkDataSetAttributes.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkUnsignedCharArray.h>
@@ -12,10 +14,7 @@ namespace kinestat::io {
 
 using mechanisms::MapPointStatus;
 
-std::string vti_array_name(mechanisms::MapField f) {
-  const mechanisms::MapFieldInfo& info = mechanisms::field_info(f);
-  return fmt::format("{} ({})", info.name, info.unit);
-}
+std::string vti_array_name(mechanisms::MapField f) { return mechanisms::field_info(f).name; }
 
 Status write_map_vti(const std::string& path, const mechanisms::WorkspaceMap& map, const MapVtiOptions& options) {
   const auto n = static_cast<vtkIdType>(map.grid.num_points());
@@ -33,7 +32,25 @@ Status write_map_vti(const std::string& path, const mechanisms::WorkspaceMap& ma
     for (vtkIdType i = 0; i < n; ++i)
       ghost->SetValue(i, mechanisms::has_values(map.status[i]) ? 0 : vtkDataSetAttributes::HIDDENPOINT);
     image->GetPointData()->AddArray(ghost);
+    // Cells that touch a hidden point, hidden too: the Surface representation and every filter
+    // (Slice, Contour, Threshold) then leave them out instead of painting them in the NaN colour.
+    vtkNew<vtkUnsignedCharArray> hidden_cells;
+    hidden_cells->SetName(vtkDataSetAttributes::GhostArrayName());
+    hidden_cells->SetNumberOfTuples(image->GetNumberOfCells());
+    vtkNew<vtkIdList> ids;
+    for (vtkIdType c = 0; c < image->GetNumberOfCells(); ++c) {
+      image->GetCellPoints(c, ids);
+      bool hide = false;
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds() && !hide; ++k)
+        hide = !mechanisms::has_values(map.status[static_cast<std::size_t>(ids->GetId(k))]);
+      hidden_cells->SetValue(c, hide ? vtkDataSetAttributes::HIDDENCELL : 0);
+    }
+    image->GetCellData()->AddArray(hidden_cells);
   }
+  // ParaView colours by the active scalars on opening: the weakest-direction stiffness, the map's
+  // headline field, rather than the first array in the file.
+  for (const mechanisms::FieldValues& f : map.fields)
+    if (f.field == mechanisms::MapField::kTranslationalMin) image->GetPointData()->SetActiveScalars(vti_array_name(f.field).c_str());
 
   add_vti_string(image, "length_unit", "m");
   add_vti_string(image, "description", map.description);

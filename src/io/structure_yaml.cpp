@@ -18,6 +18,20 @@
 namespace kinestat::io {
 namespace {
 
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+// The local y axis of a beam along `d` rolled by `roll` (rad) about its axis, as Frame3DD defines it
+// (coord_trans with z vertical): unrolled, local y is global z x d normalized, and global y for an
+// exactly vertical member only (kinestat's default switches within 2.6 deg of vertical); the roll
+// turns local y towards local z. Used as the beam's orientation vector.
+Vec3 roll_orientation(const Vec3& d, double roll) {
+  const Vec3 x = d.normalized();
+  if (std::abs(x.z()) == 1.0) return Vec3(-x.z() * std::sin(roll), std::cos(roll), 0.0);
+  const Vec3 y0 = Vec3::UnitZ().cross(x).normalized();
+  const Vec3 z0 = x.cross(y0);
+  return std::cos(roll) * y0 + std::sin(roll) * z0;
+}
+
 // One parse of one file. Every check fails through fail(), which names the file, the line of the
 // offending YAML node, the item and the fix.
 class Parser : public YamlFields {
@@ -30,9 +44,10 @@ class Parser : public YamlFields {
     if (!root.IsMap())
       fail(root, "file", "the top level is not a map of keys; write 'nodes:', 'beams:', ... at the start of lines");
     check_keys(root, "file",
-               {"units", "title", "nodes", "materials", "sections", "beams", "joints", "rigid_links", "supports",
-                "load_cases", "report"});
+               {"units", "title", "beam_theory", "nodes", "materials", "sections", "beams", "joints", "rigid_links",
+                "supports", "load_cases", "report"});
     units_ = units(root["units"]);
+    if (const YAML::Node t = root["beam_theory"]; t.IsDefined()) default_theory_ = theory(t, "file", "beam_theory");
     s_.set_source(file());
     if (const YAML::Node t = root["title"]; t.IsDefined()) s_.set_title(text(t, "file", "title"));
     for_each(root, "nodes", true, [&](const YAML::Node& n, int i) { parse_node(n, i); });
@@ -156,6 +171,7 @@ class Parser : public YamlFields {
       s.J = property("J", Quantity::kInertia);
       s.Asy = shear_area("Asy");
       s.Asz = shear_area("Asz");
+      if (s.Asy > 0 || s.Asz > 0) sections_with_shear_areas_.insert(s_.sections().size());
     } else {
       if (t == "circle") check_keys(n, item, {"id", "type", "d"});
       if (t == "tube") check_keys(n, item, {"id", "type", "d", "t"});
@@ -170,7 +186,7 @@ class Parser : public YamlFields {
   void parse_beam(const YAML::Node& n, int i) {
     const std::string id = entry_id(n, "beam", i, beam_ids_);
     const std::string item = fmt::format("beam '{}'", id);
-    check_keys(n, item, {"id", "nodes", "material", "section", "orientation", "theory", "releases"});
+    check_keys(n, item, {"id", "nodes", "material", "section", "orientation", "roll", "theory", "releases"});
     msa::Beam b;
     b.id = id;
     b.source = source(n);
@@ -198,16 +214,22 @@ class Parser : public YamlFields {
              "parallel to it");
       }
     }
-    if (const YAML::Node t = n["theory"]; t.IsDefined()) {
-      const std::string th = text(t, item, "theory");
-      if (th == "euler-bernoulli") {
-        b.theory = BeamTheory::kEulerBernoulli;
-      } else if (th == "timoshenko") {
-        b.theory = BeamTheory::kTimoshenko;
-      } else {
-        fail(t, item, fmt::format("unknown theory '{}'; use euler-bernoulli or timoshenko", th));
-      }
+    if (const YAML::Node r = n["roll"]; r.IsDefined()) {
+      if (n["orientation"].IsDefined())
+        fail(r, item, "give either 'orientation' or 'roll', not both; they set the same local axes");
+      const double roll = value(r, item, "roll", Quantity::kAngle, {kDegree, "deg"});
+      b.orientation = roll_orientation(p2 - p1, roll);
     }
+    const YAML::Node th = n["theory"];
+    b.theory = th.IsDefined() ? theory(th, item, "theory") : default_theory_;
+    // Shear areas written by hand are meant to be used: an Euler-Bernoulli beam would drop them
+    // without a word. (The standard shapes always carry theirs, used only by Timoshenko beams.)
+    if (b.theory == BeamTheory::kEulerBernoulli && sections_with_shear_areas_.count(b.section))
+      fail(th.IsDefined() ? th : sec, item,
+           fmt::format("section '{}' gives shear areas Asy/Asz, which Euler-Bernoulli beams ignore; write theory: "
+                       "timoshenko on this beam (or beam_theory: timoshenko at the top of the file), or remove "
+                       "Asy/Asz from the section",
+                       s_.sections()[b.section].id));
     if (const YAML::Node r = n["releases"]; r.IsDefined()) {
       check_map(r, item + " releases", {"end1", "end2"});
       for (int end = 0; end < 2; ++end) {
@@ -225,6 +247,13 @@ class Parser : public YamlFields {
       }
     }
     s_.add_beam(b);
+  }
+
+  BeamTheory theory(const YAML::Node& t, const std::string& item, const char* key) {
+    const std::string th = text(t, item, key);
+    if (th == "euler-bernoulli") return BeamTheory::kEulerBernoulli;
+    if (th == "timoshenko") return BeamTheory::kTimoshenko;
+    fail(t, item, fmt::format("unknown {} '{}'; use euler-bernoulli or timoshenko", key, th));
   }
 
   std::pair<int, int> node_pair(const YAML::Node& v, const std::string& item) {
@@ -342,6 +371,8 @@ class Parser : public YamlFields {
 
   FileUnits units_;
   double zero_length_ = 0.0;
+  BeamTheory default_theory_ = BeamTheory::kEulerBernoulli;  // `beam_theory:`
+  std::set<std::size_t> sections_with_shear_areas_;          // sections that give Asy/Asz by hand
   msa::Structure s_;
   std::unordered_map<std::string, int> node_index_;  // a hash map: large frames reference nodes often
   std::set<std::string> node_ids_, material_ids_, section_ids_, beam_ids_, joint_ids_, link_ids_, case_names_;

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include <fmt/format.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
@@ -20,12 +21,22 @@ vtkSmartPointer<vtkImageData> make_vti_image(const mechanisms::MapGrid& g) {
   return image;
 }
 
-void add_vti_point_array(vtkImageData* image, const std::string& name, const std::vector<double>& values) {
-  vtkNew<vtkDoubleArray> a;
+namespace {
+vtkSmartPointer<vtkDoubleArray> double_array(const std::string& name, const std::vector<double>& values) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name.c_str());
   a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
   for (std::size_t i = 0; i < values.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), values[i]);
-  image->GetPointData()->AddArray(a);
+  return a;
+}
+}  // namespace
+
+void add_vti_point_array(vtkImageData* image, const std::string& name, const std::vector<double>& values) {
+  image->GetPointData()->AddArray(double_array(name, values));
+}
+
+void add_vti_cell_array(vtkImageData* image, const std::string& name, const std::vector<double>& values) {
+  image->GetCellData()->AddArray(double_array(name, values));
 }
 
 void add_vti_string(vtkImageData* image, const std::string& name, const std::string& value) {

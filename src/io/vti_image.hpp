@@ -16,6 +16,8 @@ namespace kinestat::io {
 vtkSmartPointer<vtkImageData> make_vti_image(const mechanisms::MapGrid& grid);
 // A point array of doubles (NaN stays NaN: no value).
 void add_vti_point_array(vtkImageData* image, const std::string& name, const std::vector<double>& values);
+// A cell array of doubles, one value per cell (cells in x-fastest order).
+void add_vti_cell_array(vtkImageData* image, const std::string& name, const std::vector<double>& values);
 // A one-string field-data array (units, descriptions).
 void add_vti_string(vtkImageData* image, const std::string& name, const std::string& value);
 // Writes .vti; kInvalidInput naming the path when it cannot.

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <vtkDataObject.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkStringArray.h>
@@ -32,6 +33,21 @@ void add_units(vtkDataObject& data, const std::vector<std::pair<std::string, std
   a->SetName("units");
   for (const auto& [quantity, unit] : units) a->InsertNextValue(quantity + ": " + unit);
   data.GetFieldData()->AddArray(a);
+}
+
+void add_display_hints(vtkDataObject& data, const std::string& name, double model_size, double max_displacement) {
+  if (!name.empty()) {
+    vtkNew<vtkStringArray> a;
+    a->SetName("load_case");
+    a->InsertNextValue(name);
+    data.GetFieldData()->AddArray(a);
+  }
+  if (max_displacement > 0.0 && model_size > 0.0) {
+    vtkNew<vtkDoubleArray> w;
+    w->SetName("warp_factor");
+    w->InsertNextValue(0.1 * model_size / max_displacement);
+    data.GetFieldData()->AddArray(w);
+  }
 }
 
 Status write_pvd(const std::string& path, const std::vector<PvdEntry>& entries) {

@@ -16,6 +16,11 @@ namespace kinestat::io {
 // units travel with the file (ParaView lists field data in its Information panel).
 void add_units(vtkDataObject& data, const std::vector<std::pair<std::string, std::string>>& units);
 
+// Field data "warp_factor": the Warp By Vector scale factor that draws the largest displacement
+// `max_displacement` (m) as a tenth of the model's size `model_size` (m), so that 1e-9 m of a unit
+// load is seen without guessing; absent when nothing moves. With "load_case" = `name` (may be empty).
+void add_display_hints(vtkDataObject& data, const std::string& name, double model_size, double max_displacement);
+
 struct PvdEntry {
   std::string file;  // relative to the .pvd's folder
   std::string name;  // shown by ParaView

@@ -92,6 +92,7 @@ void add_load_case(const msa::Structure& s, const msa::LoadCaseResult& r, vtkUns
   pd->AddArray(node_array("reaction_force", r.reaction, false));
   pd->AddArray(node_array("reaction_moment", r.reaction, true));
   pd->SetActiveVectors("displacement");  // Warp By Vector picks it up directly
+  add_display_hints(*grid, r.name, s.length_scale(), r.max_translation);
 
   const vtkIdType cells = grid->GetNumberOfCells();
   auto end_forces = double_array("end_forces", 12, cells);

@@ -25,7 +25,38 @@ std::string axis_text(const MapGrid& g, int i) {
   return lo == hi ? fmt::format("{} = {:g} mm", "xyz"[i], lo) : fmt::format("{} {:g}:{:g} mm", "xyz"[i], lo, hi);
 }
 
+// The picture's plane: axes a (across) and b (up), the slicing axis c, and the slices drawn (at
+// most nine panels, spread over the grid's slices).
+struct PngPlanes {
+  int a = 0, b = 1, c = 2;
+  std::vector<int> slices;
+};
+
+PngPlanes png_planes(const MapGrid& g) {
+  PngPlanes p;
+  if (g.num_varying_axes() == 2) {
+    if (g.dimensions[0] == 1) p.a = 1, p.b = 2, p.c = 0;
+    else if (g.dimensions[1] == 1) p.a = 0, p.b = 2, p.c = 1;
+  }
+  const int nc = g.dimensions[p.c];
+  constexpr int kMaxPanels = 9;
+  for (int k = 0; k < std::min(nc, kMaxPanels); ++k)
+    p.slices.push_back(nc <= kMaxPanels ? k : static_cast<int>(std::lround(k * (nc - 1.0) / (kMaxPanels - 1))));
+  return p;
+}
+
 }  // namespace
+
+std::string workspace_map_png_title(const WorkspaceMap& map, MapField field) {
+  const MapGrid& g = map.grid;
+  const PngPlanes p = png_planes(g);
+  std::string title = fmt::format("{}: {}", map.description, field_info(field).name);
+  // Which part of the grid the picture is: the fixed coordinate of a slice, the slices of a sheet.
+  const int nc = g.dimensions[p.c];
+  if (nc == 1 && g.num_varying_axes() == 2) title += fmt::format(", slice {}", axis_text(g, p.c));
+  if (nc > 1) title += fmt::format("\n{} of the {} slices {}", p.slices.size(), nc, axis_text(g, p.c));
+  return title;
+}
 
 MapFieldDisplay map_field_display(MapField f) {
   switch (f) {
@@ -45,23 +76,16 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
     return Status::Invalid(fmt::format("{}: the map has no field {} (the deflections need a load)", path,
                                        field_info(field).name));
   const MapGrid& g = map.grid;
-  // The plane's two axes (a, b) and the slicing axis c.
-  int a = 0, b = 1, c = 2;
-  if (g.num_varying_axes() == 2) {
-    if (g.dimensions[0] == 1) a = 1, b = 2, c = 0;
-    else if (g.dimensions[1] == 1) a = 0, b = 2, c = 1;
-  }
+  const PngPlanes planes = png_planes(g);
+  const int a = planes.a, b = planes.b, c = planes.c;
   const MapFieldDisplay d = map_field_display(field);
   const std::vector<double>& values = found->values;
-  std::vector<int> slices;
+  const std::vector<int>& slices = planes.slices;
   const int nc = g.dimensions[c];
-  constexpr int kMaxPanels = 9;
-  for (int k = 0; k < std::min(nc, kMaxPanels); ++k)
-    slices.push_back(nc <= kMaxPanels ? k : static_cast<int>(std::lround(k * (nc - 1.0) / (kMaxPanels - 1))));
   const std::size_t stride[3] = {1, static_cast<std::size_t>(g.dimensions[0]),
                                  static_cast<std::size_t>(g.dimensions[0]) * g.dimensions[1]};
-  std::vector<PlotField2D> panels;
-  for (int k : slices) {
+  // Slice k of a field's values, in plot units.
+  const auto slice = [&](const std::vector<double>& field_values, double scale, int k) {
     PlotField2D p;
     p.nx = g.dimensions[a];
     p.ny = g.dimensions[b];
@@ -72,13 +96,24 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
     p.values.resize(static_cast<std::size_t>(p.nx) * p.ny);
     for (int j = 0; j < p.ny; ++j)
       for (int i = 0; i < p.nx; ++i)
-        p.values[i + static_cast<std::size_t>(p.nx) * j] = values[i * stride[a] + j * stride[b] + k * stride[c]] * d.scale;
+        p.values[i + static_cast<std::size_t>(p.nx) * j] =
+            field_values[i * stride[a] + j * stride[b] + k * stride[c]] * scale;
+    return p;
+  };
+  // The border of the region stiffer than --min-stiffness: the k_t_min = K contour, whatever field
+  // is drawn (one legend entry; the lines differ per slice).
+  const FieldValues* kt = map.find(MapField::kTranslationalMin);
+  const bool contour = map.min_stiffness.has_value() && kt != nullptr;
+  std::vector<PlotField2D> panels;
+  for (int k : slices) {
+    PlotField2D p = slice(values, d.scale, k);
     if (nc > 1) p.title = fmt::format("{} = {:g} mm", "xyz"[c], (g.origin(c) + k * g.spacing(c)) / kMm);
+    if (contour) p.curves.push_back({contour_lines(slice(kt->values, 1.0, k), *map.min_stiffness), "", 1});
     panels.push_back(std::move(p));
   }
   PlotOptions o;
   const char* name = field_info(field).name;
-  o.title = fmt::format("{}: {}", map.description, name);
+  o.title = workspace_map_png_title(map, field);
   o.x_label = fmt::format("{} (mm)", "xyz"[a]);
   o.y_label = fmt::format("{} (mm)", "xyz"[b]);
   o.colorbar_label = fmt::format("{} ({})", name, d.unit);
@@ -93,6 +128,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
     }
     o.curves.push_back(std::move(curve));
   }
+  if (contour)  // the legend's entry; the lines are the panels'
+    o.curves.push_back({{}, fmt::format("k_t_min = {:g} N/mm (--min-stiffness)", *map.min_stiffness * kMm), 1});
   if (panels.size() == 1) return write_png_map(path, panels.front(), o);
   return write_png_sheet(path, panels, o);
 }

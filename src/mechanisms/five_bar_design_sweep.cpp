@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 #include <fmt/format.h>
+
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::mechanisms {
 namespace {
@@ -51,6 +54,21 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
   const double s2 = vary2 ? (o.r2.hi - o.r2.lo) / (o.steps - 1) : 0.0;
   // An axis of one design gets the other's spacing (or 1 mm): a grid's spacing is positive.
   d.spacing = Vec3(vary1 ? s1 : (vary2 ? s2 : 1e-3), vary2 ? s2 : (vary1 ? s1 : 1e-3), 1e-3);
+  // Counted before anything runs: a sweep of hours is a choice to make, not a typo to start. The
+  // time is estimated at 2.5e5 region points per second and thread (benchmarks/README.md).
+  const double designs = static_cast<double>(d.dimensions[0]) * d.dimensions[1];
+  const double postures = designs * static_cast<double>(n_region);
+  const int threads = o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const double hours = postures / (2.5e5 * threads) / 3600.0;
+  if (Status s = check_size(postures, o.max_postures,
+                            fmt::format("{:g} designs x {} region points", designs, n_region), "postures",
+                            fmt::format("that is about {} on {} thread{}; sweep fewer designs (steps) or a coarser "
+                                        "region, or raise the limit (--max-postures, max_postures)",
+                                        hours >= 1 ? fmt::format("{:.2g} h", hours)
+                                                   : fmt::format("{:.2g} min", hours * 60.0),
+                                        threads, threads > 1 ? "s" : ""));
+      !s.ok())
+    return s;
   out.region = o.region;
   out.near_singular_threshold = o.near_singular_threshold;
   out.min_stiffness = o.min_stiffness;

@@ -43,6 +43,25 @@ StatusOr<DofMap> build_dof_map(const Structure& s) {
     for (int i = 0; i < 6; ++i) fixed[sup.node][i] = fixed[sup.node][i] || sup.fixed[i];
   }
 
+  // A node that no beam, joint or rigid link reaches is held by nothing in the dofs its supports leave
+  // free (with no element at all, CHOLMOD would only say "analysis failed"): name it.
+  std::vector<bool> connected(nn, false);
+  for (const auto& b : s.beams()) connected[b.node1] = connected[b.node2] = true;
+  for (const auto& j : s.joints()) connected[j.node1] = connected[j.node2] = true;
+  for (const auto& r : s.rigid_links()) connected[r.master] = connected[r.slave] = true;
+  for (int n = 0; n < nn; ++n) {
+    if (connected[n]) continue;
+    std::string free;
+    for (int i = 0; i < 6; ++i)
+      if (!fixed[n][i]) free += fmt::format("{}{}", free.empty() ? "" : " ", dof_name(i));
+    if (!free.empty())
+      return Status::Invalid(at_source(s.nodes()[n].source,
+                                       fmt::format("node '{}' is connected to no beam, joint or rigid link, so nothing "
+                                                   "holds its dofs {}: connect it to the structure, fix all its dofs "
+                                                   "or remove it",
+                                                   s.nodes()[n].id, free)));
+  }
+
   // Ties: rigid links, and the rigid components of joints (slave = the unsupported node).
   for (const auto& r : s.rigid_links()) map.ties.push_back({r.master, r.slave, r.mask, r.frame, -1, r.source});
   for (size_t j = 0; j < s.joints().size(); ++j) {

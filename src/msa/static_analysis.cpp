@@ -1,5 +1,6 @@
 #include "kinestat/msa/static_analysis.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -65,12 +66,41 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
   return Status::Ok();
 }
 
+// The residual K u - f with each tied slave's share moved to its master. At a slave, K u - f is the
+// force the tie exerts on it; by virtual work (u_s = M u_m in the tied components) the tie exerts
+// -M' of it on the master, so the support of a master balances residual_m + M' residual_s. Without
+// this a supported master of a rigid link reported no reaction at all. Deepest slaves go first, so
+// a chain of ties carries its share all the way to the supported end.
+VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& residual) {
+  VecX carried = residual;
+  const int nn = static_cast<int>(s.nodes().size());
+  std::vector<int> depth(nn, 0), order;
+  for (int n = 0; n < nn; ++n) {
+    for (int m = n; map.slave_of_tie[m] >= 0; m = map.ties[map.slave_of_tie[m]].master) ++depth[n];
+    if (depth[n] > 0) order.push_back(n);
+  }
+  std::sort(order.begin(), order.end(), [&depth](int a, int b) { return depth[a] > depth[b]; });
+  for (int n : order) {
+    const auto& tie = map.ties[map.slave_of_tie[n]];
+    const Mat6 R = rotation6(tie.frame);
+    Vec6 tied = R.transpose() * carried.segment<6>(6 * n);
+    for (int i = 0; i < 6; ++i)
+      if (!tie.mask[i]) tied(i) = 0.0;  // the free components are the slave's own (zero at equilibrium)
+    const Vec6 on_slave = R * tied;
+    const Mat6 A = rigid_transfer(s.nodes()[n].position - s.nodes()[tie.master].position);
+    carried.segment<6>(6 * tie.master) += A.transpose() * on_slave;
+    carried.segment<6>(6 * n) -= on_slave;
+  }
+  return carried;
+}
+
 LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCase& lc, const VecX& u, const VecX& f,
                             const VecX& u0) {
   LoadCaseResult r;
   r.name = lc.name;
   const int nn = static_cast<int>(s.nodes().size());
   const VecX residual = sys.K * u - f;  // reactions at supports, constraint forces at tied nodes
+  const VecX support_residual = carry_ties_to_masters(s, sys.map, residual);
   r.displacement.resize(nn);
   r.reaction.assign(nn, Vec6::Zero());
   // Scale of the loads and reactions, each term taken on its own (not their net sum at a node, which
@@ -81,7 +111,7 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   double scale = 0.0;
   for (int n = 0; n < nn; ++n) {
     r.displacement[n] = u.segment<6>(6 * n);
-    if (sys.map.supported_node[n]) r.reaction[n] = residual.segment<6>(6 * n);
+    if (sys.map.supported_node[n]) r.reaction[n] = support_residual.segment<6>(6 * n);
     const double t = r.displacement[n].head<3>().norm();
     if (t > r.max_translation || r.max_translation_node < 0) {
       r.max_translation = t;
@@ -124,6 +154,20 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
     r.joint_forces.push_back(force);
   }
   return r;
+}
+
+// Loads and reactions that do not balance mean a wrong answer (a lost reaction, a factor that
+// round-off spoiled), never a result to print with a footnote.
+Status check_equilibrium(const Structure& s, const std::vector<LoadCaseResult>& cases, double bound) {
+  for (const auto& c : cases)
+    if (!(c.equilibrium_error <= bound))
+      return Status::Internal(at_source(
+          s.source(), fmt::format("load case '{}': loads and reactions do not balance (equilibrium error {:.3g}, bound "
+                                  "{:.0e}; resultant force ({:.6g}, {:.6g}, {:.6g}) N, moment ({:.6g}, {:.6g}, {:.6g}) "
+                                  "N m): the solution is wrong, no result is given; please report this model",
+                                  c.name, c.equilibrium_error, bound, c.resultant(0), c.resultant(1), c.resultant(2),
+                                  c.resultant(3), c.resultant(4), c.resultant(5))));
+  return Status::Ok();
 }
 
 StatusOr<CartesianStiffness> node_stiffness(const Structure& s, const System& sys, const solver::SparseCholesky& chol,
@@ -186,6 +230,11 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
     }
     const MatX U = sys->map.C * Q + U0;
     for (int c = 0; c < nc; ++c) sol.cases.push_back(post_process(s, *sys, s.load_cases()[c], U.col(c), F.col(c), U0.col(c)));
+    // A regularized answer is out of balance along its free motions by construction (and marked).
+    if (Status st = check_equilibrium(s, sol.cases, opt.max_equilibrium_error); !sol.regularized && !st.ok()) {
+      sol.status = st;
+      return sol;
+    }
   }
   if (s.report_node()) {
     auto c = node_stiffness(s, *sys, chol, *s.report_node());

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/solver/linear_solver_factory.hpp"
+#include "kinestat/solver/parallel.hpp"
 
 #if KINESTAT_HAVE_PETSC
 #include <Eigen/QR>
@@ -37,9 +38,6 @@ Status petsc_error(PetscErrorCode code, const char* call) {
   do {                                                                            \
     if (PetscErrorCode code_ = (call); code_ != 0) return petsc_error(code_, #call); \
   } while (0)
-
-enum class Lifecycle { kNotStarted, kRunning, kFinished };
-Lifecycle lifecycle = Lifecycle::kNotStarted;
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -211,7 +209,7 @@ class PetscSolver final : public SparseCholesky {
   }
 
   void Release() {
-    if (lifecycle != Lifecycle::kRunning) return;  // PETSc already finished: its objects went with it
+    if (!parallel_running()) return;  // PETSc already finished: its objects went with it
     KSPDestroy(&ksp_);
     MatDestroy(&A_);
   }
@@ -447,72 +445,6 @@ std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& o
   return std::make_unique<PetscSolver>(options);
 }
 
-StatusOr<ProcessGroup> start_parallel() {
-  if (lifecycle == Lifecycle::kFinished)
-    return Status::Internal("PETSc was finished in this process and cannot start again");
-  if (lifecycle == Lifecycle::kNotStarted) {
-    // No command line: kinestat's options are not PETSc's; PETSC_OPTIONS still reaches PETSc.
-    if (PetscErrorCode code = PetscInitializeNoArguments(); code != 0) return petsc_error(code, "PetscInitialize");
-    // Errors come back as codes (turned into Status), not as tracebacks on stderr.
-    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-    lifecycle = Lifecycle::kRunning;
-    std::atexit(finish_parallel);
-  }
-  return process_group();
-}
-
-ProcessGroup process_group() {
-  ProcessGroup g;
-  if (lifecycle != Lifecycle::kRunning) return g;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &g.rank);
-  MPI_Comm_size(PETSC_COMM_WORLD, &g.size);
-  return g;
-}
-
-void finish_parallel() {
-  if (lifecycle != Lifecycle::kRunning) return;
-  lifecycle = Lifecycle::kFinished;
-  PetscFinalize();
-}
-
-namespace {
-
-// Rank `root`'s vector to every rank: its length, then its values in pieces that MPI's int counts hold.
-template <class T>
-Status broadcast_vector(std::vector<T>& values, MPI_Datatype type, int root) {
-  if (process_group().size == 1) return Status::Ok();
-  unsigned long long count = values.size();
-  if (MPI_Bcast(&count, 1, MPI_UNSIGNED_LONG_LONG, root, PETSC_COMM_WORLD) != MPI_SUCCESS)
-    return Status::Internal("MPI_Bcast of a length failed");
-  values.resize(count);
-  constexpr unsigned long long kPiece = 1ull << 30;
-  for (unsigned long long first = 0; first < count; first += kPiece) {
-    const int piece = static_cast<int>(std::min(kPiece, count - first));
-    if (MPI_Bcast(values.data() + first, piece, type, root, PETSC_COMM_WORLD) != MPI_SUCCESS)
-      return Status::Internal("MPI_Bcast of shared data failed");
-  }
-  return Status::Ok();
-}
-
-}  // namespace
-
-Status broadcast_from_root(std::vector<double>& values) { return broadcast_vector(values, MPI_DOUBLE, 0); }
-Status broadcast_from_root(std::vector<int>& values) { return broadcast_vector(values, MPI_INT, 0); }
-
-Status agree_on_status(const Status& mine) {
-  const ProcessGroup group = process_group();
-  if (group.size == 1) return mine;
-  int failed = mine.ok() ? group.size : group.rank, first = group.size;
-  if (MPI_Allreduce(&failed, &first, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD) != MPI_SUCCESS)
-    return Status::Internal("MPI_Allreduce of the ranks' outcomes failed");
-  if (first == group.size) return Status::Ok();
-  std::vector<int> code = {static_cast<int>(mine.code())};
-  std::vector<char> text(mine.message().begin(), mine.message().end());
-  if (Status s = broadcast_vector(code, MPI_INT, first); !s.ok()) return s;
-  if (Status s = broadcast_vector(text, MPI_CHAR, first); !s.ok()) return s;
-  return Status(static_cast<StatusCode>(code[0]), std::string(text.begin(), text.end()));
-}
-
 #else  // PETSc not built in
 
 namespace {
@@ -536,13 +468,6 @@ bool petsc_built() { return false; }
 std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& options) {
   return std::make_unique<UnavailableSolver>(options.backend);
 }
-
-StatusOr<ProcessGroup> start_parallel() { return ProcessGroup{}; }
-ProcessGroup process_group() { return {}; }
-void finish_parallel() {}
-Status broadcast_from_root(std::vector<double>&) { return Status::Ok(); }
-Status broadcast_from_root(std::vector<int>&) { return Status::Ok(); }
-Status agree_on_status(const Status& mine) { return mine; }
 
 #endif
 

@@ -58,6 +58,19 @@ TEST(DesignFiveBarCommand, BadRangesAndStepsExit2NamingTheOption) {
   }
 }
 
+// 1000 x 1000 designs over 10^4 region points is ~10^10 postures, hours: refused at once with the
+// estimated time and the option that allows it (issue 21), never started.
+TEST(DesignFiveBarCommand, HoursOfPosturesAreRefusedWithTheEstimate) {
+  const CliRun r = run_cli(small_run({{"--steps", "1000"}, {"--step", "1"}}));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("1e+06 designs x 12221 region points: about 1.22e+10 postures"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" h on "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--max-postures"), std::string::npos) << r.err;
+  const CliRun allowed = run_cli(small_run({{"--max-postures", "-5"}}));
+  EXPECT_EQ(allowed.code, 2) << allowed.err;
+  EXPECT_NE(allowed.err.find("--max-postures"), std::string::npos) << allowed.err;
+}
+
 TEST(DesignFiveBarCommand, UnreachableRegionExits2AndWritesNothing) {
   const std::string json = ::testing::TempDir() + "kinestat_design_unreachable.json";
   fs::remove(json);

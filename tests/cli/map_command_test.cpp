@@ -149,6 +149,12 @@ TEST(MapCommand, BadOptionsExitTwoNamingTheOption) {
       {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--region", "0:1,0:1"}, "--region"},
       {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--mode", "+-"}, "--mode"},
       {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--load", "1,1"}, "--load"},
+      // Loads range-checked as lengths are (issue 21): 1e300 N is no load, a typo; a size_t option
+      // took -1 as 2^64 - 1.
+      {{"map", "fivebar", "--load", "1e300,0,0,0,0,0"}, "--load component 1"},
+      {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--wrench", "0,0,0,0,0,1e300"}, "--wrench component 6"},
+      {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--load", "0,0,1e12,0,0,0"}, "--load component 3"},
+      {{"map", "fivebar", "--max-points", "-1"}, "--max-points"},
   };
   for (const BadCase& c : cases) {
     const CliRun r = run_cli(c.args);
@@ -177,6 +183,23 @@ TEST(MapCommand, EmptyRegionExitsTwoAndWritesNothing) {
   EXPECT_NE(r.err.find("--region"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(json));
   EXPECT_FALSE(std::filesystem::exists(vti));
+  std::filesystem::remove_all(dir);
+}
+
+// A load that buckles every posture (issue 21): not a summary of NaN with exit 0, but the reason,
+// exit 2, and no file.
+TEST(MapCommand, EveryPointFailedIsAnErrorAndWritesNothing) {
+  const auto dir = std::filesystem::temp_directory_path() / "kinestat_map_all_failed";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string json = (dir / "m.json").string();
+  const CliRun r = run_cli({"map", kPuu, "--box", "-10:10,-10:10,0", "--step", "10", "--wrench", "0,0,-1e9,0,0,0",
+                            "--json", json, "--quiet"});
+  EXPECT_EQ(r.code, kExitBadInput) << r.err;
+  EXPECT_NE(r.err.find("no point of --box"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("9 failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("buckling"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(json));
   std::filesystem::remove_all(dir);
 }
 

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
+#include <vtkCell.h>
+#include <vtkCellData.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -49,21 +51,36 @@ TEST(FiveBarDesignOutput, VtiReadBackHasTheDesignGridAndShares) {
   reader->SetFileName(path.c_str());
   reader->Update();
   vtkImageData* image = reader->GetOutput();
-  // x: r1, y: r2 (m).
+  // x: r1, y: r2 (m). One cell per design, centred on it (half a spacing each side), so ParaView
+  // paints each design's value over its own cell instead of blending neighbours (issue 21).
   const int* dims = image->GetDimensions();
-  EXPECT_EQ(std::vector<int>(dims, dims + 3), (std::vector<int>{3, 2, 1}));
-  EXPECT_DOUBLE_EQ(image->GetOrigin()[0], 0.05);
+  EXPECT_EQ(std::vector<int>(dims, dims + 3), (std::vector<int>{4, 3, 1}));
+  EXPECT_DOUBLE_EQ(image->GetOrigin()[0], 0.05 - 0.005);
+  EXPECT_DOUBLE_EQ(image->GetOrigin()[1], 0.08 - 0.01);
   EXPECT_DOUBLE_EQ(image->GetSpacing()[1], 0.02);
-  vtkDataArray* share = image->GetPointData()->GetArray("share (1)");
-  vtkDataArray* reachable = image->GetPointData()->GetArray("reachable_share (1)");
+  ASSERT_EQ(image->GetNumberOfCells(), 6);
+  for (vtkIdType k = 0; k < 6; ++k) {  // cell k's centre is design k's (r1, r2)
+    double centre[3], pcoords[3], weights[8];
+    int sub = 0;
+    vtkCell* cell = image->GetCell(k);
+    sub = cell->GetParametricCenter(pcoords);
+    cell->EvaluateLocation(sub, pcoords, centre, weights);
+    EXPECT_NEAR(centre[0], s.results[k].r1, 1e-12) << k;
+    EXPECT_NEAR(centre[1], s.results[k].r2, 1e-12) << k;
+  }
+  vtkCellData* cd = image->GetCellData();
+  vtkDataArray* share = cd->GetArray("share");
+  vtkDataArray* reachable = cd->GetArray("reachable_share");
   ASSERT_NE(share, nullptr);
   ASSERT_NE(reachable, nullptr);
-  ASSERT_NE(image->GetPointData()->GetArray("singularity_free_share (1)"), nullptr);
+  ASSERT_NE(cd->GetArray("singularity_free_share"), nullptr);
+  ASSERT_NE(cd->GetScalars(), nullptr);
+  EXPECT_STREQ(cd->GetScalars()->GetName(), "share");  // what ParaView colours by on opening
   for (vtkIdType k = 0; k < 6; ++k) {
     EXPECT_DOUBLE_EQ(share->GetTuple1(k), static_cast<double>(s.results[k].stiff) / 10.0);
     EXPECT_DOUBLE_EQ(reachable->GetTuple1(k), static_cast<double>(s.results[k].reachable) / 10.0);
   }
-  vtkDataArray* worst = image->GetPointData()->GetArray("k_t_min_worst (N/m)");
+  vtkDataArray* worst = cd->GetArray("k_t_min_worst");
   ASSERT_NE(worst, nullptr);
   EXPECT_DOUBLE_EQ(worst->GetTuple1(0), 1000.0);
   EXPECT_TRUE(std::isnan(worst->GetTuple1(2)));  // no value stays NaN, never a filler

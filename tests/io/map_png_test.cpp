@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "io/map_png_layout.hpp"
+#include "kinestat/io/workspace_map_png.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -305,6 +306,66 @@ TEST_F(MapPng, FixedColourRangeMapsAndClampsValues) {
   }
   o.colour_range = std::array<double, 2>{1.0, 1.0};
   EXPECT_NE(write_png_map(path, f, o).message().find("colour range [1, 1]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace kinestat::io
+
+namespace kinestat::io {
+namespace {
+
+// The title says which part of the grid a picture is (issue 21): the fixed coordinate of a plane of
+// a box, and how many of a box's slices a sheet shows.
+TEST(WorkspaceMapPngTitle, NamesTheSliceOrTheSlices) {
+  mechanisms::WorkspaceMap map;
+  map.description = "Orthoglide 3-PUU";
+  map.grid.origin = Vec3(-0.1, -0.1, 0.02);
+  map.grid.spacing = Vec3(0.005, 0.005, 0.005);
+  map.grid.dimensions = {41, 41, 1};
+  EXPECT_EQ(workspace_map_png_title(map, mechanisms::MapField::kTranslationalMin),
+            "Orthoglide 3-PUU: k_t_min, slice z = 20 mm");
+  map.grid.dimensions = {41, 1, 41};
+  EXPECT_EQ(workspace_map_png_title(map, mechanisms::MapField::kTranslationalMin),
+            "Orthoglide 3-PUU: k_t_min, slice y = -100 mm");
+  map.grid.origin.z() = -0.1;
+  map.grid.dimensions = {41, 41, 41};
+  EXPECT_EQ(workspace_map_png_title(map, mechanisms::MapField::kConditionNumber),
+            "Orthoglide 3-PUU: condition_number\n9 of the 41 slices z -100:100 mm");
+}
+
+}  // namespace
+}  // namespace kinestat::io
+
+namespace kinestat::io {
+namespace {
+
+// The contour of v = x at 4.5 is the line x = 4.5 across the defined cells only: a NaN column
+// (a masked region) cuts it, and the mask's own edge draws nothing.
+TEST(ContourLines, FollowTheLevelAndStopAtTheMask) {
+  PlotField2D f;
+  f.nx = 11, f.ny = 6, f.x0 = 0.0, f.y0 = 10.0, f.dx = 1.0, f.dy = 2.0;
+  for (int j = 0; j < f.ny; ++j)
+    for (int i = 0; i < f.nx; ++i) f.values.push_back(j == 3 ? std::nan("") : static_cast<double>(i));
+  const auto lines = contour_lines(f, 4.5);
+  double y_lo = 1e9, y_hi = -1e9;
+  int breaks = 0;
+  for (const auto& p : lines) {
+    if (std::isnan(p[0])) {
+      ++breaks;
+      continue;
+    }
+    EXPECT_NEAR(p[0], 4.5, 1e-12);  // linear data: the interpolation is exact
+    y_lo = std::min(y_lo, p[1]), y_hi = std::max(y_hi, p[1]);
+    EXPECT_FALSE(p[1] > 14.0 && p[1] < 18.0) << p[1];  // row j = 3 (y = 16) masks the cells y 14..18
+  }
+  EXPECT_EQ(breaks, 1);  // two pieces: y 10..14 and 18..20
+  EXPECT_DOUBLE_EQ(y_lo, 10.0);
+  EXPECT_DOUBLE_EQ(y_hi, 20.0);
+  // Every value above the level: no contour at all; every value NaN: none either.
+  EXPECT_TRUE(contour_lines(f, 50.0).empty());
+  PlotField2D blank = f;
+  blank.values.assign(blank.values.size(), std::nan(""));
+  EXPECT_TRUE(contour_lines(blank, 4.5).empty());
 }
 
 }  // namespace

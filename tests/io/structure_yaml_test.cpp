@@ -147,6 +147,74 @@ TEST(StructureYaml, BeamJointLinkErrors) {
                {"rigid link 'r'", "unknown dof 'ru'"});
 }
 
+// Shear areas written by hand are used or refused, never dropped (issue 21): an Euler-Bernoulli beam
+// on such a section is an error at the beam's line; `beam_theory:` sets every beam's default.
+TEST(StructureYaml, HandWrittenShearAreasNeedTimoshenkoBeams) {
+  const std::string m =
+      "nodes:\n"                                                            // 1
+      "  - {id: A, xyz: [0, 0, 0]}\n"                                       // 2
+      "  - {id: B, xyz: [1, 0, 0]}\n"                                       // 3
+      "  - {id: C, xyz: [0, 1, 0]}\n"                                       // 4
+      "materials:\n"                                                        // 5
+      "  - {id: steel, E: 210e9, nu: 0.3}\n"                                // 6
+      "sections:\n"                                                         // 7
+      "  - {id: rod, type: circle, d: 0.02}\n"                              // 8
+      "  - {id: s, A: 1e-4, Iy: 1e-8, Iz: 1e-8, J: 2e-8, Asz: 8e-5}\n"     // 9
+      "supports:\n"                                                         // 10
+      "  - {node: A, fixed: all}\n";                                        // 11
+  expect_error(m + "beams:\n  - {id: b, nodes: [A, B], material: steel, section: s}\n", 13,
+               {"beam 'b'", "section 's' gives shear areas", "theory: timoshenko"});
+  expect_error("beam_theory: bernoulli\n" + m, 1, {"unknown beam_theory 'bernoulli'"});
+  // A standard shape carries its shear areas and is fine with either theory.
+  auto ok = io::read_structure_yaml_string(m + "beams:\n  - {id: b, nodes: [A, B], material: steel, section: rod}\n",
+                                           "t.yaml");
+  ASSERT_TRUE(ok.ok()) << ok.status().message();
+  auto d = io::read_structure_yaml_string("beam_theory: timoshenko\n" + m +
+                                              "beams:\n  - {id: b, nodes: [A, B], material: steel, section: s}\n"
+                                              "  - {id: c, nodes: [A, C], material: steel, section: rod, theory: "
+                                              "euler-bernoulli}\n",
+                                          "t.yaml");
+  ASSERT_TRUE(d.ok()) << d.status().message();
+  EXPECT_EQ(d->beams()[0].theory, BeamTheory::kTimoshenko);
+  EXPECT_EQ(d->beams()[1].theory, BeamTheory::kEulerBernoulli);
+}
+
+// `roll:` gives Frame3DD's local axes (its coord_trans with z vertical), written out here component
+// by component: y = (-Cx Cz sin p - Cy cos p, -Cy Cz sin p + Cx cos p, den^2 sin p) / den,
+// z = (-Cx Cz cos p + Cy sin p, -Cy Cz cos p - Cx sin p, den^2 cos p) / den, den = sqrt(1 - Cz^2);
+// for an exactly vertical member y = (-Cz sin p, cos p, 0).
+TEST(StructureYaml, RollAngleGivesFrame3ddLocalAxes) {
+  const std::string m =
+      "nodes:\n"                                // 1
+      "  - {id: A, xyz: [0, 0, 0]}\n"           // 2
+      "  - {id: D, xyz: [1, 2, 2]}\n"           // 3
+      "  - {id: E, xyz: [0, 0, -3]}\n"          // 4
+      "materials:\n"                            // 5
+      "  - {id: steel, E: 210e9, nu: 0.3}\n"    // 6
+      "sections:\n"                             // 7
+      "  - {id: rod, type: circle, d: 0.02}\n"  // 8
+      "supports:\n"                             // 9
+      "  - {node: A, fixed: all}\n";            // 10
+  auto s = read_structure_yaml_string(
+      m + "beams:\n  - {id: b, nodes: [A, D], material: steel, section: rod, roll: 30}\n"
+          "  - {id: v, nodes: [A, E], material: steel, section: rod, roll: 90}\n",
+      "t.yaml");
+  ASSERT_TRUE(s.ok()) << s.status().message();
+  const double p = std::numbers::pi / 6, cx = 1.0 / 3, cy = 2.0 / 3, cz = 2.0 / 3, den = std::sqrt(1 - cz * cz);
+  const Vec3 y((-cx * cz * std::sin(p) - cy * std::cos(p)) / den, (-cy * cz * std::sin(p) + cx * std::cos(p)) / den,
+               den * std::sin(p));
+  const Vec3 z((-cx * cz * std::cos(p) + cy * std::sin(p)) / den, (-cy * cz * std::cos(p) - cx * std::sin(p)) / den,
+               den * std::cos(p));
+  const Mat3 axes = s->beam_axes(s->beams()[0]);
+  EXPECT_LT((axes.col(1) - y).norm(), 1e-14) << axes;
+  EXPECT_LT((axes.col(2) - z).norm(), 1e-14) << axes;
+  // Straight down (Cz = -1), rolled 90 deg: y = (-Cz sin p, cos p, 0) = (1, 0, 0).
+  EXPECT_LT((s->beam_axes(s->beams()[1]).col(1) - Vec3(1, 0, 0)).norm(), 1e-14);
+  expect_error(m + "beams:\n  - {id: b, nodes: [A, D], material: steel, section: rod, roll: 30, orientation: [0, 0, "
+                   "1]}\n",
+               12, {"beam 'b'", "either 'orientation' or 'roll'"});
+}
+
 TEST(StructureYaml, LoadCaseErrors) {
   const std::string m = kBeamModel;
   expect_error(m + "load_cases:\n  - name: a\n    loads:\n      - {node: B}\n", 14, {"load case 'a'", "force"});
@@ -178,7 +246,7 @@ sections:
 beams:
   - {id: b1, nodes: [A, B], material: steel, section: rod, orientation: [0, 0, 1], theory: timoshenko,
      releases: {end2: [ry, rz]}}
-  - {id: b2, nodes: [B2, C], material: alu, section: custom}
+  - {id: b2, nodes: [B2, C], material: alu, section: custom, theory: timoshenko}
 joints:
   - id: j
     nodes: [B, B2]
@@ -228,7 +296,7 @@ report: {node: C}
   EXPECT_EQ(b1.theory, BeamTheory::kTimoshenko);
   EXPECT_TRUE(b1.orientation.isApprox(Vec3(0, 0, 1)));  // a direction: not scaled by units
   for (int i = 0; i < 12; ++i) EXPECT_EQ(b1.releases[i], i == 10 || i == 11) << i;
-  EXPECT_EQ(s.beams()[1].theory, BeamTheory::kEulerBernoulli);
+  EXPECT_EQ(s.beams()[1].theory, BeamTheory::kTimoshenko);
   EXPECT_EQ(s.beams()[1].material, 1);
 
   ASSERT_EQ(s.joints().size(), 1u);

@@ -7,6 +7,8 @@
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -180,6 +182,14 @@ TEST_F(VtkOutput, PortalFrameSolutionReadsBack) {
       for (int k = 0; k < 3; ++k)
         EXPECT_EQ(disp->GetComponent(n, k), sol.cases[c].displacement[static_cast<std::size_t>(n)](k));
     }
+    // Each file names its load case, and carries the warp factor that draws the largest
+    // displacement as a tenth of the model's size (issue 21).
+    auto* name = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("load_case"));
+    ASSERT_NE(name, nullptr);
+    EXPECT_EQ(name->GetValue(0), sol.cases[c].name);
+    vtkDataArray* warp = grid->GetFieldData()->GetArray("warp_factor");
+    ASSERT_NE(warp, nullptr);
+    EXPECT_DOUBLE_EQ(warp->GetTuple1(0) * sol.cases[c].max_translation, 0.1 * s.length_scale());
   }
 }
 

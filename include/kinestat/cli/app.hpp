@@ -30,9 +30,12 @@ struct Context {
   std::ostream& out;
   std::ostream& err;
   int exit_code = kExitOk;
+  std::string command_line{};  // the arguments joined by spaces (compared across MPI ranks)
+  std::string failure{};       // the message of a failed command, for solver::finish_job under MPI
 };
 
-// Prints "kinestat COMMAND: message" to ctx.err; returns the exit status for `status`.
+// Prints "kinestat COMMAND: message" to ctx.err and keeps it in ctx.failure; returns the exit status
+// for `status`.
 int report_failure(Context& ctx, const std::string& command, const Status& status);
 
 // A subcommand adds itself to the app; its callback runs when it is selected and sets ctx.exit_code.
@@ -47,7 +50,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx);
 void register_identify_command(CLI::App& app, Context& ctx);
 void register_map_command(CLI::App& app, Context& ctx);
 
-// Runs `kinestat ARGS...` (args excludes the program name).
+// Runs `kinestat ARGS...` (args excludes the program name). Under mpirun it ends with
+// solver::finish_job, so that a rank that failed alone ends the job instead of leaving it hanging.
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace kinestat::cli

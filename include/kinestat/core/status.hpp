@@ -23,6 +23,7 @@ class Status {
   static Status Ok() { return {}; }
   static Status Invalid(std::string m) { return {StatusCode::kInvalidInput, std::move(m)}; }
   static Status Singular(std::string m) { return {StatusCode::kSingular, std::move(m)}; }
+  static Status NotConverged(std::string m) { return {StatusCode::kNotConverged, std::move(m)}; }
   static Status Internal(std::string m) { return {StatusCode::kInternal, std::move(m)}; }
 
   bool ok() const { return code_ == StatusCode::kOk; }

@@ -14,18 +14,19 @@ namespace kinestat::io {
 
 // A scalar field on a regular 2D grid, x fastest: values[i + nx * j] at (x0 + i dx, y0 + j dy),
 // in plot units (those the axis labels state). NaN where there is no value (drawn blank).
-struct PlotField2D {
-  int nx = 0, ny = 0;
-  double x0 = 0.0, y0 = 0.0, dx = 1.0, dy = 1.0;
-  std::vector<double> values;
-  std::string title;  // of this panel (a slice "z = 10 mm" on a sheet); may be empty
-};
-
 // A polyline in plot units drawn over the field; a NaN point breaks the line.
 struct PlotCurve {
   std::vector<std::array<double, 2>> points;
   std::string label;  // legend entry ("workspace boundary", "parallel singularity")
   int style = 0;      // 0: solid black, 1: dashed red, 2: short-dashed magenta (none is in viridis)
+};
+
+struct PlotField2D {
+  int nx = 0, ny = 0;
+  double x0 = 0.0, y0 = 0.0, dx = 1.0, dy = 1.0;
+  std::vector<double> values;
+  std::string title;              // of this panel (a slice "z = 10 mm" on a sheet); may be empty
+  std::vector<PlotCurve> curves;  // drawn on this panel only (a contour of this slice); no legend
 };
 
 struct PlotOptions {
@@ -40,6 +41,10 @@ struct PlotOptions {
   std::optional<std::array<double, 2>> colour_range;
   std::vector<PlotCurve> curves;
 };
+
+// The `level` contour of a field as polylines in plot units (NaN-separated), over the cells whose
+// four corners have values only: the edge of a masked (NaN) region is no contour.
+std::vector<std::array<double, 2>> contour_lines(const PlotField2D& field, double level);
 
 // One map in one PNG. kInvalidInput (naming the path) when it cannot be written or the field is
 // empty/inconsistent.

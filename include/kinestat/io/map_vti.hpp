@@ -1,12 +1,14 @@
 // Workspace maps (mechanisms/workspace_map.hpp) for ParaView: VTK XML ImageData (.vti).
 //
 // The grid's origin, spacing and dimensions are the map's (m). Point data: one double array per field,
-// named "FIELD (UNIT)" so that ParaView's colour legend states the unit ("k_t_min (N/m)"); NaN where
-// a point has no value (never a filler number); "status" (unsigned char, MapPointStatus: 0 ok,
-// 1 unreachable, 2 singular, 3 failed, 4 near-singular). With hide_masked_points, points without
-// stiffness values (unreachable, singular, failed) are also marked HIDDENPOINT in "vtkGhostType", so
-// ParaView leaves the cells that touch them blank. Field data: "length_unit" = "m", "status_values"
-// (the codes in words), "description" (robot and mode) and, per field, "FIELD_unit".
+// named by the field alone ("k_t_min": no spaces or brackets, so ParaView's Calculator takes it
+// unquoted), its unit in the field data "FIELD_unit"; NaN where a point has no value (never a filler
+// number); "status" (unsigned char, MapPointStatus: 0 ok, 1 unreachable, 2 singular, 3 failed,
+// 4 near-singular); k_t_min is the active scalars. With hide_masked_points, points without stiffness
+// values (unreachable, singular, failed) are marked HIDDENPOINT in the point "vtkGhostType" and the
+// cells that touch them HIDDENCELL in the cell "vtkGhostType", so ParaView leaves them blank. Field
+// data: "length_unit" = "m", "status_values" (the codes in words), "description" (robot and mode)
+// and, per field, "FIELD_unit".
 #pragma once
 
 #include <string>
@@ -20,7 +22,7 @@ struct MapVtiOptions {
   bool hide_masked_points = true;
 };
 
-// The VTI array name of a field: "k_t_min (N/m)".
+// The VTI array name of a field: its name, "k_t_min" (the unit is in "k_t_min_unit").
 std::string vti_array_name(mechanisms::MapField f);
 
 // kInvalidInput naming the path when it cannot be written.

@@ -26,6 +26,10 @@ MapFieldDisplay map_field_display(mechanisms::MapField f);
 Status write_workspace_map_png(const std::string& path, const mechanisms::WorkspaceMap& map,
                                mechanisms::MapField field);
 
+// The picture's title: robot and mode, the field, and which part of the grid it shows ("slice
+// z = 0 mm" for a plane of a box, "9 of the 41 slices z -100:100 mm" for a sheet).
+std::string workspace_map_png_title(const mechanisms::WorkspaceMap& map, mechanisms::MapField field);
+
 // "singularity measure >= 0.01, k_t_min >= 500 N/mm": the criteria of a sweep's share, in words.
 std::string design_sweep_criteria(const mechanisms::FiveBarDesignSweep& sweep);
 

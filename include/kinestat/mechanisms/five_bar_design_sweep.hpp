@@ -19,6 +19,10 @@
 
 namespace kinestat::mechanisms {
 
+// Designs x region points above this are refused before anything runs, with the estimated time:
+// 2e8 postures take about 7 minutes on two cores (benchmarks/README.md, "Design sweep").
+inline constexpr double kDefaultMaxDesignPostures = 2e8;
+
 struct FiveBarDesignSweepOptions {
   // Everything but r1 and r2 (r3, links, joints), the working and assembly mode, the method.
   FiveBarKernelOptions base;
@@ -28,6 +32,7 @@ struct FiveBarDesignSweepOptions {
   double near_singular_threshold = MapOptions{}.near_singular_threshold;
   std::optional<double> min_stiffness;  // N/m, on k_t_min (the weakest direction, workspace_map.hpp)
   int threads = 0;                      // 0: all cores
+  double max_postures = kDefaultMaxDesignPostures;  // designs x region points; refused above
   // The kernel of one design; empty: make_five_bar_kernel (the sweep kernel).
   std::function<std::unique_ptr<PostureKernel>(const FiveBarKernelOptions&)> make_kernel;
   // progress(done, total) in postures over the whole sweep, from one thread at a time.

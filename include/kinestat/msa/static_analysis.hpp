@@ -27,6 +27,9 @@ struct SolveOptions {
   // iteration with the same factor, because a null pivot spoiled by round-off can look regular.
   double mechanism_ratio = 1e-13;
   double regularization = 1e-10;
+  // A load case whose equilibrium error (LoadCaseResult::equilibrium_error) exceeds this fails the
+  // solve with kInternal. Round-off gives 1e-16 to 1e-12 on the bundled models; a lost reaction ~1.
+  double max_equilibrium_error = 1e-6;
   // Indices of the reduced global matrix need a dense eigen-decomposition: skipped above this size.
   int max_dofs_for_global_indices = 2000;
 };

@@ -28,29 +28,4 @@ std::optional<Backend> backend_from_name(std::string_view name);
 // Ok, or kInvalidInput naming the backend and why it is not built in (how to get it).
 Status check_backend_built(Backend backend);
 
-// The MPI processes a distributed backend runs on (rank 0 of 1 without MPI).
-struct ProcessGroup {
-  int rank = 0;
-  int size = 1;
-};
-// Starts PETSc (and MPI) once per process for the PETSc backends: call it first thing when the
-// program may run under mpirun, so that every rank knows its rank before writing anything. The PETSc
-// backends also start it themselves when needed. Ok without effect when PETSc is not built in.
-StatusOr<ProcessGroup> start_parallel();
-ProcessGroup process_group();  // {0, 1} until start_parallel
-// Ends PETSc and MPI (no solver object may outlive it); also done at exit.
-void finish_parallel();
-
-// Sharing what rank 0 alone computed (e.g. the FEA mesh: rank 0 meshes, the others receive it).
-// Collective: every rank of process_group() calls them, in the same order; without PETSc, before
-// start_parallel or on one rank they do nothing. On return every rank holds rank 0's `values`
-// (resized on the others).
-Status broadcast_from_root(std::vector<double>& values);
-Status broadcast_from_root(std::vector<int>& values);
-// Every rank's outcome of a step that may fail on some ranks only (rank 0's meshing, a rank's own
-// elements): returns to every rank the failure of the lowest failing rank (code and message), or Ok.
-// Call it before the next collective step, so that a failure stops every rank instead of leaving the
-// others waiting for the failed one. Returns `mine` without MPI.
-Status agree_on_status(const Status& mine);
-
 }  // namespace kinestat::solver

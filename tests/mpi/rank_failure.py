@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+"""MPI ranks that disagree end together, in seconds, with the reason (docs/reliability.md, "MPI").
+
+Two two-rank jobs of `kinestat link-stiffness --solver petsc-mumps`, each rank started with its own
+command (mpiexec's `A : B` form), as happens on a cluster whose nodes see different files:
+1. rank 1 is given another --size than rank 0: both ranks refuse, exit 2, naming the difference;
+2. the same command on both ranks, but in two working folders and the mesh present only in rank 0's:
+   the job ends (non-zero) within the time limit and stderr names the missing file.
+A hang fails the test through the subprocess timeout (60 s; a job that works takes about 2 s).
+
+usage: rank_failure.py KINESTAT MPIEXEC MESH
+"""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def run_job(command, cwd=None):
+    start = time.monotonic()
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=60, cwd=cwd)
+    except subprocess.TimeoutExpired:
+        sys.exit(f"{' '.join(command)}: still running after 60 s (a hang)")
+    return done, time.monotonic() - start
+
+
+def main():
+    kinestat, mpiexec, mesh = os.path.abspath(sys.argv[1]), sys.argv[2], os.path.abspath(sys.argv[3])
+    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                      OMPI_MCA_rmaps_base_oversubscribe="1")
+    common = ["link-stiffness", "--clamp", "x=0", "--reference", "x=200", "--solver", "petsc-mumps", "--quiet"]
+
+    done, seconds = run_job([mpiexec, "-np", "1", kinestat, *common, mesh, "--size", "20", ":",
+                             "-np", "1", kinestat, *common, mesh, "--size", "30"])
+    if done.returncode != 2 or "differs from rank 0's" not in done.stderr:
+        sys.exit(f"different options: exit {done.returncode}, stderr:\n{done.stderr}")
+    print(f"different options on two ranks: exit 2 in {seconds:.1f} s, the difference named")
+
+    with tempfile.TemporaryDirectory() as top:
+        a, b = os.path.join(top, "a"), os.path.join(top, "b")
+        os.makedirs(a), os.makedirs(b)
+        shutil.copy(mesh, os.path.join(a, "link.off"))  # rank 1's folder has no mesh
+        args = [kinestat, *common, "link.off", "--size", "20", "--cache", "cache"]
+        done, seconds = run_job([mpiexec, "-np", "1", "-wdir", a, *args, ":", "-np", "1", "-wdir", b, *args])
+        if done.returncode == 0 or "link.off" not in done.stderr:
+            sys.exit(f"mesh on one rank only: exit {done.returncode}, stderr:\n{done.stderr}")
+        print(f"mesh on rank 0 only: exit {done.returncode} in {seconds:.1f} s, the file named")
+
+
+if __name__ == "__main__":
+    main()
