@@ -214,6 +214,14 @@ Status Structure::validate() const {
                                      fmt::format("load case '{}': gravity {}", lc.name, "xyz"[k]));
           !st.ok())
         return invalid(lc.source, st.message());
+    if (lc.gravity.squaredNorm() > 0.0) {
+      bool weight = false;
+      for (const auto& b : beams_) weight = weight || materials_[b.material].density > 0.0;
+      if (!weight)
+        return invalid(lc.source, fmt::format("load case '{}': gravity is given but no beam's material has a density, "
+                                              "so it would load nothing; add density to the materials",
+                                              lc.name));
+    }
     for (const auto& ml : lc.member_loads)
       if (Status st = validate_member_load(lc, ml); !st.ok()) return st;
     // The loads are summed per node and over the structure: the sums must be finite too.
