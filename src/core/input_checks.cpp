@@ -21,6 +21,12 @@ const QuantityRange& quantity_range(Quantity q) {
       {"a rotational stiffness", "N m/rad", 1e30, 1e-12},
       {"a compliance", "SI units", 1e12, 1e-40},
       {"a ratio", "", 1e12, 1e-12},
+      // Osmium is 2.3e4 kg/m^3; a density of 1e6 is a unit mistake (t/mm^3 written in an SI file).
+      {"a density", "kg/m^3", 1e6, 1e-6},
+      {"an acceleration", "m/s^2", 1e6, 0.0},
+      {"a force per length", "N/m", 1e12, 0.0},
+      {"a temperature change", "K", 1e4, 0.0},
+      {"a thermal expansion coefficient", "1/K", 1.0, 1e-12},
   };
   return kRanges[static_cast<int>(q)];
 }

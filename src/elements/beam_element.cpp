@@ -47,29 +47,67 @@ Mat12 beam_local_stiffness(const Material& m, const Section& s, double L, BeamTh
   return K;
 }
 
-StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released) {
+namespace {
+
+// The partition of K into released (r) and retained (a) dofs with K_rr factorized: shared by the
+// condensation of the stiffness and of the fixed-end forces.
+struct ReleasePartition {
   std::vector<int> r, a;
-  for (int i = 0; i < 12; ++i) (released[i] ? r : a).push_back(i);
-  if (r.empty()) return K;
-  const int nr = static_cast<int>(r.size()), na = static_cast<int>(a.size());
-  MatX Krr(nr, nr), Kra(nr, na), Kaa(na, na);
+  MatX Kra;
+  Eigen::LDLT<MatX> ldlt;
+};
+
+StatusOr<ReleasePartition> partition_releases(const Mat12& K, const BeamReleases& released) {
+  ReleasePartition p;
+  for (int i = 0; i < 12; ++i) (released[i] ? p.r : p.a).push_back(i);
+  const int nr = static_cast<int>(p.r.size()), na = static_cast<int>(p.a.size());
+  MatX Krr(nr, nr);
+  p.Kra.resize(nr, na);
   for (int i = 0; i < nr; ++i) {
-    for (int j = 0; j < nr; ++j) Krr(i, j) = K(r[i], r[j]);
-    for (int j = 0; j < na; ++j) Kra(i, j) = K(r[i], a[j]);
+    for (int j = 0; j < nr; ++j) Krr(i, j) = K(p.r[i], p.r[j]);
+    for (int j = 0; j < na; ++j) p.Kra(i, j) = K(p.r[i], p.a[j]);
   }
-  for (int i = 0; i < na; ++i)
-    for (int j = 0; j < na; ++j) Kaa(i, j) = K(a[i], a[j]);
-  Eigen::LDLT<MatX> ldlt(Krr);
+  p.ldlt.compute(Krr);
   // A released set that the element cannot resist on its own (both torsion ends, both axial
   // ends, ...) makes K_rr singular.
   const double scale = Krr.diagonal().cwiseAbs().maxCoeff();
-  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale))
+  if (p.ldlt.info() != Eigen::Success || !(p.ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale))
     return Status::Invalid("the end releases leave the beam free to move on its own (e.g. torsion or axial "
                            "released at both ends); release at one end only");
-  const MatX Kc = Kaa - Kra.transpose() * ldlt.solve(Kra);
+  return p;
+}
+
+}  // namespace
+
+StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released) {
+  bool any = false;
+  for (bool r : released) any = any || r;
+  if (!any) return K;
+  auto p = partition_releases(K, released);
+  if (!p.ok()) return p.status();
+  const int na = static_cast<int>(p->a.size());
+  MatX Kaa(na, na);
+  for (int i = 0; i < na; ++i)
+    for (int j = 0; j < na; ++j) Kaa(i, j) = K(p->a[i], p->a[j]);
+  const MatX Kc = Kaa - p->Kra.transpose() * p->ldlt.solve(p->Kra);
   Mat12 out = Mat12::Zero();
   for (int i = 0; i < na; ++i)
-    for (int j = 0; j < na; ++j) out(a[i], a[j]) = Kc(i, j);
+    for (int j = 0; j < na; ++j) out(p->a[i], p->a[j]) = Kc(i, j);
+  return out;
+}
+
+StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& released, const Vec12& f) {
+  bool any = false;
+  for (bool r : released) any = any || r;
+  if (!any) return f;
+  auto p = partition_releases(K, released);
+  if (!p.ok()) return p.status();
+  VecX fr(p->r.size());
+  for (size_t i = 0; i < p->r.size(); ++i) fr(static_cast<int>(i)) = f(p->r[i]);
+  // The released dofs move until their clamp force is gone: f_a - K_ar K_rr^-1 f_r.
+  const VecX fc = p->Kra.transpose() * p->ldlt.solve(fr);
+  Vec12 out = Vec12::Zero();
+  for (size_t i = 0; i < p->a.size(); ++i) out(p->a[i]) = f(p->a[i]) - fc(static_cast<int>(i));
   return out;
 }
 

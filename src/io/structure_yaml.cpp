@@ -131,7 +131,7 @@ class Parser : public YamlFields {
   void parse_material(const YAML::Node& n, int i) {
     const std::string id = entry_id(n, "material", i, material_ids_);
     const std::string item = fmt::format("material '{}'", id);
-    check_keys(n, item, {"id", "E", "G", "nu"});
+    check_keys(n, item, {"id", "E", "G", "nu", "density"});
     auto modulus = [&](const YAML::Node& v, const char* key) {
       return value(v, item, key, Quantity::kModulus, units_.of(Quantity::kModulus), Sign::kPositive);
     };
@@ -139,13 +139,17 @@ class Parser : public YamlFields {
     const YAML::Node G = n["G"], nu = n["nu"];
     if (G.IsDefined() == nu.IsDefined())
       fail(n, item, "give exactly one of G (shear modulus) and nu (Poisson's ratio)");
+    Material m;
     if (G.IsDefined()) {
-      s_.add_material(Material{id, E, modulus(G, "G")});
+      m = Material{id, E, modulus(G, "G")};
     } else {
       const double v = number(nu, item, "nu");
       if (!(v > -1.0 && v <= 0.5)) fail(nu, item, fmt::format("nu = {} is outside (-1, 0.5]; steel is 0.3", v));
-      s_.add_material(Material::from_E_nu(id, E, v));
+      m = Material::from_E_nu(id, E, v);
     }
+    if (const YAML::Node d = n["density"]; d.IsDefined())
+      m.density = value(d, item, "density", Quantity::kDensity, units_.of(Quantity::kDensity), Sign::kNonNegative);
+    s_.add_material(m);
   }
 
   void parse_section(const YAML::Node& n, int i) {
@@ -321,7 +325,7 @@ class Parser : public YamlFields {
 
   void parse_load_case(const YAML::Node& n, int i) {
     const std::string fallback = fmt::format("load case #{}", i + 1);
-    check_map(n, fallback, {"name", "loads", "prescribed"});
+    check_map(n, fallback, {"name", "loads", "prescribed", "gravity", "member_loads"});
     msa::LoadCase lc;
     lc.source = source(n);
     lc.name = text(require(n, fallback, "name"), fallback, "name");
@@ -366,7 +370,98 @@ class Parser : public YamlFields {
       }
       lc.prescribed.push_back(pd);
     });
+    if (const YAML::Node g = n["gravity"]; g.IsDefined())
+      lc.gravity = vec3(g, item, "gravity", Quantity::kAcceleration, units_.of(Quantity::kAcceleration));
+    for_each(n, "member_loads", false, [&](const YAML::Node& l, int) { lc.member_loads.push_back(member_load(l, item)); });
     s_.add_load_case(lc);
+  }
+
+  msa::MemberLoad member_load(const YAML::Node& l, const std::string& case_item) {
+    const std::string fallback = case_item + " member load";
+    if (!l.IsMap()) fail(l, fallback, "expected a map such as {beam: ID, type: uniform, w: [0, 0, -1000]}");
+    msa::MemberLoad ml;
+    ml.source = source(l);
+    const YAML::Node bn = require(l, fallback, "beam");
+    const std::string bid = text(bn, fallback, "beam");
+    const auto beam = s_.find_beam(bid);
+    if (!beam) fail(bn, fallback, fmt::format("unknown beam '{}'; define it under beams", bid));
+    ml.beam = *beam;
+    const std::string item = fmt::format("{}: the member load on beam '{}'", case_item, bid);
+    const YAML::Node tn = require(l, item, "type");
+    const std::string type = text(tn, item, "type");
+    const UnitOfInput lu = units_.of(Quantity::kLength);
+    const double length = s_.beam_length(s_.beams()[ml.beam]);
+    // A distance along the beam, in the file's length unit, within the span.
+    auto distance = [&](const char* key) {
+      const YAML::Node v = require(l, item, key);
+      const double x = value(v, item, key, Quantity::kLength, lu, Sign::kNonNegative);
+      if (x > length * (1.0 + 1e-12))
+        fail(v, item,
+             fmt::format("{} = {:g} {} lies beyond the end of the beam (length {:g} {}); give a distance from its first "
+                         "node between 0 and the length",
+                         key, x / lu.scale, lu.name.empty() ? "m" : lu.name, length / lu.scale,
+                         lu.name.empty() ? "m" : lu.name));
+      return std::min(x, length);
+    };
+    auto per_length = [&](const char* key) {
+      return vec3(require(l, item, key), item, key, Quantity::kForcePerLength, units_.of(Quantity::kForcePerLength));
+    };
+    auto axes = [&]() {
+      const YAML::Node a = l["axes"];
+      if (!a.IsDefined()) return false;
+      const std::string ax = text(a, item, "axes");
+      if (ax != "local" && ax != "global") fail(a, item, fmt::format("unknown axes '{}'; use local or global", ax));
+      return ax == "global";
+    };
+    if (type == "uniform") {
+      check_keys(l, item, {"beam", "type", "axes", "w"});
+      ml.type = msa::MemberLoadType::kUniform;
+      ml.global_axes = axes();
+      ml.w1 = per_length("w");
+    } else if (type == "trapezoidal") {
+      check_keys(l, item, {"beam", "type", "axes", "a", "b", "w1", "w2"});
+      ml.type = msa::MemberLoadType::kTrapezoidal;
+      ml.global_axes = axes();
+      ml.a = distance("a");
+      ml.b = distance("b");
+      if (!(ml.a < ml.b)) fail(l["b"], item, "the loaded stretch is empty or reversed; give a < b");
+      ml.w1 = per_length("w1");
+      ml.w2 = per_length("w2");
+    } else if (type == "point") {
+      check_keys(l, item, {"beam", "type", "axes", "a", "force", "moment"});
+      ml.type = msa::MemberLoadType::kPoint;
+      ml.global_axes = axes();
+      ml.a = distance("a");
+      const YAML::Node f = l["force"], m = l["moment"];
+      if (!f.IsDefined() && !m.IsDefined())
+        fail(l, item, "a point load needs 'force: [Fx, Fy, Fz]' and/or 'moment: [Mx, My, Mz]'");
+      if (f.IsDefined()) ml.force = vec3(f, item, "force", Quantity::kForce, units_.of(Quantity::kForce));
+      if (m.IsDefined()) ml.moment = vec3(m, item, "moment", Quantity::kMoment, units_.of(Quantity::kMoment));
+    } else if (type == "temperature") {
+      check_keys(l, item, {"beam", "type", "alpha", "hy", "hz", "dT", "dTy", "dTz"});
+      ml.type = msa::MemberLoadType::kTemperature;
+      ThermalLoad& th = ml.thermal;
+      th.alpha = value(require(l, item, "alpha"), item, "alpha", Quantity::kThermalExpansion, {}, Sign::kPositive);
+      auto temperature = [&](const char* key) {
+        const YAML::Node v = l[key];
+        return v.IsDefined() ? value(v, item, key, Quantity::kTemperature, {}) : 0.0;
+      };
+      th.dT = temperature("dT");
+      th.dTy = temperature("dTy");
+      th.dTz = temperature("dTz");
+      // A depth is required only with its gradient.
+      auto depth = [&](const char* key, bool needed) {
+        const YAML::Node v = needed ? require(l, item, key) : l[key];
+        return v.IsDefined() ? value(v, item, key, Quantity::kLength, lu, Sign::kPositive) : 0.0;
+      };
+      th.hy = depth("hy", th.dTy != 0.0);
+      th.hz = depth("hz", th.dTz != 0.0);
+      if (th.dT == 0.0 && th.dTy == 0.0 && th.dTz == 0.0)
+        fail(l, item, "a temperature load needs dT (uniform change) and/or dTy, dTz (differences across the depths)");
+    } else {
+      fail(tn, item, fmt::format("unknown member load type '{}'; use uniform, trapezoidal, point or temperature", type));
+    }
+    return ml;
   }
 
   FileUnits units_;

@@ -138,6 +138,10 @@ UnitOfInput FileUnits::of(Quantity q) const {
     case Quantity::kInertia: return {area * area, "mm^4"};
     case Quantity::kTranslationalStiffness: return {force / length, "N/mm"};
     case Quantity::kRotationalStiffness: return {force * length, "N mm/rad"};
+    // Mass is force / acceleration: N s^2/mm = 1000 kg = 1 t, so a density is in t/mm^3.
+    case Quantity::kDensity: return {force / (area * area), "t/mm^3"};
+    case Quantity::kAcceleration: return {length, "mm/s^2"};
+    case Quantity::kForcePerLength: return {force / length, "N/mm"};
     default: return {};
   }
 }

@@ -38,4 +38,62 @@ StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s) {
   return K;
 }
 
+StatusOr<std::vector<Vec12>> fixed_end_forces(const Structure& s, const LoadCase& lc) {
+  const bool weight = lc.gravity.squaredNorm() > 0.0;
+  if (!weight && lc.member_loads.empty()) return std::vector<Vec12>{};
+  const auto& beams = s.beams();
+  std::vector<Vec12> fef(beams.size(), Vec12::Zero());
+  auto span = [&s](const Beam& b) {
+    return BeamSpan{s.materials()[b.material], s.sections()[b.section], s.beam_length(b), b.theory};
+  };
+  if (weight) {
+    for (size_t i = 0; i < beams.size(); ++i) {
+      const Beam& b = beams[i];
+      const double rho = s.materials()[b.material].density;
+      if (rho == 0.0) continue;
+      const Vec3 w = rho * s.sections()[b.section].A * lc.gravity;  // N/m, global
+      fef[i] += uniform_load_fixed_end_forces(span(b), s.beam_axes(b).transpose() * w);
+    }
+  }
+  for (const MemberLoad& ml : lc.member_loads) {
+    const Beam& b = beams[ml.beam];
+    const Mat3 axes = s.beam_axes(b);  // columns: local axes in global coordinates
+    auto local = [&](const Vec3& v) { return ml.global_axes ? Vec3(axes.transpose() * v) : v; };
+    const BeamSpan sp = span(b);
+    Vec12& f = fef[ml.beam];
+    switch (ml.type) {
+      case MemberLoadType::kUniform: f += uniform_load_fixed_end_forces(sp, local(ml.w1)); break;
+      case MemberLoadType::kTrapezoidal:
+        f += trapezoidal_load_fixed_end_forces(sp, ml.a, ml.b, local(ml.w1), local(ml.w2));
+        break;
+      case MemberLoadType::kPoint: f += point_load_fixed_end_forces(sp, ml.a, local(ml.force), local(ml.moment)); break;
+      case MemberLoadType::kTemperature: f += temperature_fixed_end_forces(sp, ml.thermal); break;
+    }
+  }
+  for (size_t i = 0; i < beams.size(); ++i) {
+    const Beam& b = beams[i];
+    bool released = false;
+    for (bool r : b.releases) released = released || r;
+    if (!released || fef[i].isZero(0.0)) continue;
+    const BeamSpan sp = span(b);
+    auto c = condense_fixed_end_forces(beam_local_stiffness(sp.material, sp.section, sp.length, b.theory), b.releases,
+                                       fef[i]);
+    if (!c.ok()) return Status::Invalid(at_source(b.source, fmt::format("beam '{}': {}", b.id, c.status().message())));
+    fef[i] = *c;
+  }
+  return fef;
+}
+
+VecX equivalent_nodal_loads(const Structure& s, const std::vector<Vec12>& fef) {
+  VecX f = VecX::Zero(s.num_dofs());
+  for (size_t i = 0; i < fef.size(); ++i) {
+    if (fef[i].isZero(0.0)) continue;
+    const Beam& b = s.beams()[i];
+    const Vec12 g = -(beam_transformation(s.beam_axes(b)).transpose() * fef[i]);
+    f.segment<6>(6 * b.node1) += g.head<6>();
+    f.segment<6>(6 * b.node2) += g.tail<6>();
+  }
+  return f;
+}
+
 }  // namespace kinestat::msa

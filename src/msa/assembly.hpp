@@ -20,4 +20,12 @@ StatusOr<BeamMatrices> beam_matrices(const Structure& s, const Beam& b);
 // Assembles K (6N x 6N, both triangles). Fails only for invalid end releases (item named).
 StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s);
 
+// Fixed-end forces of a load case's member loads and self-weight: one per beam, local axes, end
+// releases condensed (elements/member_loads.hpp). Empty when the case has neither.
+StatusOr<std::vector<Vec12>> fixed_end_forces(const Structure& s, const LoadCase& lc);
+
+// The equivalent nodal loads -T' FEF of every beam, summed into a 6N global vector (zero for an
+// empty `fef`). Each beam's pair has the resultant (force and moment) of its span loads.
+VecX equivalent_nodal_loads(const Structure& s, const std::vector<Vec12>& fef);
+
 }  // namespace kinestat::msa

@@ -94,8 +94,10 @@ VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& re
   return carried;
 }
 
+// `f` includes the equivalent nodal loads of the member loads, whose fixed-end forces `fef` (per
+// beam, local; empty: none) are added to k T u to give the members' true end forces.
 LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCase& lc, const VecX& u, const VecX& f,
-                            const VecX& u0) {
+                            const VecX& u0, const std::vector<Vec12>& fef) {
   LoadCaseResult r;
   r.name = lc.name;
   const int nn = static_cast<int>(s.nodes().size());
@@ -131,11 +133,13 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   const double fn = (sys.map.C.transpose() * (f - sys.K * u0)).norm();  // the reduced right-hand side
   r.free_dof_residual = fn > 0 ? rr.norm() / fn : rr.norm();
 
-  for (const Beam& b : s.beams()) {
+  for (size_t i = 0; i < s.beams().size(); ++i) {
+    const Beam& b = s.beams()[i];
     const auto m = beam_matrices(s, b);  // cannot fail: assembly already succeeded
     Vec12 ue;
     ue << u.segment<6>(6 * b.node1), u.segment<6>(6 * b.node2);
     r.beam_end_forces.push_back(m->local * (m->transform * ue));
+    if (!fef.empty()) r.beam_end_forces.back() += fef[i];
   }
   for (size_t j = 0; j < s.joints().size(); ++j) {
     const Joint& jt = s.joints()[j];
@@ -218,8 +222,15 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
 
   const int nc = static_cast<int>(s.load_cases().size());
   MatX F(s.num_dofs(), nc), U0(s.num_dofs(), nc);
+  std::vector<std::vector<Vec12>> fef(nc);  // per case: member loads' fixed-end forces per beam
   for (int c = 0; c < nc; ++c) {
-    F.col(c) = nodal_loads(s, s.load_cases()[c]);
+    auto fc = fixed_end_forces(s, s.load_cases()[c]);
+    if (!fc.ok()) {
+      sol.status = fc.status();
+      return sol;
+    }
+    fef[c] = std::move(*fc);
+    F.col(c) = nodal_loads(s, s.load_cases()[c]) + equivalent_nodal_loads(s, fef[c]);
     U0.col(c) = prescribed_displacements(s, s.load_cases()[c]);
   }
   MatX Q;
@@ -229,7 +240,8 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
       return sol;
     }
     const MatX U = sys->map.C * Q + U0;
-    for (int c = 0; c < nc; ++c) sol.cases.push_back(post_process(s, *sys, s.load_cases()[c], U.col(c), F.col(c), U0.col(c)));
+    for (int c = 0; c < nc; ++c)
+      sol.cases.push_back(post_process(s, *sys, s.load_cases()[c], U.col(c), F.col(c), U0.col(c), fef[c]));
     // A regularized answer is out of balance along its free motions by construction (and marked).
     if (Status st = check_equilibrium(s, sol.cases, opt.max_equilibrium_error); !sol.regularized && !st.ok()) {
       sol.status = st;

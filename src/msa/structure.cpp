@@ -66,6 +66,11 @@ int Structure::add_load_case(LoadCase lc) {
 std::optional<int> Structure::find_node(const std::string& id) const { return find_by_id(nodes_, id); }
 std::optional<int> Structure::find_material(const std::string& id) const { return find_by_id(materials_, id); }
 std::optional<int> Structure::find_section(const std::string& id) const { return find_by_id(sections_, id); }
+std::optional<int> Structure::find_beam(const std::string& id) const { return find_by_id(beams_, id); }
+
+double Structure::beam_length(const Beam& b) const {
+  return (nodes_[b.node2].position - nodes_[b.node1].position).norm();
+}
 
 double Structure::length_scale() const {
   if (nodes_.size() < 2) return 1.0;
@@ -110,12 +115,17 @@ Status Structure::validate() const {
         return invalid(n.source, st.message());
   const double tol = 1e-9 * length_scale();
 
-  for (const auto& m : materials_)
+  for (const auto& m : materials_) {
     for (const auto& [name, value] : {std::pair{"E", m.E}, std::pair{"G", m.G}})
       if (Status st = check_quantity(value, Quantity::kModulus, fmt::format("material '{}': {}", m.id, name), {},
                                      Sign::kPositive);
           !st.ok())
         return st;
+    if (Status st = check_quantity(m.density, Quantity::kDensity, fmt::format("material '{}': density", m.id), {},
+                                   Sign::kNonNegative);
+        !st.ok())
+      return st;
+  }
   for (const auto& s : sections_) {
     const std::pair<const char*, double> values[] = {{"A", s.A}, {"Iy", s.Iy}, {"Iz", s.Iz}, {"J", s.J},
                                                      {"Asy", s.Asy}, {"Asz", s.Asz}};
@@ -199,6 +209,21 @@ Status Structure::validate() const {
             !st.ok())
           return invalid(l.source, st.message());
     }
+    for (int k = 0; k < 3; ++k)
+      if (Status st = check_quantity(lc.gravity(k), Quantity::kAcceleration,
+                                     fmt::format("load case '{}': gravity {}", lc.name, "xyz"[k]));
+          !st.ok())
+        return invalid(lc.source, st.message());
+    if (lc.gravity.squaredNorm() > 0.0) {
+      bool weight = false;
+      for (const auto& b : beams_) weight = weight || materials_[b.material].density > 0.0;
+      if (!weight)
+        return invalid(lc.source, fmt::format("load case '{}': gravity is given but no beam's material has a density, "
+                                              "so it would load nothing; add density to the materials",
+                                              lc.name));
+    }
+    for (const auto& ml : lc.member_loads)
+      if (Status st = validate_member_load(lc, ml); !st.ok()) return st;
     // The loads are summed per node and over the structure: the sums must be finite too.
     Vec6 total = Vec6::Zero();
     for (const auto& l : lc.loads) total += l.wrench.cwiseAbs();
@@ -228,6 +253,62 @@ Status Structure::validate() const {
   }
   if (report_node_ && !node_ok(*report_node_)) return invalid(source_, "the report node does not exist");
   return Status::Ok();
+}
+
+// Called by validate() after the beams are checked, so the beam's length is known.
+Status Structure::validate_member_load(const LoadCase& lc, const MemberLoad& ml) const {
+  auto invalid = [&](const std::string& message) { return Status::Invalid(at_source(ml.source, message)); };
+  if (ml.beam < 0 || ml.beam >= static_cast<int>(beams_.size()))
+    return invalid(fmt::format("load case '{}': a member load is applied to a beam that does not exist", lc.name));
+  const Beam& b = beams_[ml.beam];
+  const std::string item = fmt::format("load case '{}': the member load on beam '{}'", lc.name, b.id);
+  auto check = [&](double v, Quantity q, const char* what, Sign sign = Sign::kAny) {
+    Status st = check_quantity(v, q, fmt::format("{}, {}", item, what), {}, sign);
+    return st.ok() ? st : invalid(st.message());
+  };
+  auto check3 = [&](const Vec3& v, Quantity q, const char* what) {
+    for (int k = 0; k < 3; ++k)
+      if (Status st = check(v(k), q, what); !st.ok()) return st;
+    return Status::Ok();
+  };
+  const double L = beam_length(b);
+  auto inside = [&](double x, const char* name) {
+    if (Status st = check(x, Quantity::kLength, name); !st.ok()) return st;
+    if (x < 0.0 || x > L)
+      return invalid(fmt::format("{}: {} = {:g} m lies outside the beam (length {:g} m); give a distance from its first "
+                                 "node between 0 and the length",
+                                 item, name, x, L));
+    return Status::Ok();
+  };
+  switch (ml.type) {
+    case MemberLoadType::kUniform:
+      return check3(ml.w1, Quantity::kForcePerLength, "w");
+    case MemberLoadType::kTrapezoidal:
+      for (const Status& st : {check3(ml.w1, Quantity::kForcePerLength, "w1"),
+                               check3(ml.w2, Quantity::kForcePerLength, "w2"), inside(ml.a, "a"), inside(ml.b, "b")})
+        if (!st.ok()) return st;
+      if (!(ml.a < ml.b))
+        return invalid(fmt::format("{}: the loaded stretch [a, b] = [{:g}, {:g}] m is empty; give a < b", item, ml.a,
+                                   ml.b));
+      return Status::Ok();
+    case MemberLoadType::kPoint:
+      for (const Status& st : {check3(ml.force, Quantity::kForce, "force"), check3(ml.moment, Quantity::kMoment, "moment"),
+                               inside(ml.a, "a")})
+        if (!st.ok()) return st;
+      return Status::Ok();
+    case MemberLoadType::kTemperature: {
+      const ThermalLoad& t = ml.thermal;
+      for (const Status& st :
+           {check(t.alpha, Quantity::kThermalExpansion, "alpha", Sign::kPositive),
+            check(t.dT, Quantity::kTemperature, "dT"), check(t.dTy, Quantity::kTemperature, "dTy"),
+            check(t.dTz, Quantity::kTemperature, "dTz"),
+            check(t.hy, Quantity::kLength, "hy", t.dTy != 0.0 ? Sign::kPositive : Sign::kNonNegative),
+            check(t.hz, Quantity::kLength, "hz", t.dTz != 0.0 ? Sign::kPositive : Sign::kNonNegative)})
+        if (!st.ok()) return st;
+      return Status::Ok();
+    }
+  }
+  return invalid(item + ": unknown member load type");
 }
 
 }  // namespace kinestat::msa

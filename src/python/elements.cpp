@@ -2,20 +2,24 @@
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/joint_element.hpp"
 #include "kinestat/elements/material.hpp"
+#include "kinestat/elements/member_loads.hpp"
 #include "kinestat/elements/section.hpp"
 #include "python/bindings.hpp"
 
 namespace kinestat::python {
 
 void bind_elements(py::module_& m) {
-  py::class_<Material>(m, "Material", "Linear elastic isotropic material: E and G in Pa.")
-      .def(py::init([](std::string id, double E, double G) { return Material{std::move(id), E, G}; }),
-           py::arg("id") = "", py::arg("E") = 0.0, py::arg("G") = 0.0)
+  py::class_<Material>(m, "Material", "Linear elastic isotropic material: E and G in Pa, density in kg/m^3.")
+      .def(py::init([](std::string id, double E, double G, double density) {
+             return Material{std::move(id), E, G, density};
+           }),
+           py::arg("id") = "", py::arg("E") = 0.0, py::arg("G") = 0.0, py::arg("density") = 0.0)
       .def_static("from_E_nu", &Material::from_E_nu, py::arg("id"), py::arg("E"), py::arg("nu"),
                   "From Young's modulus E (Pa) and Poisson's ratio nu.")
       .def_readwrite("id", &Material::id)
       .def_readwrite("E", &Material::E, "Young's modulus (Pa)")
       .def_readwrite("G", &Material::G, "shear modulus (Pa)")
+      .def_readwrite("density", &Material::density, "mass per volume (kg/m^3), for self-weight; 0: weightless")
       .def_property_readonly("nu", &Material::nu, "Poisson's ratio E / 2G - 1")
       .def("__repr__", [](const Material& x) {
         return "Material(id='" + x.id + "', E=" + std::to_string(x.E) + ", G=" + std::to_string(x.G) + ")";
@@ -49,6 +53,21 @@ void bind_elements(py::module_& m) {
   m.def("scaled_section", &scaled_section, py::arg("section"), py::arg("factor"),
         "Every dimension times factor: areas x factor^2, moments x factor^4.");
   m.def("rectangle_torsion_constant", &rectangle_torsion_constant, py::arg("b"), py::arg("h"));
+
+  py::class_<ThermalLoad>(m, "ThermalLoad",
+                          "A temperature change of a beam: alpha (1/K), uniform dT, differences across the section "
+                          "dTy = T(+y) - T(-y) over the depth hy (m), dTz over hz (K).")
+      .def(py::init([](double alpha, double hy, double hz, double dT, double dTy, double dTz) {
+             return ThermalLoad{alpha, hy, hz, dT, dTy, dTz};
+           }),
+           py::arg("alpha") = 0.0, py::arg("hy") = 0.0, py::arg("hz") = 0.0, py::arg("dT") = 0.0,
+           py::arg("dTy") = 0.0, py::arg("dTz") = 0.0)
+      .def_readwrite("alpha", &ThermalLoad::alpha)
+      .def_readwrite("hy", &ThermalLoad::hy)
+      .def_readwrite("hz", &ThermalLoad::hz)
+      .def_readwrite("dT", &ThermalLoad::dT)
+      .def_readwrite("dTy", &ThermalLoad::dTy)
+      .def_readwrite("dTz", &ThermalLoad::dTz);
 
   py::enum_<BeamTheory>(m, "BeamTheory")
       .value("EULER_BERNOULLI", BeamTheory::kEulerBernoulli)

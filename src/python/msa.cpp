@@ -92,15 +92,63 @@ void bind_model(py::module_& m) {
       .def_readwrite("dof", &PrescribedDisplacement::dof)
       .def_readwrite("value", &PrescribedDisplacement::value);
 
+  py::enum_<MemberLoadType>(m, "MemberLoadType")
+      .value("UNIFORM", MemberLoadType::kUniform)
+      .value("TRAPEZOIDAL", MemberLoadType::kTrapezoidal)
+      .value("POINT", MemberLoadType::kPoint)
+      .value("TEMPERATURE", MemberLoadType::kTemperature);
+
+  py::class_<MemberLoad>(m, "MemberLoad",
+                         "A load on a beam's span (docs/structure-format.md): uniform w1 (N/m); trapezoidal w1 at a "
+                         "to w2 at b (m from the first node); point force (N) and moment (N m) at a; temperature. "
+                         "Vectors in the beam's local axes, or global when global_axes.")
+      .def(py::init([](int beam, MemberLoadType type, bool global_axes, const Vec3& w1, const Vec3& w2, double a,
+                       double b, const Vec3& force, const Vec3& moment, const ThermalLoad& thermal) {
+             MemberLoad ml;
+             ml.beam = beam;
+             ml.type = type;
+             ml.global_axes = global_axes;
+             ml.w1 = w1;
+             ml.w2 = w2;
+             ml.a = a;
+             ml.b = b;
+             ml.force = force;
+             ml.moment = moment;
+             ml.thermal = thermal;
+             return ml;
+           }),
+           py::arg("beam"), py::arg("type"), py::arg("global_axes") = false, py::arg("w1") = Vec3(Vec3::Zero()),
+           py::arg("w2") = Vec3(Vec3::Zero()), py::arg("a") = 0.0, py::arg("b") = 0.0,
+           py::arg("force") = Vec3(Vec3::Zero()), py::arg("moment") = Vec3(Vec3::Zero()),
+           py::arg("thermal") = ThermalLoad{})
+      .def_readwrite("beam", &MemberLoad::beam)
+      .def_readwrite("type", &MemberLoad::type)
+      .def_readwrite("global_axes", &MemberLoad::global_axes)
+      .def_readwrite("w1", &MemberLoad::w1)
+      .def_readwrite("w2", &MemberLoad::w2)
+      .def_readwrite("a", &MemberLoad::a)
+      .def_readwrite("b", &MemberLoad::b)
+      .def_readwrite("force", &MemberLoad::force)
+      .def_readwrite("moment", &MemberLoad::moment)
+      .def_readwrite("thermal", &MemberLoad::thermal);
+
   py::class_<LoadCase>(m, "LoadCase")
-      .def(py::init([](std::string name, std::vector<NodalLoad> loads, std::vector<PrescribedDisplacement> prescribed) {
-             return LoadCase{std::move(name), std::move(loads), std::move(prescribed)};
+      .def(py::init([](std::string name, std::vector<NodalLoad> loads, std::vector<PrescribedDisplacement> prescribed,
+                       const Vec3& gravity, std::vector<MemberLoad> member_loads) {
+             return LoadCase{.name = std::move(name),
+                             .loads = std::move(loads),
+                             .prescribed = std::move(prescribed),
+                             .gravity = gravity,
+                             .member_loads = std::move(member_loads)};
            }),
            py::arg("name"), py::arg("loads") = std::vector<NodalLoad>{},
-           py::arg("prescribed") = std::vector<PrescribedDisplacement>{})
+           py::arg("prescribed") = std::vector<PrescribedDisplacement>{}, py::arg("gravity") = Vec3(Vec3::Zero()),
+           py::arg("member_loads") = std::vector<MemberLoad>{})
       .def_readwrite("name", &LoadCase::name)
       .def_readwrite("loads", &LoadCase::loads, copy)
-      .def_readwrite("prescribed", &LoadCase::prescribed, copy);
+      .def_readwrite("prescribed", &LoadCase::prescribed, copy)
+      .def_readwrite("gravity", &LoadCase::gravity, "self-weight acceleration (m/s^2), global axes")
+      .def_readwrite("member_loads", &LoadCase::member_loads, copy);
 
   py::class_<Structure>(m, "Structure",
                         "The MSA model (SI units): nodes, materials, sections, beams, joints, rigid links, supports, "

@@ -159,3 +159,27 @@ def test_singular_posture_raises_singular_error_with_free_motion():
     sol = ks.msa.solve(s, raise_on_singular=False)
     assert sol.status.code == ks.StatusCode.SINGULAR and sol.cases == []
     assert sol.singularity.message == str(e.value)
+
+
+def test_self_weight_and_member_load_on_a_cantilever():
+    # Tip deflection of a cantilever under its weight rho A g L^4 / 8EI, plus a uniform member load
+    # w L^4 / 8EI; the free end's true end forces are zero (k u + fixed-end forces).
+    L, E, rho, g, w = 1.5, 210e9, 7850.0, 9.81, -300.0
+    s = ks.msa.Structure()
+    a = s.add_node("A", [0, 0, 0])
+    b = s.add_node("B", [L, 0, 0])
+    steel = s.add_material(ks.Material("steel", E, E / 2.6, density=rho))
+    bar = ks.rectangle_section(0.02, 0.04)
+    sec = s.add_section(bar)
+    s.add_beam(ks.msa.Beam("arm", a, b, material=steel, section=sec))
+    s.add_support(ks.msa.Support(a))
+    s.add_load_case(ks.msa.LoadCase("weight", gravity=[0, 0, -g]))
+    ml = ks.msa.MemberLoad(0, ks.msa.MemberLoadType.UNIFORM, global_axes=True, w1=[0, 0, w])
+    s.add_load_case(ks.msa.LoadCase("udl", member_loads=[ml]))
+    sol = ks.msa.solve(s)
+    EI = E * bar.Iy
+    q = rho * bar.A * g
+    assert sol.cases[0].displacement[1, 2] == pytest.approx(-q * L**4 / (8 * EI), rel=1e-9)
+    assert sol.cases[1].displacement[1, 2] == pytest.approx(w * L**4 / (8 * EI), rel=1e-9)
+    assert sol.cases[1].reaction[0, 2] == pytest.approx(-w * L, rel=1e-9)
+    assert np.abs(sol.cases[1].beam_end_forces[0, 6:]).max() < 1e-9 * abs(w) * L * L

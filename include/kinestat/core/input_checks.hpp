@@ -24,6 +24,11 @@ enum class Quantity {
   kRotationalStiffness,      // N m/rad
   kCompliance,               // m/N, 1/N, rad/(N m): any compliance term
   kRatio,                    // dimensionless: coefficients, factors, Poisson's ratio
+  kDensity,                  // kg/m^3
+  kAcceleration,             // m/s^2: gravity
+  kForcePerLength,           // N/m: distributed loads on beams
+  kTemperature,              // K: temperature changes
+  kThermalExpansion,         // 1/K
 };
 
 struct QuantityRange {

@@ -31,6 +31,10 @@ Mat12 beam_local_stiffness(const Material& m, const Section& s, double length, B
 // Fails when the released dofs leave the element itself free (e.g. torsion released at both ends).
 StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released);
 
+// The same condensation of a fixed-end force vector f (member_loads.hpp) of the unreleased element
+// K: f*_a = f_a - K_ar K_rr^-1 f_r, zero at r (the released dofs carry no force).
+StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& released, const Vec12& f);
+
 // T such that u_local = T u_global, from the local axes (columns x, y, z in global coordinates).
 Mat12 beam_transformation(const Mat3& axes);
 

@@ -13,6 +13,7 @@
 #include "kinestat/core/types.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/material.hpp"
+#include "kinestat/elements/member_loads.hpp"
 #include "kinestat/elements/section.hpp"
 
 namespace kinestat::msa {
@@ -83,12 +84,34 @@ struct PrescribedDisplacement {
   std::string source{};
 };
 
+enum class MemberLoadType { kUniform, kTrapezoidal, kPoint, kTemperature };
+
+// A load on the span of a beam (elements/member_loads.hpp gives its fixed-end forces). Vectors are
+// in the beam's local axes, or in global axes when `global_axes`; distances a, b are measured along
+// the beam from its first node (m). A distributed load is per unit length of the beam (N/m).
+struct MemberLoad {
+  int beam = -1;
+  MemberLoadType type = MemberLoadType::kUniform;
+  bool global_axes = false;
+  Vec3 w1 = Vec3::Zero();   // uniform: the load; trapezoidal: the load at a (N/m)
+  Vec3 w2 = Vec3::Zero();   // trapezoidal: the load at b (N/m)
+  double a = 0.0;           // trapezoidal: start; point: where the force acts (m)
+  double b = 0.0;           // trapezoidal: end, a < b <= L (m)
+  Vec3 force = Vec3::Zero();   // point (N)
+  Vec3 moment = Vec3::Zero();  // point (N m)
+  ThermalLoad thermal{};       // temperature (local axes always)
+  std::string source{};
+};
+
 // (Every member has an initializer, so that designated initializers may leave any out warning-free.)
 struct LoadCase {
   std::string name{};
   std::vector<NodalLoad> loads{};
   std::vector<PrescribedDisplacement> prescribed{};
   std::string source{};
+  // Self-weight: every beam carries the uniform global load density * A * gravity (m/s^2).
+  Vec3 gravity = Vec3::Zero();
+  std::vector<MemberLoad> member_loads{};
 };
 
 class Structure {
@@ -110,7 +133,7 @@ class Structure {
   // Checks what the assembly relies on: valid indices, unique ids, every value finite and in its
   // physical range (core/input_checks.hpp), positive lengths and section properties, coincident joint
   // nodes, loads on existing nodes whose sum is finite, one prescribed value per dof, no node both
-  // supported and constrained. Messages start with the item's source, name the item and say what to fix.
+  // supported and constrained, member loads on existing beams and inside their span. Messages start with the item's source, name the item and say what to fix.
   Status validate() const;
 
   const std::string& title() const { return title_; }
@@ -128,13 +151,17 @@ class Structure {
   std::optional<int> find_node(const std::string& id) const;
   std::optional<int> find_material(const std::string& id) const;
   std::optional<int> find_section(const std::string& id) const;
+  std::optional<int> find_beam(const std::string& id) const;
   int num_dofs() const { return kDofsPerNode * static_cast<int>(nodes_.size()); }
   // Largest distance between nodes (a length scale for tolerances); 1 if fewer than two nodes.
   double length_scale() const;
   // Local axes of a beam (x along it), from its orientation vector or the default.
   Mat3 beam_axes(const Beam& b) const;
+  double beam_length(const Beam& b) const;
 
  private:
+  Status validate_member_load(const LoadCase& lc, const MemberLoad& ml) const;
+
   std::string title_;
   std::string source_;
   std::vector<Node> nodes_;
