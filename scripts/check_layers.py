@@ -12,10 +12,11 @@
    links only the layers it includes).
 3. The examples (examples/) and the install test's consumer (tests/install/) include public headers
    only: they use kinestat as an outside project does.
+4. docs/architecture.md lists exactly the internal headers there are (src/L/x.hpp as `L/x`).
 
 Usage: scripts/check_layers.py [ROOT]        exit 0 when clean, 1 with one line per violation
-       scripts/check_layers.py --self-test   plants an upward include in a copy of the tree and
-                                             checks that it is caught (exit 0 when it is)
+       scripts/check_layers.py --self-test   plants four faults in a copy of the tree and checks
+                                             that each is caught (exit 0 when they are)
 """
 import pathlib
 import re
@@ -108,16 +109,37 @@ def check(root):
                     line = text.count("\n", 0, m.start()) + 1
                     errors.append(f"{path.relative_to(root)}:{line}: includes the internal header '{m.group(1)}'; "
                                   f"examples use public headers (kinestat/...) only")
+    errors += check_internal_header_list(root)
+    return errors
+
+
+def check_internal_header_list(root):
+    """docs/architecture.md lists every internal header (src/L/x.hpp as `L/x`) between its
+    'internal headers' markers, and nothing else: the list a newcomer reads stays true."""
+    doc = root / "docs" / "architecture.md"
+    if not doc.is_file():
+        return []
+    text = doc.read_text()
+    block = re.search(r"<!-- internal headers: begin -->(.*?)<!-- internal headers: end -->", text, re.S)
+    if not block:
+        return ["docs/architecture.md: the '<!-- internal headers: begin/end -->' list is missing"]
+    listed = set(re.findall(r"^\|\s*`(\w+/\w+)`", block.group(1), re.M))
+    present = {f"{p.parent.name}/{p.stem}" for p in (root / "src").glob("*/*.hpp")}
+    errors = [f"docs/architecture.md: internal header src/{h}.hpp is not in the list of internal headers; add it"
+              for h in sorted(present - listed)]
+    errors += [f"docs/architecture.md: lists the internal header `{h}`, but src/{h}.hpp does not exist"
+               for h in sorted(listed - present)]
     return errors
 
 
 def self_test(root):
-    """Plants an upward include, a cross-layer internal include and an internal include in a public
-    header of the same layer in a copy; all three must be reported."""
+    """Plants an upward include, a cross-layer internal include, an internal include in a public
+    header of the same layer and an internal header the architecture page does not list, in a copy;
+    all four must be reported."""
     root = pathlib.Path(root)
     with tempfile.TemporaryDirectory() as tmp:
         copy = pathlib.Path(tmp) / "tree"
-        for part in ("include", "src", "tests", "examples"):
+        for part in ("include", "src", "tests", "examples", "docs"):
             if (root / part).is_dir():
                 shutil.copytree(root / part, copy / part)
         if check(copy):
@@ -129,16 +151,18 @@ def self_test(root):
         header.write_text(header.read_text().replace("#pragma once", '#pragma once\n#include "vjm/bordered_system.hpp"', 1))
         public = copy / "include" / "kinestat" / "msa" / "structure.hpp"
         public.write_text(public.read_text().replace("#pragma once", '#pragma once\n#include "msa/dof_map.hpp"', 1))
+        (copy / "src" / "io" / "planted.hpp").write_text("#pragma once\n")
         errors = check(copy)
         upward = [e for e in errors if "src/msa/assembly.cpp:1:" in e and "higher" in e]
         internal = [e for e in errors if "five_bar.hpp" in e and "internal header" in e]
         installed = [e for e in errors if "msa/structure.hpp" in e and "not installed" in e]
-        if upward and internal and installed and len(errors) == 3:
-            print("self-test: the three planted includes caught:")
+        unlisted = [e for e in errors if "src/io/planted.hpp is not in the list" in e]
+        if upward and internal and installed and unlisted and len(errors) == 4:
+            print("self-test: the four planted faults caught:")
             for e in errors:
                 print("  " + e)
             return 0
-        print("self-test FAILED: planted includes not caught as expected; got:")
+        print("self-test FAILED: planted faults not caught as expected; got:")
         for e in errors:
             print("  " + e)
         return 1

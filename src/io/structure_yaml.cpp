@@ -46,7 +46,7 @@ class Parser : public YamlFields {
     check_keys(root, "file",
                {"units", "title", "beam_theory", "nodes", "materials", "sections", "beams", "joints", "rigid_links",
                 "supports", "load_cases", "report"});
-    units_ = units(root["units"]);
+    units_ = units(root["units"], true);
     if (const YAML::Node t = root["beam_theory"]; t.IsDefined()) default_theory_ = theory(t, "file", "beam_theory");
     s_.set_source(file());
     if (const YAML::Node t = root["title"]; t.IsDefined()) s_.set_title(text(t, "file", "title"));

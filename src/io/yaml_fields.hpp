@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <initializer_list>
+#include <optional>
 #include <string>
 
 #include "kinestat/core/input_checks.hpp"
@@ -24,13 +25,20 @@ struct YamlInputError {
 // "a, b, c"
 std::string join_keys(std::initializer_list<const char*> names);
 
-// Scale factors from a file's units to SI: `units: SI` (m, N, Pa) or `units: mm-N-s` (mm, N, MPa).
+// Scale factors from a file's units to SI: `units: SI` (m, N, Pa), `units: mm-N-s` (mm, N, MPa) or,
+// in structure files, any length and force unit `units: {length: in, force: kip}` (time in s, so
+// mass in force s^2/length).
 struct FileUnits {
   double length = 1.0;  // file length unit in m
   double force = 1.0;   // file force unit in N
+  std::string length_name = "m", force_name = "N";
   // The file's unit of `q` (its SI factor and name, e.g. 1e6 and "MPa"); angles: the SI rad.
   UnitOfInput of(Quantity q) const;
 };
+
+// A length or force unit by name: m, mm, cm, in, ft; N, kN, lbf, kip. nullopt when unknown.
+std::optional<double> length_unit(const std::string& name);
+std::optional<double> force_unit(const std::string& name);
 
 class YamlFields {
  public:
@@ -76,8 +84,8 @@ class YamlFields {
   // size. An unknown type fails at `type_node` naming `other_form` as the alternative.
   Section shape_section(const YAML::Node& n, const std::string& item, const YAML::Node& type_node,
                         const FileUnits& units, const std::string& other_form) const;
-  // The `units:` value (absent: SI).
-  FileUnits units(const YAML::Node& v) const;
+  // The `units:` value (absent: SI); `any_units`: also the map form {length: L, force: F}.
+  FileUnits units(const YAML::Node& v, bool any_units = false) const;
 
   const std::string& file() const { return file_; }
   const std::string& format_doc() const { return doc_; }

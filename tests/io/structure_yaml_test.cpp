@@ -215,6 +215,45 @@ TEST(StructureYaml, RollAngleGivesFrame3ddLocalAxes) {
                12, {"beam 'b'", "either 'orientation' or 'roll'"});
 }
 
+// Any length and force unit (issue 20): {length: in, force: kip}, converted once on reading with
+// the exact definitions (1 in = 0.0254 m, 1 kip = 4448.2216152605 N). Frame3DD's example A gives its
+// steel 7.33e-7 kip s^2/in^4, which must arrive as a steel density (7833 kg/m^3).
+TEST(StructureYaml, KipAndInchArriveInSI) {
+  const char* yaml = R"(
+units: {length: in, force: kip}
+nodes:
+  - {id: A, xyz: [0, 0, 0]}
+  - {id: B, xyz: [120, 0, 0]}
+materials:
+  - {id: steel, E: 29000, G: 11500, density: 7.33e-7}
+sections:
+  - {id: s, A: 10, Iy: 1, Iz: 0.01, J: 1}
+beams:
+  - {id: b, nodes: [A, B], material: steel, section: s}
+supports:
+  - {node: A, fixed: all}
+load_cases:
+  - name: tip
+    loads:
+      - {node: B, force: [0, -10, 0], moment: [0, 0, 5]}
+)";
+  auto s = read_structure_yaml_string(yaml, "kip.yaml");
+  ASSERT_TRUE(s.ok()) << s.status().message();
+  const double in = 0.0254, kip = 4448.2216152605;
+  EXPECT_DOUBLE_EQ(s->nodes()[1].position.x(), 120 * in);
+  EXPECT_DOUBLE_EQ(s->materials()[0].E, 29000 * kip / (in * in));
+  EXPECT_DOUBLE_EQ(s->sections()[0].Iz, 0.01 * in * in * in * in);
+  EXPECT_NEAR(s->materials()[0].density, 7833.4, 0.1);
+  EXPECT_DOUBLE_EQ(s->load_cases()[0].loads[0].wrench(1), -10 * kip);
+  EXPECT_DOUBLE_EQ(s->load_cases()[0].loads[0].wrench(5), 5 * kip * in);
+  // Messages speak the file's units.
+  expect_error("units: {length: in, force: kip}\nnodes:\n  - {id: A, xyz: [0, 0, 1e300]}\n", 3, {"1e+300 in"});
+  expect_error("units: {length: furlong, force: kip}\nnodes:\n  - {id: A, xyz: [0, 0, 0]}\n", 1,
+               {"unknown length unit 'furlong'", "m, mm, cm, in or ft"});
+  expect_error("units: {length: in, force: lb}\nnodes:\n  - {id: A, xyz: [0, 0, 0]}\n", 1,
+               {"unknown force unit 'lb'", "lbf"});
+}
+
 TEST(StructureYaml, LoadCaseErrors) {
   const std::string m = kBeamModel;
   expect_error(m + "load_cases:\n  - name: a\n    loads:\n      - {node: B}\n", 14, {"load case 'a'", "force"});
