@@ -79,12 +79,16 @@ StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& re
     key = link_stiffness_cache_key(*identity, request.material, request.options);
     run.cache_file = link_stiffness_cache_path(request.cache_dir, key);
     if (!request.options.keep_fields) {
-      if (std::optional<LinkStiffness> cached = load_cached_link_stiffness(request.cache_dir, key)) {
-        run.result = std::move(*cached);
+      StatusOr<CachedLinkStiffness> cached = load_cached_link_stiffness(request.cache_dir, key);
+      if (!cached.ok()) return cached.status();
+      if (cached->result) {
+        run.result = std::move(*cached->result);
         run.from_cache = true;
         run.report = fmt::format("(from cache {})\n", run.cache_file) + link_stiffness_report(run.result);
         return run;
       }
+      // A damaged entry is recomputed (and replaced), never used; the caller shows why.
+      if (!cached->rejected.empty()) run.warnings.push_back(cached->rejected + "; recomputing it");
     }
   }
   if (request.options.progress)

@@ -1,12 +1,14 @@
 #include "io/vtk_files.hpp"
 
-#include <fstream>
-
 #include <fmt/format.h>
 #include <vtkDataObject.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkStringArray.h>
+#include <vtkXMLWriter.h>
+
+#include "kinestat/core/atomic_file.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -34,17 +36,30 @@ void add_units(vtkDataObject& data, const std::vector<std::pair<std::string, std
   data.GetFieldData()->AddArray(a);
 }
 
+Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path) {
+  return write_file_atomically(path, [&](const std::string& temp) {
+    writer.SetFileName(temp.c_str());
+    const int written = writer.Write();
+    const unsigned long error = writer.GetErrorCode();
+    writer.SetFileName(nullptr);
+    // (vtkErrorCode's names would link VTK::CommonMisc for one message: the code is named here.)
+    if (error == vtkErrorCode::OutOfDiskSpaceError)
+      return Status::Invalid(fmt::format("{}: VTK could not write the file: out of disk space; free some", path));
+    if (written != 1 || error != vtkErrorCode::NoError)
+      return Status::Invalid(fmt::format("{}: VTK could not write the file (VTK error code {}); check that the "
+                                         "folder is writable and has room",
+                                         path, error));
+    return Status::Ok();
+  });
+}
+
 Status write_pvd(const std::string& path, const std::vector<PvdEntry>& entries) {
-  std::ofstream out(path);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   for (std::size_t i = 0; i < entries.size(); ++i)
-    out << fmt::format("    <DataSet timestep=\"{}\" part=\"0\" name=\"{}\" file=\"{}\"/>\n", i,
-                       xml_escape(entries[i].name), xml_escape(entries[i].file));
-  out << "  </Collection>\n</VTKFile>\n";
-  out.close();
-  if (!out)
-    return Status::Invalid(fmt::format("{}: cannot write the collection file; check the directory is writable", path));
-  return Status::Ok();
+    text += fmt::format("    <DataSet timestep=\"{}\" part=\"0\" name=\"{}\" file=\"{}\"/>\n", i,
+                        xml_escape(entries[i].name), xml_escape(entries[i].file));
+  text += "  </Collection>\n</VTKFile>\n";
+  return write_text_file_atomically(path, text);
 }
 
 }  // namespace kinestat::io

@@ -9,12 +9,18 @@
 #include "kinestat/core/status.hpp"
 
 class vtkDataObject;
+class vtkXMLWriter;
 
 namespace kinestat::io {
 
 // Field data "units": one string "QUANTITY: UNIT" per entry, e.g. {"coordinates", "m"}, so the
 // units travel with the file (ParaView lists field data in its Information panel).
 void add_units(vtkDataObject& data, const std::vector<std::pair<std::string, std::string>>& units);
+
+// Runs `writer` (its input set) into `path` through write_file_atomically: VTK writes a temporary
+// file, whose success (Write() and GetErrorCode(), which reports a full disk) is checked before it
+// replaces `path`. kInvalidInput naming `path`.
+Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path);
 
 struct PvdEntry {
   std::string file;  // relative to the .pvd's folder

@@ -84,8 +84,9 @@ TEST(VjmFeaSpring, BarMatchesTimoshenkoCantileverAndSecondReadComesFromTheCache)
   const std::vector<fs::path> cached = files_in(dir / "cache");
   ASSERT_EQ(cached.size(), 1u);
   const std::string key = cached[0].stem().string();
-  std::optional<fea::LinkStiffness> entry = fea::load_cached_link_stiffness((dir / "cache").string(), key);
-  ASSERT_TRUE(entry.has_value());
+  auto found = fea::load_cached_link_stiffness((dir / "cache").string(), key);
+  ASSERT_TRUE(found.ok() && found->result.has_value()) << (found.ok() ? found->rejected : found.status().message());
+  std::optional<fea::LinkStiffness>& entry = found->result;
   fea::set_compliance(*entry, 2.0 * entry->cartesian.compliance, entry->cartesian.point);
   ASSERT_TRUE(fea::store_cached_link_stiffness((dir / "cache").string(), key, *entry).ok());
   const Mat6 K_again = model_stiffness(read_vjm_model_yaml(model_file.string()));
