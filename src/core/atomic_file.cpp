@@ -64,7 +64,8 @@ int sync_file(const std::string& path) {
 int copy_into(const std::string& from, const std::string& to) {
   const int in = ::open(from.c_str(), O_RDONLY | O_CLOEXEC);
   if (in < 0) return errno;
-  const int out = ::open(to.c_str(), O_WRONLY | O_CLOEXEC);
+  // O_APPEND: /dev/stdout may be a regular file the shell opened for appending (>>).
+  const int out = ::open(to.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (out < 0) {
     const int error = errno;
     ::close(in);
@@ -99,14 +100,17 @@ struct RemoveUnlessKept {
 Status write_file_atomically(const std::string& path, const std::function<Status(const std::string&)>& write) {
   if (path.empty()) return Status::Invalid("an output file name is empty; give a file name");
   std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);  // of what a link names: /dev/stdout is a device
+  if (fs::is_directory(status)) return cannot_write(path, "it is a folder");
+  // /dev/stdout names whatever stdout is, possibly a regular file the shell opened for appending.
+  const bool device_name = path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0;
+  const bool special = fs::exists(status) && (!fs::is_regular_file(status) || device_name);
   fs::path target = path;
-  if (fs::is_symlink(fs::symlink_status(target, ec))) {
-    const fs::path resolved = fs::weakly_canonical(target, ec);
+  // A link to a regular file: the file is replaced, next to itself, and the link kept.
+  if (fs::is_regular_file(status) && fs::is_symlink(fs::symlink_status(path, ec))) {
+    const fs::path resolved = fs::canonical(path, ec);
     if (!ec) target = resolved;
   }
-  const fs::file_status status = fs::status(target, ec);
-  const bool special = fs::exists(status) && !fs::is_regular_file(status);
-  if (fs::is_directory(status)) return cannot_write(path, "it is a folder");
   // A device or FIFO cannot be renamed over: written through a temporary file elsewhere.
   const fs::path folder = special ? fs::temp_directory_path(ec) : target.parent_path();
   const auto [temp, error] = create_temporary(folder.empty() ? fs::path(".") : folder, target.filename().string());
@@ -114,6 +118,8 @@ Status write_file_atomically(const std::string& path, const std::function<Status
     return cannot_write(path, fmt::format("no temporary file can be created in {}: {}",
                                           folder.empty() ? "." : folder.string(), reason(error)));
   RemoveUnlessKept guard{temp};
+  // A file replaced keeps its permissions (a new one has 0666 less the umask, from open).
+  if (fs::is_regular_file(status)) fs::permissions(temp, status.permissions(), ec);
   if (Status s = write(temp); !s.ok()) return s;
   if (special) {
     if (const int e = copy_into(temp, target.string()); e != 0) return cannot_write(path, reason(e));

@@ -47,6 +47,11 @@ TEST(AtomicFile, WritesTheWholeFileWithOrdinaryPermissions) {
   // The same permissions as a file opened the usual way (0666 less the umask), not mkstemp's 0600.
   std::ofstream(dir / "reference") << "x";
   EXPECT_EQ(fs::status(path).permissions(), fs::status(dir / "reference").permissions());
+  // A file replaced keeps its permissions.
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  ASSERT_TRUE(write_text_file_atomically(path.string(), "{}\n").ok());
+  EXPECT_EQ(fs::status(path).permissions(), fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  EXPECT_EQ(read_file(path), "{}\n");
   fs::remove_all(dir);
 }
 
@@ -133,6 +138,19 @@ TEST(AtomicFile, FullDeviceIsAnErrorAndStaysADevice) {
   EXPECT_EQ(callback.code(), StatusCode::kInvalidInput) << callback.message();
   EXPECT_TRUE(write_text_file_atomically("/dev/null", "discarded").ok());
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+// A link to a file: the file is replaced beside itself and the link stays a link.
+TEST(AtomicFile, ALinkedFileIsReplacedAndTheLinkKept) {
+  const fs::path dir = fresh_dir("kinestat_atomic_link");
+  fs::create_directories(dir / "real");
+  std::ofstream(dir / "real" / "out.json") << "old";
+  fs::create_symlink(dir / "real" / "out.json", dir / "link.json");
+  ASSERT_TRUE(write_text_file_atomically((dir / "link.json").string(), "new").ok());
+  EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
+  EXPECT_EQ(read_file(dir / "real" / "out.json"), "new");
+  EXPECT_EQ(file_count(dir / "real"), 1);
+  fs::remove_all(dir);
 }
 
 TEST(AtomicFile, MissingFolderOrAFolderAtThePathIsAnError) {

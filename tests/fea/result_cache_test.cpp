@@ -2,12 +2,14 @@
 
 #include <sys/stat.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include "cache_entry_edit.hpp"
@@ -222,6 +224,41 @@ TEST(ResultCache, StoreLeavesOnlyTheEntry) {
   const std::string text = read_file(link_stiffness_cache_path(dir, key));
   EXPECT_NE(text.find("\nkey " + key + "\n"), std::string::npos);
   EXPECT_NE(text.find("\nsha256 "), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// Writers storing one entry while readers read it (as MPI ranks or parallel runs sharing a cache
+// do): every read finds a whole entry, never a half-written one.
+TEST(ResultCache, ConcurrentWritersNeverExposeHalfAnEntry) {
+  const std::string dir = (std::filesystem::temp_directory_path() / "kinestat_fea_cache_concurrent").string();
+  std::filesystem::remove_all(dir);
+  const std::string key = link_stiffness_cache_key("c", Material::from_E_nu("s", 210e9, 0.3), some_options());
+  ASSERT_TRUE(store_cached_link_stiffness(dir, key, valid_result()).ok());
+  std::atomic<int> rejected{0}, served{0}, failed_stores{0};
+  std::atomic<bool> done{false};
+  std::vector<std::thread> threads;
+  for (int w = 0; w < 3; ++w)
+    threads.emplace_back([&] {
+      for (int i = 0; i < 200; ++i)
+        if (!store_cached_link_stiffness(dir, key, valid_result()).ok()) ++failed_stores;
+    });
+  for (int r = 0; r < 2; ++r)
+    threads.emplace_back([&] {
+      while (!done) {
+        StatusOr<CachedLinkStiffness> found = load_cached_link_stiffness(dir, key);
+        if (!found.ok() || !found->result) ++rejected;
+        else ++served;
+      }
+    });
+  for (int w = 0; w < 3; ++w) threads[w].join();
+  done = true;
+  for (std::size_t t = 3; t < threads.size(); ++t) threads[t].join();
+  EXPECT_EQ(failed_stores, 0);
+  EXPECT_EQ(rejected, 0);
+  EXPECT_GT(served, 0);
+  int files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1);  // no temporary file left
   std::filesystem::remove_all(dir);
 }
 

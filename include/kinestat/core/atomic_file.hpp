@@ -14,8 +14,10 @@ namespace kinestat {
 // Writes the file `path` as a whole. `write` fills a new temporary file whose path it is given
 // (".NAME.tmp-PID-N" in the folder of `path`, so that the rename cannot cross file systems); that
 // file is then flushed to disk (fsync) and renamed over `path`. On any failure (`write`'s Status or
-// exception, fsync, rename) the temporary file is removed and `path` is left as it was.
-// A `path` that exists and is not a regular file (/dev/stdout, /dev/full, a FIFO) cannot be replaced:
+// exception, fsync, rename) the temporary file is removed and `path` is left as it was. A file
+// replaced keeps its permissions; a new one gets 0666 less the umask, as with an ordinary open.
+// A `path` that exists and is not a regular file (/dev/full, a FIFO), or is under /dev or /proc
+// (/dev/stdout, whatever stdout is), cannot be replaced:
 // the content is written to a temporary file in the system's temporary folder and then copied into
 // it, every write checked. A symbolic link is followed (the file it names is replaced).
 // kInvalidInput naming `path` and the system's reason when it cannot be written.
