@@ -41,7 +41,8 @@ int write_all(int fd, const char* data, std::size_t size) {
 std::pair<std::string, int> create_temporary(const fs::path& folder, const std::string& name) {
   static std::atomic<unsigned> counter{0};
   for (int attempt = 0; attempt < 100; ++attempt) {
-    const fs::path temp = folder / fmt::format(".{}.tmp-{}-{}", name, ::getpid(), counter++);
+    // The name shortened so that the temporary one stays within NAME_MAX (255) when the final one does.
+    const fs::path temp = folder / fmt::format(".{}.tmp-{}-{}", name.substr(0, 200), ::getpid(), counter++);
     const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);

@@ -140,6 +140,15 @@ TEST(AtomicFile, FullDeviceIsAnErrorAndStaysADevice) {
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
+// A final name of the longest length allowed still gets a temporary file.
+TEST(AtomicFile, LongestFileNameIsWritten) {
+  const fs::path dir = fresh_dir("kinestat_atomic_long");
+  const fs::path path = dir / (std::string(250, 'n') + ".json");
+  ASSERT_TRUE(write_text_file_atomically(path.string(), "{}").ok());
+  EXPECT_EQ(read_file(path), "{}");
+  fs::remove_all(dir);
+}
+
 // A link to a file: the file is replaced beside itself and the link stays a link.
 TEST(AtomicFile, ALinkedFileIsReplacedAndTheLinkKept) {
   const fs::path dir = fresh_dir("kinestat_atomic_link");
