@@ -37,20 +37,17 @@ void add_units(vtkDataObject& data, const std::vector<std::pair<std::string, std
 }
 
 Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path) {
-  return write_file_atomically(path, [&](const std::string& temp) {
-    writer.SetFileName(temp.c_str());
-    const int written = writer.Write();
-    const unsigned long error = writer.GetErrorCode();
-    writer.SetFileName(nullptr);
-    // (vtkErrorCode's names would link VTK::CommonMisc for one message: the code is named here.)
-    if (error == vtkErrorCode::OutOfDiskSpaceError)
-      return Status::Invalid(fmt::format("{}: VTK could not write the file: out of disk space; free some", path));
-    if (written != 1 || error != vtkErrorCode::NoError)
-      return Status::Invalid(fmt::format("{}: VTK could not write the file (VTK error code {}); check that the "
-                                         "folder is writable and has room",
-                                         path, error));
-    return Status::Ok();
-  });
+  // VTK writes into memory and the file is written by write_text_file_atomically: VTK 9.1's writers
+  // crash on a full disk (vtkXMLUnstructuredDataWriter frees its position arrays twice) and log
+  // their errors rather than return them for a file they cannot open.
+  writer.WriteToOutputStringOn();
+  const int written = writer.Write();
+  const unsigned long error = writer.GetErrorCode();
+  if (written != 1 || error != vtkErrorCode::NoError)
+    return Status::Invalid(fmt::format("{}: VTK could not write the data (VTK error code {}); this is a bug, please "
+                                       "report it",
+                                       path, error));
+  return write_text_file_atomically(path, writer.GetOutputString());
 }
 
 Status write_pvd(const std::string& path, const std::vector<PvdEntry>& entries) {

@@ -17,9 +17,9 @@ namespace kinestat::io {
 // units travel with the file (ParaView lists field data in its Information panel).
 void add_units(vtkDataObject& data, const std::vector<std::pair<std::string, std::string>>& units);
 
-// Runs `writer` (its input set) into `path` through write_file_atomically: VTK writes a temporary
-// file, whose success (Write() and GetErrorCode(), which reports a full disk) is checked before it
-// replaces `path`. kInvalidInput naming `path`.
+// Runs `writer` (its input set) into memory, checks Write() and GetErrorCode(), and writes the
+// text to `path` through write_text_file_atomically (core/atomic_file.hpp). kInvalidInput naming
+// `path`.
 Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path);
 
 struct PvdEntry {
