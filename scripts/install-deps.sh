@@ -18,6 +18,7 @@ PACKAGES=(
   nlohmann-json3-dev       # JSON results
   libfmt-dev               # formatting
   libtbb-dev               # threads (FEA assembly)
+  libssl-dev               # OpenSSL's SHA-256: the FEA result cache's keys and checksums
   python3-dev pybind11-dev python3-pybind11  # the Python module kinestat (python/, docs/python.md)
   python3-numpy            # its arrays
   python3-pytest           # its tests (tests/python)

@@ -55,7 +55,8 @@ def link_stiffness_from_file(path: str, *, clamp: Union[str, Region], reference:
     reference_point: the point whose motion is reported, in the file's unit (None: the reference nodes' centre).
     keep_fields: keep the mesh and the displacement and von Mises fields (for io.write_link_vtu_files); such a
         result is always computed, never read from the cache.
-    cache: a folder for the result cache (the key covers the file's bytes, the meshing, the material and options).
+    cache: a folder for the result cache (the key covers the file's bytes, the meshing, the material and options);
+        a damaged entry is recomputed with a RuntimeWarning saying why (also in .warnings).
 
     Returns a LinkStiffnessRun: .result (LinkStiffness), .mesh (None unless keep_fields), .from_cache, .report.
     Raises InputError with the CLI's messages. Meshing and the solve release the GIL.

@@ -82,6 +82,12 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
                           Status::Invalid(fmt::format("{}; see kinestat {}--help", e.what(),
                                                       command.empty() ? "" : command + " ")));
   }
+  // A report or JSON lost on stdout (a full disk, a closed pipe) is a failed run, not a success. (A
+  // run that failed already has said so; its report is not worth a second message.)
+  if (!out.flush() && (ctx.exit_code == kExitOk || ctx.exit_code == kExitSingular))
+    return report_failure(ctx, selected_command(app),
+                          Status::Invalid("stdout: writing the output failed (a full disk or a closed pipe?); "
+                                          "write it to a file with room"));
   return solver::finish_job(ctx.exit_code, ctx.failure);
 }
 

@@ -33,6 +33,8 @@ Status Output::write_json(const nlohmann::json& j) {
   if (options_.json.empty()) return Status::Ok();
   if (options_.json == "-") {
     io::write_json(ctx_.out, j);
+    if (!ctx_.out.flush())
+      return Status::Invalid("stdout: writing the JSON failed (a full disk or a closed pipe?); give --json FILE");
     return Status::Ok();
   }
   std::error_code ec;  // the folder may not exist yet; write_json names what still fails

@@ -174,6 +174,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
 
     auto run = fea::compute_link_stiffness(request);
     if (!run.ok()) return fail(run.status());
+    // On stderr even with --quiet: the result did not come from where the user expected.
+    for (const std::string& w : run->warnings) ctx.err << "link-stiffness: warning: " << w << "\n";
     out.report() << fmt::format("material {} (E = {:g} MPa, nu = {:g})\n", material->id, material->E / kMPa,
                                 material->nu())
                  << run->report;

@@ -61,7 +61,9 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   auto progress = [&ctx, &a](const std::string& stage) {
     if (!a.out.quiet) ctx.err << "vjm: " << stage << " ...\n";
   };
-  if (Status s = io::resolve_fea_springs(*model, progress); !s.ok()) return bad(s);
+  // Warnings even with --quiet: a cache entry was damaged and its result recomputed.
+  auto warning = [&ctx](const std::string& w) { ctx.err << "vjm: warning: " << w << "\n"; };
+  if (Status s = io::resolve_fea_springs(*model, progress, warning); !s.ok()) return bad(s);
   StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, point);
   if (!chains.ok()) return bad(chains.status());
   vjm::StiffnessOptions stiffness_options;

@@ -75,17 +75,27 @@ StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& re
 
   std::string key;
   if (!request.cache_dir.empty()) {
+    // Every rank reads the file for the key: one that cannot stops them all (node-local files).
     StatusOr<std::string> identity = surface_mesh_identity(request.mesh_file, meshing);
-    if (!identity.ok()) return identity.status();
+    if (Status s = solver::agree_on_status(identity.status()); !s.ok()) return s;
     key = link_stiffness_cache_key(*identity, request.material, request.options);
     run.cache_file = link_stiffness_cache_path(request.cache_dir, key);
     if (!request.options.keep_fields) {
-      if (std::optional<LinkStiffness> cached = load_cached_link_stiffness(request.cache_dir, key)) {
-        run.result = std::move(*cached);
+      StatusOr<CachedLinkStiffness> cached = load_cached_link_stiffness(request.cache_dir, key);
+      if (Status s = solver::agree_on_status(cached.status()); !s.ok()) return s;
+      // Node-local caches may hold the entry on some ranks only: serve it when every rank can, or
+      // the ranks that compute would wait in the solver for those that did not.
+      // (Collective: every rank asks, whatever it found.)
+      const bool everywhere =
+          solver::agree_on_status(cached->result ? Status::Ok() : Status::NotConverged("not in this cache")).ok();
+      if (cached->result && everywhere) {
+        run.result = std::move(*cached->result);
         run.from_cache = true;
         run.report = fmt::format("(from cache {})\n", run.cache_file) + link_stiffness_report(run.result);
         return run;
       }
+      // A damaged entry is recomputed (and replaced), never used; the caller shows why.
+      if (!cached->rejected.empty()) run.warnings.push_back(cached->rejected + "; recomputing it");
     }
   }
   if (request.options.progress)

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "fea/sha256.hpp"
+
 namespace kinestat::fea {
 
 namespace {
@@ -99,16 +101,12 @@ void bounding_box(const TetMesh& mesh, Vec3& lo, Vec3& hi) {
   }
 }
 
-std::uint64_t content_hash(const TetMesh& mesh) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&h](const void* data, size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ull;
-  };
-  mix(&mesh.nodes_per_element, sizeof(int));
-  for (const Vec3& x : mesh.nodes) mix(x.data(), 3 * sizeof(double));
-  mix(mesh.connectivity.data(), mesh.connectivity.size() * sizeof(int));
-  return h;
+std::string content_hash(const TetMesh& mesh) {
+  Sha256 h;
+  h.update(&mesh.nodes_per_element, sizeof(int));
+  for (const Vec3& x : mesh.nodes) h.update(x.data(), 3 * sizeof(double));
+  h.update(mesh.connectivity.data(), mesh.connectivity.size() * sizeof(int));
+  return h.hex_digest();
 }
 
 }  // namespace kinestat::fea

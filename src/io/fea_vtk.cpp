@@ -80,11 +80,9 @@ Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const f
   const std::string per = force ? "N" : "N m";
   add_units(*grid, {{"coordinates", "m"}, {"displacement", "m per " + per}, {"von_mises", "Pa per " + per}});
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetFileName(path.c_str());
   writer->SetInputData(grid);
   writer->SetDataModeToBinary();
-  if (writer->Write() != 1) return Status::Invalid(path + ": cannot write the VTK file (is the directory writable?)");
-  return Status::Ok();
+  return write_vtk_xml(*writer, path);
 }
 
 Status write_link_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,

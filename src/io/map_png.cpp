@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -30,6 +32,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "io/map_png_layout.hpp"
+#include "kinestat/core/atomic_file.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -317,17 +320,24 @@ void draw(const std::vector<PlotField2D>& fields, const PlotOptions& o, const Ma
   }
 }
 
-Status write_png(const std::string& path, const std::vector<PlotField2D>& fields, const PlotOptions& o) {
-  if (Status st = check_input(path, fields, o); !st.ok()) return st;
-  const MapPngLayout layout = map_png_layout(fields, o);
-  for (const PageBox& b : layout.panels)
-    if ((b.x1 - b.x0) * o.width < 20.0 || (b.y1 - b.y0) * o.height < 20.0)
-      return Status::Invalid(fmt::format("{}: an image of {} x {} pixels is too small for {} panel(s)", path, o.width,
-                                         o.height, fields.size()));
+// PLplot closes the file itself (plend1), so a failed last write is not reported: a complete PNG
+// ends with its IEND chunk, which a truncated one lacks.
+bool ends_like_a_png(const std::string& file) {
+  static constexpr unsigned char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  if (!in || in.tellg() < static_cast<std::streamoff>(sizeof kEnd)) return false;
+  in.seekg(-static_cast<std::streamoff>(sizeof kEnd), std::ios::end);
+  unsigned char end[sizeof kEnd] = {};
+  in.read(reinterpret_cast<char*>(end), sizeof end);
+  return in && std::equal(std::begin(kEnd), std::end(kEnd), end);
+}
 
+// Draws into `file_name` (the temporary file of `path`, which the messages name).
+Status render_png(const std::string& file_name, const std::string& path, const std::vector<PlotField2D>& fields,
+                  const PlotOptions& o, const MapPngLayout& layout) {
   std::lock_guard<std::mutex> lock(plplot_mutex());
   // Opened here so that a path that cannot be written is an error, not PLplot's exit().
-  std::FILE* file = std::fopen(path.c_str(), "wb");
+  std::FILE* file = std::fopen(file_name.c_str(), "wb");
   if (file == nullptr) return Status::Invalid(fmt::format("{}: cannot write: {}", path, std::strerror(errno)));
   std::string errors;
   g_plplot_errors = &errors;
@@ -359,11 +369,21 @@ Status write_png(const std::string& path, const std::vector<PlotField2D>& fields
   plsstrm(previous);
   plsabort(nullptr);
   g_plplot_errors = nullptr;
-  if (!errors.empty()) {
-    std::remove(path.c_str());
-    return Status::Invalid(fmt::format("{}: PLplot could not draw the map: {}", path, errors));
-  }
+  if (!errors.empty()) return Status::Invalid(fmt::format("{}: PLplot could not draw the map: {}", path, errors));
+  if (!ends_like_a_png(file_name))
+    return Status::Invalid(fmt::format("{}: the PNG was not written completely; check that the folder has room", path));
   return Status::Ok();
+}
+
+Status write_png(const std::string& path, const std::vector<PlotField2D>& fields, const PlotOptions& o) {
+  if (Status st = check_input(path, fields, o); !st.ok()) return st;
+  const MapPngLayout layout = map_png_layout(fields, o);
+  for (const PageBox& b : layout.panels)
+    if ((b.x1 - b.x0) * o.width < 20.0 || (b.y1 - b.y0) * o.height < 20.0)
+      return Status::Invalid(fmt::format("{}: an image of {} x {} pixels is too small for {} panel(s)", path, o.width,
+                                         o.height, fields.size()));
+
+  return write_file_atomically(path, [&](const std::string& temp) { return render_png(temp, path, fields, o, layout); });
 }
 
 }  // namespace

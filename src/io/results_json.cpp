@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
+
+#include "kinestat/core/atomic_file.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -201,14 +203,9 @@ void write_json(std::ostream& out, const json& j, int indent) {
 }
 
 Status write_json(const std::string& path, const json& j, int indent) {
-  std::ofstream out(path);
-  if (!out)
-    return Status::Invalid(
-        fmt::format("{}: cannot open for writing; check that the directory exists and is writable", path));
-  write_json(out, j, indent);
-  out.close();
-  if (!out) return Status::Invalid(fmt::format("{}: writing failed (disk full?)", path));
-  return Status::Ok();
+  std::ostringstream text;
+  write_json(text, j, indent);
+  return write_text_file_atomically(path, text.str());
 }
 
 }  // namespace kinestat::io

@@ -331,7 +331,8 @@ StatusOr<VjmModel> read_vjm_model_yaml(const std::string& path) {
   return read_vjm_model_yaml_string(*text, path);
 }
 
-Status resolve_fea_springs(VjmModel& model, const std::function<void(const std::string&)>& progress) {
+Status resolve_fea_springs(VjmModel& model, const std::function<void(const std::string&)>& progress,
+                           const std::function<void(const std::string&)>& warning) {
   for (FeaSpring& f : model.fea_springs) {
     if (f.resolved) continue;
     fea::LinkStiffnessRequest request = f.request;
@@ -342,6 +343,8 @@ Status resolve_fea_springs(VjmModel& model, const std::function<void(const std::
       const std::string message = f.where + ": " + run.status().message();
       return run.status().code() == StatusCode::kInternal ? Status::Internal(message) : Status::Invalid(message);
     }
+    if (warning)
+      for (const std::string& w : run->warnings) warning(f.where + ": " + w);
     // The stiffness is symmetric (the compliance is symmetrized; its asymmetry is round-off).
     if (Status s = model.chains[f.chain].set_spring_stiffness(f.spring, run->result.cartesian.stiffness); !s.ok())
       return s;

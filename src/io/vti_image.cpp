@@ -1,7 +1,5 @@
 #include "io/vti_image.hpp"
 
-#include <fstream>
-
 #include <fmt/format.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -10,6 +8,8 @@
 #include <vtkPointData.h>
 #include <vtkStringArray.h>
 #include <vtkXMLImageDataWriter.h>
+
+#include "io/vtk_files.hpp"
 
 namespace kinestat::io {
 
@@ -47,17 +47,9 @@ void add_vti_string(vtkImageData* image, const std::string& name, const std::str
 }
 
 Status write_vti_image(const std::string& path, vtkImageData* image) {
-  const auto refuse = [&] {
-    return Status::Invalid(
-        fmt::format("{}: cannot write the VTK file; check that the directory exists and is writable", path));
-  };
-  // Tried first: VTK's writer logs its own errors and still returns 1 for a file it cannot open.
-  if (!std::ofstream(path)) return refuse();
   vtkNew<vtkXMLImageDataWriter> writer;
-  writer->SetFileName(path.c_str());
   writer->SetInputData(image);
-  if (writer->Write() != 1 || writer->GetErrorCode() != 0) return refuse();
-  return Status::Ok();
+  return write_vtk_xml(*writer, path);
 }
 
 }  // namespace kinestat::io

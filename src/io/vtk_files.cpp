@@ -1,13 +1,15 @@
 #include "io/vtk_files.hpp"
 
-#include <fstream>
-
 #include <fmt/format.h>
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkStringArray.h>
+#include <vtkXMLWriter.h>
+
+#include "kinestat/core/atomic_file.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -50,17 +52,27 @@ void add_display_hints(vtkDataObject& data, const std::string& name, double mode
   }
 }
 
+Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path) {
+  // VTK writes into memory and the file is written by write_text_file_atomically: VTK 9.1's writers
+  // crash on a full disk (vtkXMLUnstructuredDataWriter frees its position arrays twice) and log
+  // their errors rather than return them for a file they cannot open.
+  writer.WriteToOutputStringOn();
+  const int written = writer.Write();
+  const unsigned long error = writer.GetErrorCode();
+  if (written != 1 || error != vtkErrorCode::NoError)
+    return Status::Invalid(fmt::format("{}: VTK could not write the data (VTK error code {}); this is a bug, please "
+                                       "report it",
+                                       path, error));
+  return write_text_file_atomically(path, writer.GetOutputString());
+}
+
 Status write_pvd(const std::string& path, const std::vector<PvdEntry>& entries) {
-  std::ofstream out(path);
-  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   for (std::size_t i = 0; i < entries.size(); ++i)
-    out << fmt::format("    <DataSet timestep=\"{}\" part=\"0\" name=\"{}\" file=\"{}\"/>\n", i,
-                       xml_escape(entries[i].name), xml_escape(entries[i].file));
-  out << "  </Collection>\n</VTKFile>\n";
-  out.close();
-  if (!out)
-    return Status::Invalid(fmt::format("{}: cannot write the collection file; check the directory is writable", path));
-  return Status::Ok();
+    text += fmt::format("    <DataSet timestep=\"{}\" part=\"0\" name=\"{}\" file=\"{}\"/>\n", i,
+                        xml_escape(entries[i].name), xml_escape(entries[i].file));
+  text += "  </Collection>\n</VTKFile>\n";
+  return write_text_file_atomically(path, text);
 }
 
 }  // namespace kinestat::io

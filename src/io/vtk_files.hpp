@@ -9,6 +9,7 @@
 #include "kinestat/core/status.hpp"
 
 class vtkDataObject;
+class vtkXMLWriter;
 
 namespace kinestat::io {
 
@@ -20,6 +21,11 @@ void add_units(vtkDataObject& data, const std::vector<std::pair<std::string, std
 // `max_displacement` (m) as a tenth of the model's size `model_size` (m), so that 1e-9 m of a unit
 // load is seen without guessing; absent when nothing moves. With "load_case" = `name` (may be empty).
 void add_display_hints(vtkDataObject& data, const std::string& name, double model_size, double max_displacement);
+
+// Runs `writer` (its input set) into memory, checks Write() and GetErrorCode(), and writes the
+// text to `path` through write_text_file_atomically (core/atomic_file.hpp). kInvalidInput naming
+// `path`.
+Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path);
 
 struct PvdEntry {
   std::string file;  // relative to the .pvd's folder

@@ -128,11 +128,8 @@ void add_free_motions(const msa::SingularityDiagnosis& d, vtkUnstructuredGrid* g
 
 Status write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetFileName(path.c_str());
   writer->SetInputData(grid);
-  if (writer->Write() != 1)
-    return Status::Invalid(fmt::format("{}: VTK could not write the file; check the directory is writable", path));
-  return Status::Ok();
+  return write_vtk_xml(*writer, path);
 }
 
 }  // namespace

@@ -58,10 +58,8 @@ class WorkspaceGrid {
 
   Status write(const std::string& path) {
     auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-    writer->SetFileName(path.c_str());
     writer->SetInputData(grid_);
-    if (writer->Write() != 1) return Status::Invalid(fmt::format("{}: cannot write the VTK file", path));
-    return Status::Ok();
+    return write_vtk_xml(*writer, path);
   }
 
  private:

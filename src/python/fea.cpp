@@ -17,6 +17,11 @@ namespace {
 
 using namespace fea;
 
+// A RuntimeWarning (Python's warnings filters decide whether it shows or raises).
+void warn_user(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 py::array_t<int> connectivity_array(const TetMesh& mesh) {
   py::array_t<int> a({static_cast<py::ssize_t>(mesh.num_elements()), static_cast<py::ssize_t>(mesh.nodes_per_element)});
   std::copy(mesh.connectivity.begin(), mesh.connectivity.begin() + a.size(), a.mutable_data());
@@ -201,8 +206,19 @@ void bind_link_stiffness(py::module_& m) {
   // The result cache.
   m.def("link_stiffness_cache_key", &link_stiffness_cache_key, py::arg("mesh_identity"), py::arg("material"),
         py::arg("options"));
-  m.def("load_cached_link_stiffness", &load_cached_link_stiffness, py::arg("dir"), py::arg("key"),
-        "The cached result (compliance and derived values), or None.");
+  m.def("is_link_stiffness_cache_key", [](const std::string& k) { return is_link_stiffness_cache_key(k); },
+        py::arg("key"), "Whether `key` has the form of link_stiffness_cache_key's keys (32 hex digits).");
+  m.def(
+      "load_cached_link_stiffness",
+      [](const std::string& dir, const std::string& key) -> std::optional<LinkStiffness> {
+        CachedLinkStiffness found = unwrap(load_cached_link_stiffness(dir, key));
+        if (!found.rejected.empty()) warn_user(found.rejected);
+        return found.result;
+      },
+      py::arg("dir"), py::arg("key"),
+      "The cached result (compliance and derived values), or None when absent or rejected: a damaged entry "
+      "(checksum, key, a compliance not finite, symmetric and positive definite, not a regular file) gives None "
+      "and a RuntimeWarning saying why. InputError for a key not of the cache's form.");
   m.def(
       "store_cached_link_stiffness",
       [](const std::string& dir, const std::string& key, const LinkStiffness& r) {
@@ -240,10 +256,16 @@ void bind_request(py::module_& m) {
       .def_readonly("mesh_size", &LinkStiffnessRun::mesh_size, "m, as used")
       .def_readonly("from_cache", &LinkStiffnessRun::from_cache)
       .def_readonly("cache_file", &LinkStiffnessRun::cache_file)
-      .def_readonly("report", &LinkStiffnessRun::report, "what was done and the result, as the CLI prints it");
+      .def_readonly("report", &LinkStiffnessRun::report, "what was done and the result, as the CLI prints it")
+      .def_readonly("warnings", &LinkStiffnessRun::warnings,
+                    "what the user should hear: a cache entry rejected and recomputed, and why");
   m.def(
       "compute_link_stiffness",
-      [](const LinkStiffnessRequest& r) { return unwrap(without_gil([&] { return compute_link_stiffness(r); })); },
+      [](const LinkStiffnessRequest& r) {
+        LinkStiffnessRun run = unwrap(without_gil([&] { return compute_link_stiffness(r); }));
+        for (const std::string& w : run.warnings) warn_user(w);
+        return run;
+      },
       py::arg("request"),
       "Checks the surface, then reads the result from the cache or meshes, solves and stores it. InputError naming "
       "the file. Releases the GIL.");

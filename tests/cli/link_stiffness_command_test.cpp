@@ -54,6 +54,20 @@ TEST(LinkStiffnessCommand, BarJsonMatchesBeamTheoryAndCacheReproducesIt) {
   nlohmann::json j2 = nlohmann::json::parse(std::ifstream(json));
   EXPECT_TRUE(j2["from_cache"].get<bool>());
   EXPECT_EQ(j2["compliance"], j["compliance"]);
+
+  // A damaged entry (cut 10 bytes short) is recomputed, with a warning on stderr even with --quiet.
+  const std::filesystem::path entry = std::filesystem::directory_iterator(cache)->path();
+  std::filesystem::resize_file(entry, std::filesystem::file_size(entry) - 10);
+  std::vector<std::string> quiet = args;
+  quiet.push_back("--quiet");
+  CliRun damaged = run_link_stiffness(quiet);
+  ASSERT_EQ(damaged.code, kExitOk) << damaged.err;
+  EXPECT_NE(damaged.err.find("warning: " + entry.string() + ": cache entry ignored: cut short"), std::string::npos)
+      << damaged.err;
+  nlohmann::json j3 = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_FALSE(j3["from_cache"].get<bool>());
+  EXPECT_NEAR(j3["compliance"][0][0].get<double>(), j["compliance"][0][0].get<double>(),
+              1e-9 * j["compliance"][0][0].get<double>());
   std::filesystem::remove_all(tmp);
 }
 

@@ -3,9 +3,16 @@
 // and errors that name the file.
 #include <gtest/gtest.h>
 
-#include <filesystem>
+#include <sys/stat.h>
 
+#include <filesystem>
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include "cache_entry_edit.hpp"
 #include "kinestat/fea/link_stiffness_request.hpp"
+#include "kinestat/fea/result_cache.hpp"
 
 namespace kinestat::fea {
 namespace {
@@ -61,6 +68,48 @@ TEST(LinkStiffnessRequest, EqualsMeshingAndSolvingByHandThenComesFromTheCache) {
   EXPECT_FALSE(third->from_cache);
   ASSERT_TRUE(third->mesh.has_value());
   EXPECT_EQ(third->result.displacement[0].size(), static_cast<size_t>(third->mesh->num_nodes()));
+  std::filesystem::remove_all(cache);
+}
+
+// A damaged entry is never served: the run recomputes, says why in its warnings, and replaces the
+// entry with a good one (served by the next run).
+TEST(LinkStiffnessRequest, DamagedCacheEntryIsRecomputedWithAWarning) {
+  const std::string cache = (std::filesystem::path(::testing::TempDir()) / "kinestat_request_damaged").string();
+  std::filesystem::remove_all(cache);
+  const LinkStiffnessRequest request = bar_request(cache);
+  StatusOr<LinkStiffnessRun> first = compute_link_stiffness(request);
+  ASSERT_TRUE(first.ok()) << first.status().message();
+  EXPECT_TRUE(first->warnings.empty());
+  const std::string entry = first->cache_file;
+  const Mat6 good = first->result.cartesian.compliance;
+  const std::vector<std::pair<std::string, std::function<void()>>> damages = {
+      {"checksum",
+       [&] {
+         std::filesystem::resize_file(entry, std::filesystem::file_size(entry) - 10);  // cut 10 bytes short
+       }},
+      {"not symmetric",
+       [&] { testing::set_entry_compliance_term(entry, 2, 4, 2.0 * good(2, 4)); }},  // checksum right
+      {"not a regular file",
+       [&] {
+         std::filesystem::remove(entry);
+         ASSERT_EQ(::mkfifo(entry.c_str(), 0600), 0);
+       }},
+  };
+  for (const auto& [reason, damage] : damages) {
+    damage();
+    StatusOr<LinkStiffnessRun> again = compute_link_stiffness(request);
+    ASSERT_TRUE(again.ok()) << again.status().message();
+    EXPECT_FALSE(again->from_cache) << reason;
+    ASSERT_EQ(again->warnings.size(), 1u) << reason;
+    EXPECT_NE(again->warnings[0].find(entry), std::string::npos) << again->warnings[0];
+    EXPECT_NE(again->warnings[0].find(reason == "checksum" ? "cut short" : reason), std::string::npos)
+        << again->warnings[0];
+    EXPECT_LT((again->result.cartesian.compliance - good).norm(), 1e-9 * good.norm()) << reason;
+    StatusOr<LinkStiffnessRun> served = compute_link_stiffness(request);  // the entry was rewritten
+    ASSERT_TRUE(served.ok());
+    EXPECT_TRUE(served->from_cache) << reason;
+    EXPECT_TRUE(served->warnings.empty()) << reason;
+  }
   std::filesystem::remove_all(cache);
 }
 

@@ -66,8 +66,9 @@ TEST(VjmFeaLinks, EveryBundledMeshFeedsAModelFile) {
     // The FEA result the resolution stored: the chain's stiffness is that 6x6 (symmetric).
     ASSERT_EQ(std::distance(fs::directory_iterator(dir / "cache"), fs::directory_iterator{}), 1);
     const fs::path cached = fs::directory_iterator(dir / "cache")->path();
-    auto fea = fea::load_cached_link_stiffness((dir / "cache").string(), cached.stem().string());
-    ASSERT_TRUE(fea.has_value());
+    auto found = fea::load_cached_link_stiffness((dir / "cache").string(), cached.stem().string());
+    ASSERT_TRUE(found.ok() && found->result.has_value());
+    const auto& fea = found->result;
     const Mat6& expected = fea->cartesian.stiffness;
     EXPECT_LT((K->stiffness - expected).norm(), 1e-9 * expected.norm());
     EXPECT_LT((K->stiffness - K->stiffness.transpose()).norm(), 1e-12 * K->stiffness.norm());

@@ -5,6 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/result_cache.hpp"
@@ -84,13 +87,35 @@ TEST(VjmFeaSpring, BarMatchesTimoshenkoCantileverAndSecondReadComesFromTheCache)
   const std::vector<fs::path> cached = files_in(dir / "cache");
   ASSERT_EQ(cached.size(), 1u);
   const std::string key = cached[0].stem().string();
-  std::optional<fea::LinkStiffness> entry = fea::load_cached_link_stiffness((dir / "cache").string(), key);
-  ASSERT_TRUE(entry.has_value());
+  auto found = fea::load_cached_link_stiffness((dir / "cache").string(), key);
+  ASSERT_TRUE(found.ok() && found->result.has_value()) << (found.ok() ? found->rejected : found.status().message());
+  std::optional<fea::LinkStiffness>& entry = found->result;
   fea::set_compliance(*entry, 2.0 * entry->cartesian.compliance, entry->cartesian.point);
   ASSERT_TRUE(fea::store_cached_link_stiffness((dir / "cache").string(), key, *entry).ok());
   const Mat6 K_again = model_stiffness(read_vjm_model_yaml(model_file.string()));
   EXPECT_LT((K_again - 0.5 * K_fea).norm() / K_fea.norm(), 1e-9);
   EXPECT_EQ(files_in(dir / "cache").size(), 1u);
+
+  // A damaged entry (its last digit changed) is recomputed, with a warning naming the model's line.
+  {
+    std::ifstream in(cached[0], std::ios::binary);
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    in.close();
+    const std::size_t digit = text.find_last_of("0123456789", text.rfind("\nsha256"));
+    text[digit] = text[digit] == '1' ? '2' : '1';
+    std::ofstream(cached[0], std::ios::binary | std::ios::trunc) << text;
+  }
+  StatusOr<VjmModel> model = read_vjm_model_yaml(model_file.string());
+  ASSERT_TRUE(model.ok());
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(resolve_fea_springs(*model, {}, [&](const std::string& w) { warnings.push_back(w); }).ok());
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind(model_file.string() + ":", 0), 0u) << warnings[0];
+  EXPECT_NE(warnings[0].find("checksum mismatch"), std::string::npos) << warnings[0];
+  StatusOr<std::vector<vjm::Chain>> chains = vjm_model_chains(*model, std::nullopt);
+  ASSERT_TRUE(chains.ok());
+  const Mat6 K_recomputed = vjm::platform_unloaded_stiffness(*chains)->stiffness;
+  EXPECT_LT((K_recomputed - K_fea).norm() / K_fea.norm(), 1e-9);  // the FEA's, not the damaged file's
 }
 
 // Each bad spring names the model file, the line of the offending key and what to fix.

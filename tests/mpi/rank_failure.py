@@ -5,11 +5,15 @@ Two two-rank jobs of `kinestat link-stiffness --solver petsc-mumps`, each rank s
 command (mpiexec's `A : B` form), as happens on a cluster whose nodes see different files:
 1. rank 1 is given another --size than rank 0: both ranks refuse, exit 2, naming the difference;
 2. the same command on both ranks, but in two working folders and the mesh present only in rank 0's:
-   the job ends (non-zero) within the time limit and stderr names the missing file.
+   the job ends (non-zero) within the time limit and stderr names the missing file;
+3. the mesh in both folders and a cache entry in rank 0's folder only (node-local caches): every
+   rank computes, the job succeeds and gives the cached 6x6 (to 1e-9 of its diagonal).
 A hang fails the test through the subprocess timeout (60 s; a job that works takes about 2 s).
 
 usage: rank_failure.py KINESTAT MPIEXEC MESH
 """
+import json
+import math
 import os
 import shutil
 import subprocess
@@ -48,6 +52,19 @@ def main():
         if done.returncode == 0 or "link.off" not in done.stderr:
             sys.exit(f"mesh on one rank only: exit {done.returncode}, stderr:\n{done.stderr}")
         print(f"mesh on rank 0 only: exit {done.returncode} in {seconds:.1f} s, the file named")
+
+        shutil.copy(mesh, os.path.join(b, "link.off"))
+        json_args = [kinestat, *common, "link.off", "--size", "20", "--cache", "cache", "--json", "-"]
+        first, _ = run_job([mpiexec, "-np", "1", "-wdir", a, *json_args])  # fills rank 0's cache only
+        done, seconds = run_job([mpiexec, "-np", "1", "-wdir", a, *json_args, ":", "-np", "1", "-wdir", b, *json_args])
+        if first.returncode != 0 or done.returncode != 0:
+            sys.exit(f"cache on rank 0 only: exits {first.returncode}, {done.returncode}, stderr:\n{done.stderr}")
+        cached, computed = json.loads(first.stdout)["compliance"], json.loads(done.stdout)["compliance"]
+        worst = max(abs(computed[i][j] - cached[i][j]) / math.sqrt(cached[i][i] * cached[j][j])
+                    for i in range(6) for j in range(6))
+        if worst > 1e-9:
+            sys.exit(f"cache on rank 0 only: the 6x6 differs from the cached one by {worst:.2e}")
+        print(f"cache on rank 0 only: exit 0 in {seconds:.1f} s, 6x6 equal to the cached one to {worst:.1e}")
 
 
 if __name__ == "__main__":

@@ -50,3 +50,34 @@ def test_bad_mesh_inputs_raise_input_error(source_dir, tmp_path):
         fea.link_stiffness_from_file(str(tmp_path / "missing.off"), clamp="x=0", reference="x=200")
     with pytest.raises(ks.InputError, match="clamp"):
         fea.link_stiffness_from_file(str(source_dir / "meshes/bar.off"), clamp="q=0", reference="x=200")
+
+
+def test_damaged_cache_entry_is_refused_with_the_reason(tmp_path):
+    steel = ks.Material.from_E_nu("steel", 210e9, 0.3)
+    options = fea.LinkStiffnessOptions()
+    key = fea.link_stiffness_cache_key("mesh bytes", steel, options)
+    assert fea.is_link_stiffness_cache_key(key) and len(key) == 32
+    mesh = fea.to_quadratic(fea.make_box_mesh([0, 0, 0], [0.2, 0.02, 0.02], 4, 1, 1))
+    options.clamp = fea.Region.plane([0, 0, 0], [1, 0, 0])
+    options.reference = fea.Region.plane([0.2, 0, 0], [1, 0, 0])
+    r = fea.link_stiffness(mesh, steel, options)
+    fea.store_cached_link_stiffness(str(tmp_path), key, r)
+    np.testing.assert_array_equal(fea.load_cached_link_stiffness(str(tmp_path), key).compliance, r.compliance)
+    entry = tmp_path / (key + ".txt")
+    entry.write_bytes(entry.read_bytes()[:-10])  # cut 10 bytes short
+    with pytest.warns(RuntimeWarning, match="cut short"):
+        assert fea.load_cached_link_stiffness(str(tmp_path), key) is None
+    assert fea.load_cached_link_stiffness(str(tmp_path / "absent"), key) is None  # absent: no warning
+
+
+def test_cache_keys_cannot_leave_the_folder(tmp_path):
+    mesh = fea.to_quadratic(fea.make_box_mesh([0, 0, 0], [0.2, 0.02, 0.02], 4, 1, 1))
+    options = fea.LinkStiffnessOptions()
+    options.clamp = fea.Region.plane([0, 0, 0], [1, 0, 0])
+    options.reference = fea.Region.plane([0.2, 0, 0], [1, 0, 0])
+    r = fea.link_stiffness(mesh, ks.Material.from_E_nu("steel", 210e9, 0.3), options)
+    with pytest.raises(ks.InputError, match="hex digits"):
+        fea.store_cached_link_stiffness(str(tmp_path / "a" / "cache"), "../../escaped", r)
+    with pytest.raises(ks.InputError, match="hex digits"):
+        fea.load_cached_link_stiffness(str(tmp_path), "../x")
+    assert not (tmp_path / "escaped.txt").exists() and not (tmp_path / "a").exists()

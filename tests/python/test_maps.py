@@ -198,3 +198,4 @@ def test_bad_sweeps_raise_input_error():
     o.r1 = (0.13, 0.07)
     with pytest.raises(ks.InputError, match="r1"):
         mech.sweep_five_bar_designs(o)
+

@@ -38,6 +38,9 @@ struct LinkStiffnessRun {
   double mesh_size = 0.0;        // m, as used
   bool from_cache = false;       // read from cache_dir: no mesh, no fields, no solver report
   std::string cache_file;        // the entry read or written; empty without a cache
+  // What the user should hear even with progress silenced (callers print them): a cache entry that
+  // was rejected and recomputed, and why.
+  std::vector<std::string> warnings;
   std::string report;            // what was done and the result, for people (link_stiffness_report)
 };
 

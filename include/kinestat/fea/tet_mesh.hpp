@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "kinestat/core/status.hpp"
@@ -47,7 +48,7 @@ double element_volume(const TetMesh& mesh, int e);
 // Axis-aligned bounding box of the nodes.
 void bounding_box(const TetMesh& mesh, Vec3& lo, Vec3& hi);
 
-// 64-bit FNV-1a hash of the mesh content (coordinates and connectivity), for the result cache.
-std::uint64_t content_hash(const TetMesh& mesh);
+// SHA-256 of the mesh content (coordinates and connectivity) as 64 hex digits, for the result cache.
+std::string content_hash(const TetMesh& mesh);
 
 }  // namespace kinestat::fea

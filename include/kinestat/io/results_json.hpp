@@ -30,8 +30,8 @@ nlohmann::json stiffness_indices_to_json(const StiffnessIndices& ind);
 // JSON has no such numbers and a bare null would not say which one it was.
 void encode_non_finite(nlohmann::json& j);
 
-// Writes `j` indented by `indent` spaces (-1: compact, on one line); kInvalidInput naming the path
-// when it cannot be written.
+// Writes `j` indented by `indent` spaces (-1: compact, on one line), complete or not at all
+// (core/atomic_file.hpp); kInvalidInput naming the path when it cannot be written.
 Status write_json(const std::string& path, const nlohmann::json& j, int indent = 2);
 // The same text to a stream (`--json -` writes to stdout).
 void write_json(std::ostream& out, const nlohmann::json& j, int indent = 2);

@@ -45,9 +45,12 @@ StatusOr<VjmModel> read_vjm_model_yaml(const std::string& path);
 StatusOr<VjmModel> read_vjm_model_yaml_string(const std::string& text, const std::string& display_name);
 
 // Computes every unresolved `fea:` spring (fea::compute_link_stiffness: meshing and FEA, or the
-// spring's cache) and puts it into its chain. `progress` (optional) hears the long stages. A bad
-// mesh or region gives kInvalidInput "FILE:LINE: chain 'c' element N (spring) fea: MESH: ...".
-Status resolve_fea_springs(VjmModel& model, const std::function<void(const std::string&)>& progress = {});
+// spring's cache) and puts it into its chain. `progress` (optional) hears the long stages and
+// `warning` (optional) what the user must hear, "FILE:LINE: ...: why" (a rejected cache entry,
+// recomputed). A bad mesh or region gives kInvalidInput "FILE:LINE: chain 'c' element N (spring)
+// fea: MESH: ...".
+Status resolve_fea_springs(VjmModel& model, const std::function<void(const std::string&)>& progress = {},
+                           const std::function<void(const std::string&)>& warning = {});
 
 // The chains at the tool point `point` (m, Orthoglide kinematics frame). A point is accepted only by
 // an Orthoglide model (kInvalidInput otherwise: a `chains:` file fixes its posture); no point means
