@@ -214,6 +214,29 @@ StatusOr<BeamStations> beam_stations(const Structure& s, const LoadCase& lc, con
   for (int k = 0; k < count; ++k) out.x.push_back(field.length() * k / (count - 1));
   for (double x : out.x) out.forces.push_back(field.forces(x));
   out.displacement = field.displacements(out.x);
+  for (int q = 0; q < 12; ++q) {
+    auto value = [&](int k) { return q < 6 ? out.forces[k](q) : out.displacement[k](q - 6); };
+    BeamStations::Extreme& e = out.extremes[q];
+    e = {value(0), out.x[0], value(0), out.x[0]};
+    for (int k = 1; k < count; ++k) {
+      if (value(k) > e.max) e.max = value(k), e.x_at_max = out.x[k];
+      if (value(k) < e.min) e.min = value(k), e.x_at_min = out.x[k];
+    }
+  }
+  return out;
+}
+
+StatusOr<std::vector<std::vector<BeamStations>>> all_beam_stations(const Structure& s, const Solution& sol,
+                                                                   int count) {
+  std::vector<std::vector<BeamStations>> out;
+  for (size_t c = 0; c < sol.cases.size() && c < s.load_cases().size(); ++c) {
+    out.emplace_back();
+    for (int b = 0; b < static_cast<int>(s.beams().size()); ++b) {
+      auto st = beam_stations(s, s.load_cases()[c], sol.cases[c], b, count);
+      if (!st.ok()) return st.status();
+      out.back().push_back(std::move(*st));
+    }
+  }
   return out;
 }
 

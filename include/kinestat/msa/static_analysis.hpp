@@ -3,6 +3,7 @@
 // report node, stiffness indices, and the diagnosis of singular structures.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -92,12 +93,18 @@ StatusOr<CartesianStiffness> cartesian_stiffness(const Structure& s, Workspace& 
 // thermal curvature and shear strain, by Gauss quadrature exact for these polynomial fields),
 // end releases included (the field is fitted to the end translations, not to a released rotation).
 struct BeamStations {
+  struct Extreme {
+    double max = 0.0, x_at_max = 0.0, min = 0.0, x_at_min = 0.0;  // over the stations (first one on ties)
+  };
   std::vector<double> x;
   std::vector<Vec6> forces;
   std::vector<Vec6> displacement;
+  std::array<Extreme, 12> extremes{};  // forces N..Mz, then displacement ux..rz
 };
 StatusOr<BeamStations> beam_stations(const Structure& s, const LoadCase& lc, const LoadCaseResult& r, int beam,
                                      int count);
+// Every beam of every solved load case: [case][beam]. Fails as beam_stations does.
+StatusOr<std::vector<std::vector<BeamStations>>> all_beam_stations(const Structure& s, const Solution& sol, int count);
 
 // A full human-readable report (as Ceres' Summary::FullReport): model size, solver, per load case
 // max displacement and equilibrium, Cartesian stiffness with units, indices, singularity diagnosis.
