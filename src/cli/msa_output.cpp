@@ -22,7 +22,13 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
   Output out(ctx, o.out);
   out.report() << msa::full_report(s, sol);
   if (out.json_wanted()) {
-    nlohmann::json j = io::solution_to_json(s, sol);
+    std::vector<std::vector<msa::BeamStations>> stations;
+    if (o.stations > 0 && !sol.cases.empty()) {
+      auto st = msa::all_beam_stations(s, sol, o.stations);
+      if (!st.ok()) return report_failure(ctx, command, st.status());
+      stations = std::move(*st);
+    }
+    nlohmann::json j = io::solution_to_json(s, sol, o.stations > 0 ? &stations : nullptr);
     j.update(extra);
     if (Status st = out.write_json(j); !st.ok()) return report_failure(ctx, command, st);
     if (o.out.json != "-") out.report() << "\nJSON results: " << o.out.json << "\n";

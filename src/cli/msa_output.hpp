@@ -15,6 +15,7 @@ struct MsaOutputOptions {
   OutputOptions out;      // --json, --quiet
   std::string vtk_dir;    // empty: no VTK
   std::string basename;   // of the .vtu/.pvd files
+  int stations = 0;       // --stations: along-member results per beam in the JSON (0: none)
 };
 
 // Adds --vtk, --json and --quiet to a command.

@@ -1,4 +1,4 @@
-// kinestat solve FILE [--vtk DIR] [--json FILE|-] [--quiet] [--regularize]
+// kinestat solve FILE [--vtk DIR] [--json FILE|-] [--stations N] [--quiet] [--regularize]
 #include <filesystem>
 #include <ostream>
 
@@ -23,6 +23,10 @@ void register_solve_command(CLI::App& app, Context& ctx) {
   cmd->add_flag("--regularize", args->regularize,
                 "for a singular structure, also print a REGULARIZED answer (K + 1e-10 diag K), clearly marked");
   add_msa_output_options(*cmd, args->out);
+  cmd->add_option("--stations", args->out.stations,
+                  "with --json: internal forces (N, Vy, Vz, T, My, Mz) and local displacements at N equally spaced "
+                  "stations along every beam, with their extremes (2 to 10000)")
+      ->check(CLI::Range(2, 10000));
   cmd->callback([args, &ctx] {
     auto s = io::read_structure_yaml(args->file);
     if (!s.ok()) {

@@ -15,6 +15,7 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kEndForceNames[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+constexpr const char* kStationNames[12] = {"N", "Vy", "Vz", "T", "My", "Mz", "ux", "uy", "uz", "rx", "ry", "rz"};
 
 // Id of item i of `items`, or "#i" when the solution refers past the structure (never expected).
 template <class T>
@@ -70,6 +71,19 @@ json load_case_json(const msa::Structure& s, const msa::LoadCaseResult& r) {
     c["joint_forces"].push_back(wrench("joint", id_of(s.joints(), i), r.joint_forces[i]));
   }
   return c;
+}
+
+// One beam's stations: x, each quantity as an array, and its extremes.
+json stations_json(const std::string& beam, const msa::BeamStations& st) {
+  json b = {{"beam", beam}, {"x", st.x}};
+  for (int q = 0; q < 12; ++q) {
+    json values = json::array();
+    for (std::size_t k = 0; k < st.x.size(); ++k) values.push_back(q < 6 ? st.forces[k](q) : st.displacement[k](q - 6));
+    b[kStationNames[q]] = values;
+    const auto& e = st.extremes[static_cast<std::size_t>(q)];
+    b["extremes"][kStationNames[q]] = {{"max", e.max}, {"x_at_max", e.x_at_max}, {"min", e.min}, {"x_at_min", e.x_at_min}};
+  }
+  return b;
 }
 
 json cartesian_json(const msa::Structure& s, const CartesianStiffness& cs) {
@@ -150,7 +164,8 @@ void encode_non_finite(json& j) {
   for (auto& n : notes) all.push_back(std::move(n));
 }
 
-json solution_to_json(const msa::Structure& s, const msa::Solution& sol) {
+json solution_to_json(const msa::Structure& s, const msa::Solution& sol,
+                      const std::vector<std::vector<msa::BeamStations>>* stations) {
   json j;
   j["schema"] = "kinestat-msa-results";
   j["schema_version"] = kResultsSchemaVersion;
@@ -189,7 +204,15 @@ json solution_to_json(const msa::Structure& s, const msa::Solution& sol) {
                    {"min_pivot_column", f.min_pivot_column}}}};
 
   j["load_cases"] = json::array();
-  for (const auto& r : sol.cases) j["load_cases"].push_back(load_case_json(s, r));
+  for (std::size_t c = 0; c < sol.cases.size(); ++c) {
+    json lc = load_case_json(s, sol.cases[c]);
+    if (stations && c < stations->size()) {
+      lc["beam_stations"] = json::array();
+      for (std::size_t b = 0; b < (*stations)[c].size(); ++b)
+        lc["beam_stations"].push_back(stations_json(id_of(s.beams(), b), (*stations)[c][b]));
+    }
+    j["load_cases"].push_back(lc);
+  }
   j["cartesian_stiffness"] = sol.cartesian ? cartesian_json(s, *sol.cartesian) : json();
   j["global_indices"] = sol.global_indices ? stiffness_indices_to_json(*sol.global_indices) : json();
   j["singularity"] = singularity_json(s, sol.singularity);

@@ -79,5 +79,40 @@ TEST(Cli, SolveWritesJsonAndVtk) {
   EXPECT_TRUE(found) << j.dump(1).substr(0, 2000);
 }
 
+TEST(Cli, SolveWritesAlongMemberStationsOnRequest) {
+  const auto dir = std::filesystem::path(KINESTAT_BINARY_DIR) / "test_cli_stations";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string json = (dir / "loaded_beam.json").string();
+  CliRun r = run_cli({"solve", kModels + "loaded_beam.yaml", "--json", json, "--stations", "5", "--quiet"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  nlohmann::json j;
+  {
+    std::ifstream in(json);
+    j = nlohmann::json::parse(in);
+  }
+  // The uniform case: 5 w L^4 / 384 EI at the middle station (w = 2000 N/m, L = 4 m, 0.06 x 0.12 m).
+  const auto& c = j.at("load_cases").at(1);
+  ASSERT_EQ(c.at("name"), "uniform");
+  const auto& b = c.at("beam_stations").at(0);
+  EXPECT_EQ(b.at("beam"), "beam");
+  EXPECT_EQ(b.at("x").size(), 5u);
+  const double mid = 5 * 2000 * 256.0 / (384 * 210e9 * 0.06 * 0.12 * 0.12 * 0.12 / 12);
+  EXPECT_NEAR(b.at("uz")[2].get<double>(), -mid, 1e-12 * mid);
+  EXPECT_NEAR(b.at("My")[2].get<double>(), -2000 * 16.0 / 8, 1e-12 * 4000);
+  EXPECT_NEAR(b.at("extremes").at("uz").at("min").get<double>(), -mid, 1e-12 * mid);
+  EXPECT_EQ(b.at("extremes").at("uz").at("x_at_min").get<double>(), 2.0);
+  // Without --stations the field is absent; one station is refused.
+  r = run_cli({"solve", kModels + "loaded_beam.yaml", "--json", json, "--quiet"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  {
+    std::ifstream in(json);
+    EXPECT_FALSE(nlohmann::json::parse(in).at("load_cases").at(1).contains("beam_stations"));
+  }
+  r = run_cli({"solve", kModels + "loaded_beam.yaml", "--json", json, "--stations", "1"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--stations"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace kinestat::cli

@@ -156,5 +156,39 @@ TEST(BundledModels, ReleasedChainIsSingularWithTheSwingAsFreeMotion) {
   EXPECT_LT(m[h2].head<3>().norm(), 1e-6);
 }
 
+// models/loaded_beam.yaml: L = 4 m simply supported, E = 210 GPa, rectangle 0.06 x 0.12 m (h
+// vertical), density 7850 kg/m^3; w = 2000 N/m; alpha = 1.2e-5 /K, dTz = 20 K over hz = 0.12 m.
+TEST(BundledModels, LoadedBeamMatchesBeamTheoryAlongTheSpan) {
+  const msa::Structure s = load("loaded_beam.yaml");
+  const msa::Solution sol = msa::solve(s);
+  ASSERT_TRUE(sol.status.ok()) << sol.status.message();
+  const double L = 4.0, E = 210e9, A = 0.06 * 0.12, I = 0.06 * std::pow(0.12, 3) / 12, w = 2000.0;
+  auto st = msa::all_beam_stations(s, sol, 5);  // x = 0, 1, 2, 3, 4 m
+  ASSERT_TRUE(st.ok()) << st.status().message();
+  const double tol = 1e-12;  // exact element and exact integration: round-off (measured ~1e-15)
+  // Self-weight: q = rho A g, midspan 5 q L^4 / 384 EI downwards.
+  const double q = 7850 * A * 9.81, self = 5 * q * std::pow(L, 4) / (384 * E * I);
+  EXPECT_NEAR((*st)[0][0].displacement[2](2), -self, tol * self);
+  // Uniform load: 5 w L^4 / 384 EI, sagging moment w L^2 / 8 (My = -EI w'' < 0), the extremes there.
+  const double mid = 5 * w * std::pow(L, 4) / (384 * E * I);
+  const msa::BeamStations& u = (*st)[1][0];
+  EXPECT_NEAR(u.displacement[2](2), -mid, tol * mid);
+  EXPECT_NEAR(u.forces[2](4), -w * L * L / 8, tol * w * L * L / 8);
+  EXPECT_NEAR(u.extremes[6 + 2].min, -mid, tol * mid);
+  EXPECT_EQ(u.extremes[6 + 2].x_at_min, 2.0);
+  EXPECT_EQ(u.extremes[4].x_at_min, 2.0);
+  // Point load P = 5000 N at a = 1 m plus a triangle 0 -> 1000 N/m over [2, 4] m: the reaction at A
+  // is P (L - a)/L + (1000 * 2 / 2) * (L - 10/3)/L, with the triangle's resultant 4/3 m from B's side.
+  const double RA = 5000 * 3.0 / 4 + 1000 * (4 - 10.0 / 3) / 4;
+  EXPECT_NEAR(sol.cases[2].reaction[0](2), RA, tol * RA);
+  // Moment at x = 1 m (at the point load): -RA * 1 m.
+  EXPECT_NEAR((*st)[2][0].forces[1](4), -RA * 1.0, tol * RA);
+  // Temperature: a free curvature alpha dTz / hz upwards, no force on a statically determinate beam:
+  // midspan rise alpha dTz L^2 / (8 hz).
+  const double rise = 1.2e-5 * 20 * L * L / (8 * 0.12);
+  EXPECT_NEAR((*st)[3][0].displacement[2](2), rise, tol * rise);
+  EXPECT_LT(sol.cases[3].reaction[0].norm(), 1e-6);
+}
+
 }  // namespace
 }  // namespace kinestat::io

@@ -19,7 +19,9 @@ inline constexpr int kResultsSchemaVersion = 1;
 
 // Every result of an MSA solve: model summary, solver report, load cases, Cartesian stiffness,
 // indices and singularity diagnosis. Ids refer to the structure's nodes, beams and joints.
-nlohmann::json solution_to_json(const msa::Structure& s, const msa::Solution& sol);
+// `stations` (msa::all_beam_stations, [case][beam]; null: none) adds each case's "beam_stations".
+nlohmann::json solution_to_json(const msa::Structure& s, const msa::Solution& sol,
+                                const std::vector<std::vector<msa::BeamStations>>* stations = nullptr);
 
 // All fields of StiffnessIndices (eigenvectors as a list, eigenvectors[i] belonging to eigenvalues[i]).
 // May hold non-finite numbers: pass the finished document through encode_non_finite.

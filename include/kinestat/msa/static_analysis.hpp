@@ -3,6 +3,7 @@
 // report node, stiffness indices, and the diagnosis of singular structures.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -84,6 +85,29 @@ Solution solve(const Structure& s, const SolveOptions& options = {});
 // point is the node's position, the axes global.
 StatusOr<CartesianStiffness> cartesian_stiffness(const Structure& s, Workspace& ws, int node,
                                                  const SolveOptions& options = {});
+
+// Internal forces and displacements along one beam for one solved load case, in the beam's local
+// axes, at `count` (>= 2) equally spaced stations x_k = k L / (count - 1) from its first node.
+// forces: N Vy Vz T My Mz, the force on the +x face of the part [0, x] (so the values at x = L are
+// the end forces at the second end, those at x = 0 the negated end forces at the first end; at a
+// point load's station, the value just after it). displacement: ux uy uz (m) of the beam axis and
+// rx (twist), ry, rz (cross-section rotations, rad), local axes. Both are exact for Euler-Bernoulli
+// and Timoshenko beams under the member loads (equilibrium of [0, x] and the integrated curvature,
+// thermal curvature and shear strain, by Gauss quadrature exact for these polynomial fields),
+// end releases included (the field is fitted to the end translations, not to a released rotation).
+struct BeamStations {
+  struct Extreme {
+    double max = 0.0, x_at_max = 0.0, min = 0.0, x_at_min = 0.0;  // over the stations (first one on ties)
+  };
+  std::vector<double> x;
+  std::vector<Vec6> forces;
+  std::vector<Vec6> displacement;
+  std::array<Extreme, 12> extremes{};  // forces N..Mz, then displacement ux..rz
+};
+StatusOr<BeamStations> beam_stations(const Structure& s, const LoadCase& lc, const LoadCaseResult& r, int beam,
+                                     int count);
+// Every beam of every solved load case: [case][beam]. Fails as beam_stations does.
+StatusOr<std::vector<std::vector<BeamStations>>> all_beam_stations(const Structure& s, const Solution& sol, int count);
 
 // A full human-readable report (as Ceres' Summary::FullReport): model size, solver, per load case
 // max displacement and equilibrium, Cartesian stiffness with units, indices, singularity diagnosis.
