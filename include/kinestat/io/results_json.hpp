@@ -18,8 +18,9 @@ namespace kinestat::io {
 inline constexpr int kResultsSchemaVersion = 1;
 
 // Every result of an MSA solve: model summary, solver report, load cases, Cartesian stiffness,
-// indices and singularity diagnosis. Ids refer to the structure's nodes, beams and joints.
-nlohmann::json solution_to_json(const msa::Structure& s, const msa::Solution& sol);
+// indices and singularity diagnosis. Ids refer to the structure's nodes, beams and joints:
+// kInvalidInput (msa::check_solution_matches) for a solution of another structure.
+StatusOr<nlohmann::json> solution_to_json(const msa::Structure& s, const msa::Solution& sol);
 
 // All fields of StiffnessIndices (eigenvectors as a list, eigenvectors[i] belonging to eigenvalues[i]).
 // May hold non-finite numbers: pass the finished document through encode_non_finite.
