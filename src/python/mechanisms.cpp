@@ -500,7 +500,8 @@ void bind_posture_kernels(py::module_& m) {
         for (size_t i = 0; i < p.size(); ++i) {
           p[i] = Vec3(points.data() + 3 * i);
           // check_quantity formats its message: called only for a point that fails the quick test.
-          if (!(p[i].cwiseAbs().maxCoeff() <= quantity_range(Quantity::kLength).max_abs))
+          // (allFinite first: Eigen's maxCoeff may skip a NaN.)
+          if (!p[i].allFinite() || p[i].cwiseAbs().maxCoeff() > quantity_range(Quantity::kLength).max_abs)
             check(check_entries(p[i], Quantity::kLength, fmt::format("points (row {})", i)));
         }
         std::vector<PostureResult> results;

@@ -127,6 +127,10 @@ def test_evaluate_at_a_nan_point():
         kernel.evaluate([0.0, nan, 0.0])
     with pytest.raises(ks.InputError, match=r"points \(row 1\)\[0\] = nan m"):
         mech.evaluate_postures(kernel, np.array([[0.0, 0.12, 0.0], [nan, 0.12, 0.0]]))
+    with pytest.raises(ks.InputError, match=r"points \(row 0\)\[2\] = nan m"):
+        mech.evaluate_postures(kernel, np.array([[0.0, 0.12, nan]]))
+    with pytest.raises(ks.InputError, match=r"points \(row 0\)\[1\] = 1e\+07 m is too large"):
+        mech.evaluate_postures(kernel, np.array([[0.0, 1e7, 0.0]]))
     assert kernel.evaluate([0.0, 0.12, 0.0]).status == mech.PostureStatus.OK
 
 
