@@ -49,7 +49,7 @@ struct DesignArgs {
   int vtk_grid = 21;
   int search_points = 41;
   std::vector<double> encoder_offsets_mm = {5.0, 10.0};  // section 6's examples
-  double max_points = 2e6;
+  double max_points = mechanisms::kDefaultMaxSearchPoints;
   OutputOptions out;
 };
 
@@ -130,17 +130,10 @@ int run_design(const DesignArgs& a, Context& ctx) {
         fmt::format("--mu {}: must lie strictly between 0 and 1 (the factors are bounded to [mu, 1/mu])", a.mu)));
   if (a.strategy && (*a.strategy < 1 || *a.strategy > 3))
     return fail(Status::Invalid(fmt::format("--strategy {}: must be 1, 2 or 3", *a.strategy)));
-  if (a.vtk_grid < 2 || a.search_points < 2)
-    return fail(Status::Invalid("--vtk-grid and --search-points must be at least 2"));
   // Sizes estimated before anything is allocated or searched.
-  const double n = a.search_points;
-  for (const Status& s : {check_size(std::pow(static_cast<double>(a.vtk_grid), 3.0), a.max_points,
-                                     fmt::format("--vtk-grid {}", a.vtk_grid), "joint-grid points (N^3)",
-                                     "give a smaller --vtk-grid or raise the limit with --max-points"),
-                          check_size(7.0 * n * n + std::pow(n / 4.0, 3.0), a.max_points,
-                                     fmt::format("--search-points {}", a.search_points),
-                                     "points searched per design (~7 N^2 + N^3/64)",
-                                     "give a smaller --search-points or raise the limit with --max-points")})
+  using mechanisms::check_grid_points, mechanisms::check_search_points;
+  for (const Status& s : {check_grid_points(a.vtk_grid, a.max_points, "--vtk-grid", "--max-points"),
+                          check_search_points(a.search_points, a.max_points, "--search-points", "--max-points")})
     if (!s.ok()) return fail(s);
   for (double e : a.encoder_offsets_mm)
     if (!std::isfinite(e))

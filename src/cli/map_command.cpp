@@ -97,6 +97,7 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
       s.ranges[i] = {std::floor(box->min(i) / kMm / step + 1e-9) * step * kMm,
                      std::ceil(box->max(i) / kMm / step - 1e-9) * step * kMm};
   }
+  if (Status st = validate(o); !st.ok()) return st;
   s.curves = five_bar_singular_loci(o.params, o.mode, o.assembly);
   s.kernel = make_five_bar_kernel(o);
   return s;
@@ -137,6 +138,7 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   o.architecture = model->architecture;
   s.workspace_hint = fmt::format("every point is outside a leg's reach (L = {:.1f} mm about the slider axes)",
                                  o.model.link_length / kMm);
+  if (Status st = validate(o); !st.ok()) return st;
   s.kernel = make_orthoglide_kernel(o);
   return s;
 }

@@ -19,8 +19,10 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
   const StatusCode code = sol.status.code();
   if (code == StatusCode::kInvalidInput || code == StatusCode::kInternal)
     return report_failure(ctx, command, sol.status);
+  StatusOr<std::string> report = msa::full_report(s, sol);
+  if (!report.ok()) return report_failure(ctx, command, report.status());
   Output out(ctx, o.out);
-  out.report() << msa::full_report(s, sol);
+  out.report() << *report;
   if (out.json_wanted()) {
     std::vector<std::vector<msa::BeamStations>> stations;
     if (o.stations > 0 && !sol.cases.empty()) {
@@ -28,9 +30,10 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
       if (!st.ok()) return report_failure(ctx, command, st.status());
       stations = std::move(*st);
     }
-    nlohmann::json j = io::solution_to_json(s, sol, o.stations > 0 ? &stations : nullptr);
-    j.update(extra);
-    if (Status st = out.write_json(j); !st.ok()) return report_failure(ctx, command, st);
+    StatusOr<nlohmann::json> j = io::solution_to_json(s, sol, o.stations > 0 ? &stations : nullptr);
+    if (!j.ok()) return report_failure(ctx, command, j.status());
+    j->update(extra);
+    if (Status st = out.write_json(*j); !st.ok()) return report_failure(ctx, command, st);
     if (o.out.json != "-") out.report() << "\nJSON results: " << o.out.json << "\n";
   }
   if (!o.vtk_dir.empty()) {

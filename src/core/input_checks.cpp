@@ -61,6 +61,10 @@ Status check_size(double estimate, double limit, const std::string& what, const 
                                      advice));
 }
 
+std::string entry_name(const std::string& item, long i, long j, bool vector) {
+  return vector ? fmt::format("{}[{}]", item, i) : fmt::format("{}[{}, {}]", item, i, j);
+}
+
 std::string at_source(const std::string& source, const std::string& message) {
   return source.empty() ? message : source + ": " + message;
 }

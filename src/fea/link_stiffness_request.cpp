@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/result_cache.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
@@ -62,7 +63,18 @@ StatusOr<TetMesh> mesh_from_rank0(const std::string& file, const MeshingOptions&
 
 }  // namespace
 
+Status validate(const LinkStiffnessRequest& request) {
+  if (Status s = check_quantity(request.unit_scale, Quantity::kLength, "unit_scale", {}, Sign::kPositive); !s.ok())
+    return s;
+  // 0 asks for the default size; NaN used to pass as "not > 0" and silently meant the default.
+  if (request.mesh_size != 0.0)
+    if (Status s = check_quantity(request.mesh_size, Quantity::kLength, "mesh_size", {}, Sign::kPositive); !s.ok())
+      return s;
+  return check_quantity(request.max_elements, Quantity::kRatio, "max_elements", {}, Sign::kPositive);
+}
+
 StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& request) {
+  if (Status s = validate(request); !s.ok()) return s;
   LinkStiffnessRun run;
   StatusOr<SurfaceInfo> surface = surface_from_rank0(request.mesh_file);
   if (!surface.ok()) return surface.status();
@@ -114,6 +126,7 @@ StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& re
 
 StatusOr<ConvergenceStudy> link_stiffness_convergence(const LinkStiffnessRequest& request,
                                                       const std::vector<double>& sizes) {
+  if (Status s = validate(request); !s.ok()) return s;
   auto make = [&](double h) { return mesh_from_rank0(request.mesh_file, meshing_options(request, h)); };
   return mesh_convergence_study(make, sizes, request.material, request.options);
 }

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
+
 namespace kinestat::fea {
 
 StatusOr<RichardsonEstimate> richardson_estimate(const std::vector<double>& h, const std::vector<double>& f) {
@@ -41,6 +43,15 @@ StatusOr<ConvergenceStudy> mesh_convergence_study(const std::function<StatusOr<T
                                                   const std::vector<double>& sizes, const Material& material,
                                                   const LinkStiffnessOptions& options) {
   if (sizes.size() < 3) return Status::Invalid("mesh convergence study: give three or more mesh sizes");
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    if (Status s = check_quantity(sizes[i], Quantity::kLength, fmt::format("sizes[{}]", i), {}, Sign::kPositive);
+        !s.ok())
+      return s;
+    if (i > 0 && !(sizes[i] < sizes[i - 1]))
+      return Status::Invalid(fmt::format("sizes[{}] = {:g} m after {:g} m: give the mesh sizes in strictly decreasing "
+                                         "order, coarse to fine (e.g. 0.004, 0.002, 0.001)",
+                                         i, sizes[i], sizes[i - 1]));
+  }
   ConvergenceStudy study;
   study.sizes = sizes;
   LinkStiffnessOptions o = options;

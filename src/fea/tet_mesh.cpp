@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "fea/sha256.hpp"
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::fea {
 
@@ -17,6 +18,20 @@ double signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 }
 
 }  // namespace
+
+Status check_box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, double max_elements) {
+  if (Status s = check_entries(lo, Quantity::kLength, "lo"); !s.ok()) return s;
+  if (Status s = check_entries(hi, Quantity::kLength, "hi"); !s.ok()) return s;
+  for (int a = 0; a < 3; ++a)
+    if (!(lo(a) < hi(a)))
+      return Status::Invalid(fmt::format("lo[{0}] = {1:g} m, hi[{0}] = {2:g} m: the box needs lo < hi on every axis",
+                                         a, lo(a), hi(a)));
+  const std::array<std::pair<const char*, int>, 3> cells = {{{"nx", nx}, {"ny", ny}, {"nz", nz}}};
+  for (const auto& [name, n] : cells)
+    if (n < 1) return Status::Invalid(fmt::format("{} = {}: give at least 1 cell along each axis", name, n));
+  return check_size(6.0 * nx * ny * nz, max_elements, fmt::format("box mesh of {} x {} x {} cells", nx, ny, nz),
+                    "tetrahedra (6 nx ny nz)", "give fewer cells or raise max_elements");
+}
 
 TetMesh make_box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz) {
   TetMesh m;

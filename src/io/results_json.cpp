@@ -164,8 +164,9 @@ void encode_non_finite(json& j) {
   for (auto& n : notes) all.push_back(std::move(n));
 }
 
-json solution_to_json(const msa::Structure& s, const msa::Solution& sol,
-                      const std::vector<std::vector<msa::BeamStations>>* stations) {
+StatusOr<json> solution_to_json(const msa::Structure& s, const msa::Solution& sol,
+                                const std::vector<std::vector<msa::BeamStations>>* stations) {
+  if (Status st = msa::check_solution_matches(s, sol); !st.ok()) return st;
   json j;
   j["schema"] = "kinestat-msa-results";
   j["schema_version"] = kResultsSchemaVersion;

@@ -136,16 +136,7 @@ Status write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
 
 Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::string& dir, const std::string& basename,
                  std::vector<std::string>* written) {
-  for (const auto& r : sol.cases) {
-    if (r.displacement.size() != s.nodes().size() || r.reaction.size() != s.nodes().size() ||
-        r.beam_end_forces.size() != s.beams().size() || r.joint_forces.size() != s.joints().size()) {
-      return Status::Internal(fmt::format("load case '{}': result sizes do not match the structure", r.name));
-    }
-  }
-  for (const auto& m : sol.singularity.modes) {
-    if (m.node_motion.size() != s.nodes().size())
-      return Status::Internal("free motion: size does not match the structure");
-  }
+  if (Status st = msa::check_solution_matches(s, sol); !st.ok()) return st;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))

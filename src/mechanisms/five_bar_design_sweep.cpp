@@ -39,12 +39,21 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
   if ((vary1 || vary2) && (o.steps < 2 || o.steps > kMaxSteps))
     return Status::Invalid(fmt::format("{} designs per length: a range needs 2 to {} (a single value needs none)",
                                        o.steps, kMaxSteps));
+  // The default MapGrid is one point: a sweep over it would rank designs by that point alone.
   const std::size_t n_region = o.region.num_points();
-  if (n_region == 0) return Status::Invalid("the region has no points");
-  if (!(o.near_singular_threshold >= 0.0 && o.near_singular_threshold <= 1.0))
-    return Status::Invalid(fmt::format("near-singular threshold {:g}: must lie in [0, 1]", o.near_singular_threshold));
-  if (o.min_stiffness && !(*o.min_stiffness >= 0.0 && std::isfinite(*o.min_stiffness)))
-    return Status::Invalid(fmt::format("minimum stiffness {:g} N/m: must be finite and >= 0", *o.min_stiffness));
+  if (o.region.num_varying_axes() < 2)
+    return Status::Invalid(fmt::format("region: {} point(s), not a plane of P; set it to make_map_grid([(x0, x1), "
+                                       "(y0, y1), 0], step) (m), as `kinestat design fivebar --region`",
+                                       n_region));
+  FiveBarKernelOptions first = o.base;  // r1, r2 are the swept ones: the ranges' first
+  first.params.r1 = o.r1.lo;
+  first.params.r2 = o.r2.lo;
+  if (Status s = validate(first); !s.ok()) return s;
+  MapOptions checked;  // the map options' fields the sweep sets, checked as a map checks them
+  checked.near_singular_threshold = o.near_singular_threshold;
+  checked.min_stiffness = o.min_stiffness;
+  checked.threads = o.threads;
+  if (Status s = validate(checked); !s.ok()) return s;
 
   FiveBarDesignSweep out;
   MapGrid& d = out.designs;

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/vjm/link_spring.hpp"
 #include "mechanisms/fixed_size_vjm.hpp"
@@ -282,6 +283,12 @@ class FiveBarVjmKernel final : public FiveBarKernelBase {
 };
 
 }  // namespace
+
+Status validate(const FiveBarKernelOptions& options) {
+  if (Status s = validate(options.params); !s.ok()) return s;
+  if (Status s = check_entries(options.load.head<3>(), Quantity::kForce, "load (force, N)"); !s.ok()) return s;
+  return check_entries(options.load.tail<3>(), Quantity::kMoment, "load (moment, N m)");
+}
 
 std::unique_ptr<PostureKernel> make_five_bar_kernel(const FiveBarKernelOptions& options) {
   if (options.method == StiffnessMethod::kMsa) return std::make_unique<FiveBarMsaKernel>(options);

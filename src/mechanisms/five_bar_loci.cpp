@@ -5,6 +5,8 @@
 #include <numbers>
 #include <optional>
 
+#include <fmt/format.h>
+
 namespace kinestat::mechanisms {
 namespace {
 
@@ -49,7 +51,7 @@ std::optional<Vec2> circle_intersection(const Vec2& c1, double r1, const Vec2& c
 std::vector<MapCurve> five_bar_singular_loci(const FiveBarParams& p, WorkingMode mode, Assembly assembly,
                                              int samples) {
   std::vector<MapCurve> loci{{"workspace boundary", {}}, {"parallel singularity", {}}};
-  if (!validate(p).ok() || samples < 8) return loci;
+  if (!validate(p).ok() || !check_loci_samples(samples).ok()) return loci;
   const double step = 2.0 * std::numbers::pi / samples;
   const Vec2 A[2] = {Vec2(-p.r3, 0.0), Vec2(p.r3, 0.0)};
 
@@ -113,6 +115,13 @@ StatusOr<Box2> five_bar_workspace_box(const FiveBarParams& p, WorkingMode mode, 
     return Status::Invalid("five-bar working mode " + to_string(mode) + ", assembly " + to_string(assembly) +
                            ": no posture of this mode exists");
   return box;
+}
+
+Status check_loci_samples(int samples) {
+  if (samples < 8 || samples > kMaxLociSamples)
+    return Status::Invalid(fmt::format("samples = {}: the loci take 8 to {} samples per turn (default 4096)", samples,
+                                       kMaxLociSamples));
+  return Status::Ok();
 }
 
 }  // namespace kinestat::mechanisms

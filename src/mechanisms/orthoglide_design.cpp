@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
+
 namespace kinestat::mechanisms {
 
 namespace {
@@ -444,6 +446,19 @@ JointWorkspaceSamples sample_joint_workspace(const OrthoglideDesign& d, int n) {
         s.valid[idx] = 1;
       }
   return s;
+}
+
+Status check_search_points(int n, double max_points, const std::string& item, const std::string& limit) {
+  if (n < 2) return Status::Invalid(fmt::format("{} {}: the search grid needs at least 2 points per edge", item, n));
+  const double points = 7.0 * n * n + std::pow(n / 4.0, 3.0);
+  return check_size(points, max_points, fmt::format("{} {}", item, n), "points searched (~7 N^2 + N^3/64)",
+                    fmt::format("give a smaller {} or raise the limit with {}", item, limit));
+}
+
+Status check_grid_points(int n, double max_points, const std::string& item, const std::string& limit) {
+  if (n < 2) return Status::Invalid(fmt::format("{} {}: the grid needs at least 2 points per axis", item, n));
+  return check_size(std::pow(static_cast<double>(n), 3.0), max_points, fmt::format("{} {}", item, n),
+                    "grid points (N^3)", fmt::format("give a smaller {} or raise the limit with {}", item, limit));
 }
 
 }  // namespace kinestat::mechanisms

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/mechanisms/orthoglide_kinematics.hpp"
 #include "kinestat/vjm/link_spring.hpp"
 #include "mechanisms/fixed_chain.hpp"
@@ -222,6 +223,25 @@ PostureResult OrthoglideKernel::loaded(const Vec3& p, const Vec3& rho, PostureRe
 }
 
 }  // namespace
+
+Status validate(const OrthoglideKernelOptions& options) {
+  if (Status s = validate_stiffness_model(options.model); !s.ok()) return s;
+  if (options.wrench && options.displacement)
+    return Status::Invalid("wrench and displacement: the loaded mode takes one of them (an external wrench or a "
+                           "prescribed tool displacement); set the other to None");
+  if (options.wrench) {
+    if (Status s = check_entries(options.wrench->head<3>(), Quantity::kForce, "wrench (force, N)"); !s.ok()) return s;
+    if (Status s = check_entries(options.wrench->tail<3>(), Quantity::kMoment, "wrench (moment, N m)"); !s.ok())
+      return s;
+  }
+  if (options.displacement) {
+    if (Status s = check_entries(options.displacement->head<3>(), Quantity::kLength, "displacement (m)"); !s.ok())
+      return s;
+    if (Status s = check_entries(options.displacement->tail<3>(), Quantity::kAngle, "displacement (rad)"); !s.ok())
+      return s;
+  }
+  return Status::Ok();
+}
 
 std::unique_ptr<PostureKernel> make_orthoglide_kernel(const OrthoglideKernelOptions& options) {
   return std::make_unique<OrthoglideKernel>(options);

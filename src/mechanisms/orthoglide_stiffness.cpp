@@ -3,6 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <tuple>
+#include <utility>
+
+#include "kinestat/core/input_checks.hpp"
 
 #include "kinestat/mechanisms/orthoglide_kinematics.hpp"
 #include "kinestat/vjm/link_spring.hpp"
@@ -32,20 +36,26 @@ Mat6 bar_spring(const OrthoglideStiffnessModel& m) {
 }  // namespace
 
 Status validate_stiffness_model(const OrthoglideStiffnessModel& m) {
-  auto positive = [](double v) { return std::isfinite(v) && v > 0; };
-  if (!positive(m.link_length) || !positive(m.parallelogram_width) || !positive(m.actuator_stiffness) ||
-      !positive(m.foot_length))
-    return Status::Invalid(
-        "Orthoglide stiffness model: link length, parallelogram width, foot length (m) and "
-        "actuator stiffness (N/m) must be positive and finite");
-  if (!std::isfinite(m.platform_offset) || m.platform_offset < 0)
-    return Status::Invalid("Orthoglide stiffness model: the platform offset (m) must be finite and >= 0");
-  for (const Section* s : {&m.bar_section, &m.foot_section})
-    if (!positive(s->A) || !positive(s->Iy) || !positive(s->Iz) || !positive(s->J))
-      return Status::Invalid("Orthoglide stiffness model: a bar or foot section has a non-positive A, Iy, Iz or J");
-  if (!positive(m.bar_material.E) || !positive(m.bar_material.G) || !positive(m.foot_material.E) ||
-      !positive(m.foot_material.G))
-    return Status::Invalid("Orthoglide stiffness model: E and G (Pa) must be positive");
+  // Each value named as the struct's field (the Python attribute), in its range (core/input_checks).
+  const std::string model = "Orthoglide stiffness model: ";
+  const std::tuple<const char*, double, Quantity, Sign> values[] = {
+      {"link_length", m.link_length, Quantity::kLength, Sign::kPositive},
+      {"parallelogram_width", m.parallelogram_width, Quantity::kLength, Sign::kPositive},
+      {"actuator_stiffness", m.actuator_stiffness, Quantity::kTranslationalStiffness, Sign::kPositive},
+      {"foot_length", m.foot_length, Quantity::kLength, Sign::kPositive},
+      {"platform_offset", m.platform_offset, Quantity::kLength, Sign::kNonNegative},
+      {"bar_material.E", m.bar_material.E, Quantity::kModulus, Sign::kPositive},
+      {"bar_material.G", m.bar_material.G, Quantity::kModulus, Sign::kPositive},
+      {"foot_material.E", m.foot_material.E, Quantity::kModulus, Sign::kPositive},
+      {"foot_material.G", m.foot_material.G, Quantity::kModulus, Sign::kPositive},
+  };
+  for (const auto& [name, value, quantity, sign] : values)
+    if (Status s = check_quantity(value, quantity, model + name, {}, sign); !s.ok()) return s;
+  for (const auto& [name, s] : {std::pair{"bar_section", &m.bar_section}, std::pair{"foot_section", &m.foot_section}})
+    for (const auto& [field, value, quantity] :
+         {std::tuple{".A", s->A, Quantity::kArea}, std::tuple{".Iy", s->Iy, Quantity::kInertia},
+          std::tuple{".Iz", s->Iz, Quantity::kInertia}, std::tuple{".J", s->J, Quantity::kInertia}})
+      if (Status st = check_quantity(value, quantity, model + name + field, {}, Sign::kPositive); !st.ok()) return st;
   return Status::Ok();
 }
 

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/input_checks.hpp"
+
 namespace kinestat::mechanisms {
 namespace {
 
@@ -160,8 +162,25 @@ const FieldValues* WorkspaceMap::find(MapField f) const {
   return nullptr;
 }
 
+Status validate(const MapOptions& o) {
+  if (!(o.near_singular_threshold >= 0.0 && o.near_singular_threshold <= 1.0))
+    return Status::Invalid(fmt::format("near_singular_threshold = {:g}: the threshold on the singularity measure lies "
+                                       "in [0, 1] (default 0.01)",
+                                       o.near_singular_threshold));
+  if (o.min_stiffness)
+    if (Status s = check_quantity(*o.min_stiffness, Quantity::kTranslationalStiffness, "min_stiffness", {},
+                                  Sign::kNonNegative);
+        !s.ok())
+      return s;
+  if (o.max_points < 1) return Status::Invalid("max_points = 0: give the largest grid to allow (default 2000000)");
+  if (o.threads < 0)
+    return Status::Invalid(fmt::format("threads = {}: give 0 (all cores) or a positive count", o.threads));
+  return Status::Ok();
+}
+
 StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const MapGrid& grid,
                                              const MapOptions& options) {
+  if (Status s = validate(options); !s.ok()) return s;
   const std::size_t n = grid.num_points();
   if (n == 0) return Status::Invalid("the map grid has no points");
   if (n > options.max_points)

@@ -12,7 +12,9 @@ const char* kDofUnits[6] = {"m", "m", "m", "rad", "rad", "rad"};
 
 }  // namespace
 
-std::string full_report(const Structure& s, const Solution& sol) {
+StatusOr<std::string> full_report(const Structure& s, const Solution& sol) {
+  // The solution's arrays are indexed by this structure's nodes below.
+  if (Status st = check_solution_matches(s, sol); !st.ok()) return st;
   std::string out;
   out += fmt::format("kinestat MSA report{}\n", s.title().empty() ? "" : ": " + s.title());
   out += fmt::format("  model: {} nodes, {} beams, {} joints, {} rigid links, {} supports, {} load cases\n",

@@ -199,6 +199,8 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   sol.backend = ws.cholesky().backend_description();
   sol.mechanism_ratio = opt.mechanism_ratio;
   sol.num_dofs = s.num_dofs();
+  sol.structure = SolvedStructure{static_cast<int>(s.nodes().size()), static_cast<int>(s.beams().size()),
+                                  static_cast<int>(s.joints().size()), static_cast<int>(s.load_cases().size())};
   const auto t0 = Clock::now();
   auto sys = build_system(s);
   sol.assembly_seconds = seconds_since(t0);
@@ -272,6 +274,42 @@ StatusOr<CartesianStiffness> cartesian_stiffness(const Structure& s, Workspace& 
   std::unique_ptr<solver::SparseCholesky> regularized;
   if (Status st = factorize(s, *sys, ws, options, tmp, regularized); !st.ok()) return st;
   return node_stiffness(s, *sys, regularized ? *regularized : ws.cholesky(), node);
+}
+
+Status check_solution_matches(const Structure& s, const Solution& sol) {
+  const SolvedStructure here{static_cast<int>(s.nodes().size()), static_cast<int>(s.beams().size()),
+                             static_cast<int>(s.joints().size()), static_cast<int>(s.load_cases().size())};
+  auto counts = [](const SolvedStructure& c) {
+    return fmt::format("{} nodes, {} beams, {} joints, {} load cases", c.nodes, c.beams, c.joints, c.load_cases);
+  };
+  auto mismatch = [&](const std::string& what) {
+    return Status::Invalid(fmt::format("solution: {} do not match the structure's {}; pass the structure the "
+                                       "solution was solved for, or solve this one",
+                                       what, counts(here)));
+  };
+  if (sol.structure && (sol.structure->nodes != here.nodes || sol.structure->beams != here.beams ||
+                        sol.structure->joints != here.joints || sol.structure->load_cases != here.load_cases))
+    return mismatch("the counts it was solved for (" + counts(*sol.structure) + ")");
+  // A hand-made solution has no recorded counts: its arrays are what is read.
+  if (!sol.cases.empty() && sol.cases.size() != s.load_cases().size())
+    return mismatch(fmt::format("its {} load case results", sol.cases.size()));
+  for (const LoadCaseResult& r : sol.cases) {
+    if (r.displacement.size() != s.nodes().size() || r.reaction.size() != s.nodes().size() ||
+        r.beam_end_forces.size() != s.beams().size() || r.joint_forces.size() != s.joints().size())
+      return mismatch(fmt::format("load case '{}': its {} displacements, {} reactions, {} beam and {} joint forces",
+                                  r.name, r.displacement.size(), r.reaction.size(), r.beam_end_forces.size(),
+                                  r.joint_forces.size()));
+    if (r.max_translation_node >= here.nodes)
+      return mismatch(
+          fmt::format("load case '{}': its largest translation at node {}", r.name, r.max_translation_node));
+  }
+  for (const FreeMotion& m : sol.singularity.modes)
+    if (m.node_motion.size() != s.nodes().size())
+      return mismatch(fmt::format("a free motion of {} nodes", m.node_motion.size()));
+  if (s.report_node() && (*s.report_node() < 0 || *s.report_node() >= here.nodes))
+    return Status::Invalid(fmt::format("report node {}: not a node of the structure (0..{}); set a node of it",
+                                       *s.report_node(), here.nodes - 1));
+  return Status::Ok();
 }
 
 }  // namespace kinestat::msa

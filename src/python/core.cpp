@@ -1,5 +1,6 @@
 // kinestat core: status codes, frames and rigid transfer, stiffness indices (core/*.hpp).
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/core/stiffness_indices.hpp"
 #include "python/bindings.hpp"
 
@@ -65,6 +66,7 @@ void bind_core(py::module_& m) {
       "stiffness_indices",
       [](const MatX& K) {
         if (K.rows() != K.cols()) raise_status(Status::Invalid("stiffness_indices: K must be a square matrix"));
+        check(check_finite(K, "K"));
         return stiffness_indices(K);
       },
       py::arg("K"), "Every index of a dense symmetric matrix K.");
@@ -86,7 +88,13 @@ void bind_core(py::module_& m) {
       .def_readonly("translational_eigenvalues", &CartesianIndices::translational_eigenvalues, "of K[:3, :3], N/m")
       .def_readonly("rotational_eigenvalues", &CartesianIndices::rotational_eigenvalues, "of K[3:, 3:], N m/rad")
       .def_readonly("symmetry_error", &CartesianIndices::symmetry_error);
-  m.def("cartesian_indices", &cartesian_indices, py::arg("K"), "Indices of a 6x6 Cartesian stiffness.");
+  m.def(
+      "cartesian_indices",
+      [](const Mat6& K) {
+        check(check_finite(K, "K"));
+        return cartesian_indices(K);
+      },
+      py::arg("K"), "Indices of a 6x6 Cartesian stiffness. InputError for a non-finite entry.");
 }
 
 }  // namespace kinestat::python

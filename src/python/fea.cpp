@@ -1,5 +1,6 @@
 // kinestat.fea: tetrahedral meshes of links, their FEA link stiffness (6x6 and report), the input
 // parsers shared with the CLI and model files, and the on-disk result cache (fea/*.hpp).
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/link_stiffness_request.hpp"
@@ -48,8 +49,16 @@ void bind_mesh(py::module_& m) {
       .def_property_readonly("num_nodes", &TetMesh::num_nodes)
       .def_property_readonly("num_elements", &TetMesh::num_elements)
       .def_property_readonly("quadratic", &TetMesh::quadratic);
-  m.def("make_box_mesh", &make_box_mesh, py::arg("lo"), py::arg("hi"), py::arg("nx"), py::arg("ny"), py::arg("nz"),
-        "Structured 4-node mesh of the box [lo, hi] (m), six tetrahedra per cell.");
+  m.def(
+      "make_box_mesh",
+      [](const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, double max_elements) {
+        check(check_box_mesh(lo, hi, nx, ny, nz, max_elements));
+        return make_box_mesh(lo, hi, nx, ny, nz);
+      },
+      py::arg("lo"), py::arg("hi"), py::arg("nx"), py::arg("ny"), py::arg("nz"),
+      py::arg("max_elements") = kDefaultMaxElements,
+      "Structured 4-node mesh of the box [lo, hi] (m), six tetrahedra per cell. InputError for lo >= hi, fewer than "
+      "one cell along an axis, or more than max_elements tetrahedra.");
   m.def("to_quadratic", &to_quadratic, py::arg("linear"), "4-node -> 10-node elements.");
   m.def("validate", [](const TetMesh& t) { check(validate(t)); }, py::arg("mesh"),
         "Raises InputError naming the first bad element.");
@@ -119,9 +128,17 @@ void bind_mesh(py::module_& m) {
       [](const RowsRef<3>& x, const Mat6& D) {
         const auto nodes = from_rows<3>(x);
         if (nodes.size() != 4 && nodes.size() != 10) raise_status(Status::Invalid("tet_stiffness: 4 or 10 nodes"));
-        return tet_stiffness(nodes.data(), static_cast<int>(nodes.size()), D);
+        MatX K = tet_stiffness(nodes.data(), static_cast<int>(nodes.size()), D);
+        // The library's answer for a Jacobian that is not positive somewhere (tet_element.hpp).
+        if (K.size() == 0)
+          raise_status(Status::Invalid(
+              "x: the tetrahedron's Jacobian is not positive (its points are coplanar, not finite, or in the wrong "
+              "order); give a tetrahedron of positive volume with its nodes in VTK order"));
+        return K;
       },
-      py::arg("x"), py::arg("D"), "Element stiffness (3n x 3n) of a 4- or 10-node tetrahedron, x (n, 3) in m.");
+      py::arg("x"), py::arg("D"),
+      "Element stiffness (3n x 3n) of a 4- or 10-node tetrahedron, x (n, 3) in m. InputError for a degenerate or "
+      "inverted element.");
   m.def("von_mises", &von_mises, py::arg("stress"), "Von Mises stress of a Voigt stress vector (Pa).");
 }
 
@@ -142,6 +159,7 @@ void bind_link_stiffness(py::module_& m) {
   py::class_<LinkStiffness>(m, "LinkStiffness",
                             "6x6 link stiffness from FEA (rows ux uy uz rx ry rz, link frame, SI units) and its "
                             "report; per unit load case (Fx Fy Fz Mx My Mz) the fields when kept.")
+      .def(py::init<>(), "An empty result, for set_compliance (e.g. a measured compliance).")
       .def_readonly("cartesian", &LinkStiffness::cartesian, "the 6x6 (CartesianStiffness) at the reference point")
       .def_property_readonly("reference_point", [](const LinkStiffness& r) { return r.cartesian.point; }, "m")
       .def_property_readonly("compliance", [](const LinkStiffness& r) { return r.cartesian.compliance; },
@@ -179,7 +197,16 @@ void bind_link_stiffness(py::module_& m) {
       },
       py::arg("mesh"), py::arg("material"), py::arg("options"), "FEA 6x6 link stiffness. Releases the GIL.");
   m.def("link_stiffness_report", &link_stiffness_report, py::arg("result"));
-  m.def("set_compliance", &set_compliance, py::arg("result"), py::arg("compliance"), py::arg("point"));
+  m.def(
+      "set_compliance",
+      [](LinkStiffness& r, const Mat6& compliance, const Vec3& point) {
+        check(check_entries(compliance, Quantity::kCompliance, "compliance"));
+        check(check_entries(point, Quantity::kLength, "point"));
+        set_compliance(r, compliance, point);
+      },
+      py::arg("result"), py::arg("compliance"), py::arg("point"),
+      "Sets the compliance (SI) at `point` (m) and what derives from it. InputError for a value not finite or "
+      "out of range.");
   m.def("reference_model_name", &reference_model_name, py::arg("model"));
   m.def("scaled_symmetry_error", &scaled_symmetry_error, py::arg("A"));
 

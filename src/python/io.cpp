@@ -84,7 +84,7 @@ void bind_results(py::module_& m) {
   m.attr("RESULTS_SCHEMA_VERSION") = io::kResultsSchemaVersion;
   m.def(
       "solution_to_json",
-      [](const msa::Structure& s, const msa::Solution& sol) { return to_python(io::solution_to_json(s, sol)); },
+      [](const msa::Structure& s, const msa::Solution& sol) { return to_python(unwrap(io::solution_to_json(s, sol))); },
       py::arg("structure"), py::arg("solution"),
       "The JSON results document (docs/results-json.md) as a dict; non-finite numbers are null and listed under "
       "'non_finite_values'.");

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
 #include <pybind11/operators.h>
 
+#include "kinestat/core/input_checks.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
 #include "kinestat/mechanisms/five_bar_vjm.hpp"
@@ -179,18 +181,38 @@ void bind_orthoglide_design(py::module_& m) {
       .def_readonly("rho_at_max", &WorkspaceSearch::rho_at_max)
       .def_readonly("evaluations", &WorkspaceSearch::evaluations)
       .def_readonly("singular", &WorkspaceSearch::singular);
-  m.def("search_joint_space", &search_joint_space, py::arg("geometry"), py::arg("rho_min"), py::arg("rho_max"),
-        py::arg("joint_sum_limit") = std::numeric_limits<double>::infinity(), py::arg("n") = 101,
-        py::call_guard<py::gil_scoped_release>());
-  m.def("search_cube", &search_cube, py::arg("geometry"), py::arg("p_min"), py::arg("p_max"), py::arg("n") = 101,
-        py::call_guard<py::gil_scoped_release>());
+  // The searches' sizes are checked (estimated) before they run, as `kinestat design orthoglide` checks them.
+  m.def(
+      "search_joint_space",
+      [](const OrthoglideGeometry& g, double rho_min, double rho_max, double joint_sum_limit, int n,
+         double max_points) {
+        check(check_search_points(n, max_points, "n", "max_points"));
+        return without_gil([&] { return search_joint_space(g, rho_min, rho_max, joint_sum_limit, n); });
+      },
+      py::arg("geometry"), py::arg("rho_min"), py::arg("rho_max"),
+      py::arg("joint_sum_limit") = std::numeric_limits<double>::infinity(), py::arg("n") = 101,
+      py::arg("max_points") = kDefaultMaxSearchPoints, "InputError when ~7 n^2 + n^3/64 points exceed max_points.");
+  m.def(
+      "search_cube",
+      [](const OrthoglideGeometry& g, double p_min, double p_max, int n, double max_points) {
+        check(check_search_points(n, max_points, "n", "max_points"));
+        return without_gil([&] { return search_cube(g, p_min, p_max, n); });
+      },
+      py::arg("geometry"), py::arg("p_min"), py::arg("p_max"), py::arg("n") = 101,
+      py::arg("max_points") = kDefaultMaxSearchPoints, "InputError when ~7 n^2 + n^3/64 points exceed max_points.");
   py::class_<DexterousVolumes>(m, "DexterousVolumes")
       .def_readonly("singularity_free_of_sphere", &DexterousVolumes::singularity_free_of_sphere)
       .def_readonly("lower_of_w0", &DexterousVolumes::lower_of_w0)
       .def_readonly("two_sided_of_w0", &DexterousVolumes::two_sided_of_w0)
       .def_readonly("upper_of_w0", &DexterousVolumes::upper_of_w0);
-  m.def("unit_dexterous_volumes", &unit_dexterous_volumes, py::arg("mu_low"), py::arg("mu_high"), py::arg("n"),
-        py::call_guard<py::gil_scoped_release>());
+  m.def(
+      "unit_dexterous_volumes",
+      [](double mu_low, double mu_high, int n, double max_points) {
+        check(check_grid_points(n, max_points, "n", "max_points"));
+        return without_gil([&] { return unit_dexterous_volumes(mu_low, mu_high, n); });
+      },
+      py::arg("mu_low"), py::arg("mu_high"), py::arg("n"), py::arg("max_points") = kDefaultMaxSearchPoints,
+      "InputError when the n^3 grid exceeds max_points.");
   py::class_<OrthoglideDesign>(m, "OrthoglideDesign",
                                "A design of Table 3 (Pashkevich, Wenger, Chablat 2005): lengths in m.")
       .def_readonly("strategy", &OrthoglideDesign::strategy)
@@ -213,9 +235,16 @@ void bind_orthoglide_design(py::module_& m) {
   py::class_<OrthoglideDesignCheck>(m, "OrthoglideDesignCheck")
       .def_readonly("joint_space", &OrthoglideDesignCheck::joint_space)
       .def_readonly("cube", &OrthoglideDesignCheck::cube);
-  m.def("check_design", &check_design, py::arg("design"), py::arg("n") = 101,
-        py::arg("encoder_offsets") = std::vector<double>{}, py::call_guard<py::gil_scoped_release>(),
-        "Numerical search of the factors over the cube and the joint-bounded workspace; encoder_offsets (m).");
+  m.def(
+      "check_design",
+      [](const OrthoglideDesign& d, int n, const std::vector<double>& offsets, double max_points) {
+        check(check_search_points(n, max_points, "n", "max_points"));
+        return without_gil([&] { return check_design(d, n, offsets); });
+      },
+      py::arg("design"), py::arg("n") = 101, py::arg("encoder_offsets") = std::vector<double>{},
+      py::arg("max_points") = kDefaultMaxSearchPoints,
+      "Numerical search of the factors over the cube and the joint-bounded workspace; encoder_offsets (m). "
+      "InputError when a search of ~7 n^2 + n^3/64 points exceeds max_points (`--max-points` of the CLI).");
   py::class_<JointWorkspaceSamples>(m, "JointWorkspaceSamples", "n^3 joint grid, index i + n (j + n k).")
       .def_readonly("n", &JointWorkspaceSamples::n)
       .def_property_readonly("rho", [](const JointWorkspaceSamples& s) { return rows(s.rho); }, "(n^3, 3) m")
@@ -224,8 +253,14 @@ void bind_orthoglide_design(py::module_& m) {
       .def_property_readonly(
           "valid", [](const JointWorkspaceSamples& s) { return py::array_t<bool>(static_cast<py::ssize_t>(s.valid.size()), reinterpret_cast<const bool*>(s.valid.data())); },
           "(n^3,) bool");
-  m.def("sample_joint_workspace", &sample_joint_workspace, py::arg("design"), py::arg("n"),
-        py::call_guard<py::gil_scoped_release>());
+  m.def(
+      "sample_joint_workspace",
+      [](const OrthoglideDesign& d, int n, double max_points) {
+        check(check_grid_points(n, max_points, "n", "max_points"));
+        return without_gil([&] { return sample_joint_workspace(d, n); });
+      },
+      py::arg("design"), py::arg("n"), py::arg("max_points") = kDefaultMaxSearchPoints,
+      "InputError when the n^3 grid exceeds max_points.");
 }
 
 void bind_orthoglide_stiffness(py::module_& m) {
@@ -378,7 +413,13 @@ void bind_posture_kernels(py::module_& m) {
   py::class_<PostureKernel>(m, "PostureKernel",
                             "The stiffness of a mechanism's tool point at many postures (points in m, kinematics "
                             "frame). Not thread-safe: clone() one per thread, or use evaluate_postures.")
-      .def("evaluate", &PostureKernel::evaluate, py::arg("point"), py::call_guard<py::gil_scoped_release>())
+      .def(
+          "evaluate",
+          [](PostureKernel& k, const Vec3& point) {
+            check(check_entries(point, Quantity::kLength, "point"));
+            return without_gil([&] { return k.evaluate(point); });
+          },
+          py::arg("point"), "The stiffness at the point (m); InputError for a point not finite or out of range.")
       .def("clone", &PostureKernel::clone)
       .def("description", &PostureKernel::description);
 
@@ -390,10 +431,22 @@ void bind_posture_kernels(py::module_& m) {
       .def_readwrite("assembly", &FiveBarKernelOptions::assembly)
       .def_readwrite("method", &FiveBarKernelOptions::method)
       .def_readwrite("load", &FiveBarKernelOptions::load, "wrench at P (N, N m) for the deflection");
-  m.def("make_five_bar_kernel", &make_five_bar_kernel, py::arg("options") = FiveBarKernelOptions{},
+  m.def(
+      "make_five_bar_kernel",
+      [](const FiveBarKernelOptions& o) {
+        check(validate(o));
+        return make_five_bar_kernel(o);
+      },
+      py::arg("options") = FiveBarKernelOptions{},
         "The five-bar's sweep kernel (what `kinestat map fivebar` uses): the reference's model built once, then "
         "fixed-size algebra per posture; the same values, many times faster (five_bar_kernel.hpp).");
-  m.def("make_reference_five_bar_kernel", &make_reference_five_bar_kernel, py::arg("options") = FiveBarKernelOptions{},
+  m.def(
+      "make_reference_five_bar_kernel",
+      [](const FiveBarKernelOptions& o) {
+        check(validate(o));
+        return make_reference_five_bar_kernel(o);
+      },
+      py::arg("options") = FiveBarKernelOptions{},
         "Five-bar stiffness at P over the plane (z ignored), posture by posture through make_five_bar_structure "
         "(MSA) or five_bar_vjm_chains (VJM); singularity measure min(parallel, serial). The reference of tests.");
   py::class_<OrthoglideKernelOptions>(m, "OrthoglideKernelOptions")
@@ -403,11 +456,22 @@ void bind_posture_kernels(py::module_& m) {
       .def_readwrite("wrench", &OrthoglideKernelOptions::wrench, "loaded mode: external wrench (N, N m), or None")
       .def_readwrite("displacement", &OrthoglideKernelOptions::displacement,
                      "loaded mode: prescribed tool displacement (m, rad), or None");
-  m.def("make_orthoglide_kernel", &make_orthoglide_kernel, py::arg("options") = OrthoglideKernelOptions{},
+  m.def(
+      "make_orthoglide_kernel",
+      [](const OrthoglideKernelOptions& o) {
+        check(validate(o));
+        return make_orthoglide_kernel(o);
+      },
+      py::arg("options") = OrthoglideKernelOptions{},
         "The Orthoglide's sweep kernel (what `kinestat map MODEL.yaml` uses): the same VJM values as the reference, "
         "with the chains' fixed parts computed once.");
-  m.def("make_reference_orthoglide_kernel", &make_reference_orthoglide_kernel,
-        py::arg("options") = OrthoglideKernelOptions{},
+  m.def(
+      "make_reference_orthoglide_kernel",
+      [](const OrthoglideKernelOptions& o) {
+        check(validate(o));
+        return make_reference_orthoglide_kernel(o);
+      },
+      py::arg("options") = OrthoglideKernelOptions{},
         "Orthoglide VJM stiffness over its Cartesian workspace, posture by posture through orthoglide_chains. The "
         "reference of tests.");
 
@@ -429,9 +493,17 @@ void bind_posture_kernels(py::module_& m) {
          int threads) {
         if (points.ndim() < 1 || points.shape(points.ndim() - 1) != 3)
           raise_status(Status::Invalid("evaluate_postures: points must be an array of shape (..., 3) in m"));
+        if (threads < 0)
+          raise_status(Status::Invalid(fmt::format("threads = {}: give 0 (all cores) or a positive count", threads)));
         const std::vector<py::ssize_t> grid(points.shape(), points.shape() + points.ndim() - 1);
         std::vector<Vec3> p(static_cast<size_t>(points.size() / 3));
-        for (size_t i = 0; i < p.size(); ++i) p[i] = Vec3(points.data() + 3 * i);
+        for (size_t i = 0; i < p.size(); ++i) {
+          p[i] = Vec3(points.data() + 3 * i);
+          // check_quantity formats its message: called only for a point that fails the quick test.
+          // (allFinite first: Eigen's maxCoeff may skip a NaN.)
+          if (!p[i].allFinite() || p[i].cwiseAbs().maxCoeff() > quantity_range(Quantity::kLength).max_abs)
+            check(check_entries(p[i], Quantity::kLength, fmt::format("points (row {})", i)));
+        }
         std::vector<PostureResult> results;
         without_gil([&] { evaluate_postures(kernel, p, results, threads); });
         return posture_arrays(results, grid);

@@ -275,6 +275,19 @@ void bind_solution(py::module_& m) {
       .def_readonly("global_indices", &Solution::global_indices, "indices of the reduced global matrix, or None")
       .def_readonly("assembly_seconds", &Solution::assembly_seconds)
       .def_readonly("solve_seconds", &Solution::solve_seconds)
+      .def_property_readonly(
+          "structure",
+          [](const Solution& s) -> py::object {
+            if (!s.structure) return py::none();
+            py::dict d;
+            d["nodes"] = s.structure->nodes;
+            d["beams"] = s.structure->beams;
+            d["joints"] = s.structure->joints;
+            d["load_cases"] = s.structure->load_cases;
+            return d;
+          },
+          "{'nodes', 'beams', 'joints', 'load_cases'}: the counts of the structure solve() solved, checked by the "
+          "functions that read the solution with a structure; None for a hand-made solution")
       .def(
           "case",
           [](const Solution& s, const std::string& name) {
@@ -315,8 +328,10 @@ void bind_solution(py::module_& m) {
       },
       py::arg("structure"), py::arg("node"), py::arg("workspace") = nullptr, py::arg("options") = py::none(),
       "Compliance and stiffness of one node by static condensation, without load cases. Releases the GIL.");
-  m.def("full_report", &full_report, py::arg("structure"), py::arg("solution"),
-        "The human-readable report the CLI prints.");
+  m.def(
+      "full_report", [](const Structure& s, const Solution& sol) { return unwrap(full_report(s, sol)); },
+      py::arg("structure"), py::arg("solution"),
+      "The human-readable report the CLI prints. InputError for a solution of another structure.");
   m.def("indices_report", &indices_report, py::arg("indices"));
 }
 

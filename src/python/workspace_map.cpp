@@ -239,10 +239,16 @@ void bind_map(py::module_& m) {
       "The kernel at every grid point (on options.threads threads, the GIL released) and the fields, statuses and "
       "summary. InputError when the grid is empty or above options.max_points.");
 
-  m.def("five_bar_singular_loci", &five_bar_singular_loci, py::arg("params"), py::arg("mode"), py::arg("assembly"),
-        py::arg("samples") = 4096,
-        "[workspace boundary, parallel singularity] of a working and assembly mode as MapCurves (m, z = 0), as "
-        "`kinestat map fivebar` draws them.");
+  m.def(
+      "five_bar_singular_loci",
+      [](const FiveBarParams& p, WorkingMode mode, Assembly a, int samples) {
+        check(validate(p));
+        check(check_loci_samples(samples));
+        return without_gil([&] { return five_bar_singular_loci(p, mode, a, samples); });
+      },
+      py::arg("params"), py::arg("mode"), py::arg("assembly"), py::arg("samples") = 4096,
+      "[workspace boundary, parallel singularity] of a working and assembly mode as MapCurves (m, z = 0), as "
+      "`kinestat map fivebar` draws them. InputError for bad parameters or samples outside 8..1e6.");
   m.def(
       "five_bar_workspace_box",
       [](const FiveBarParams& p, WorkingMode mode, Assembly a) {

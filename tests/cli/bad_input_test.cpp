@@ -42,7 +42,7 @@ std::string write_temp(const std::string& name, const std::string& text) {
 TEST(BadInput, SizesAreRefusedBeforeAllocatingNamingTheOptionThatRaisesThem) {
   expect_exit({"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--vtk-grid", "100000", "--vtk",
                std::filesystem::temp_directory_path() / "kinestat_bad_input_vtk"},
-              kExitBadInput, {"--vtk-grid 100000: about 1e+15 joint-grid points", "--max-points"});
+              kExitBadInput, {"--vtk-grid 100000: about 1e+15 grid points", "--max-points"});
   expect_exit({"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--search-points", "1000000"}, kExitBadInput,
               {"--search-points 1000000", "--max-points"});
   expect_exit({"link-stiffness", kBar, "--clamp", "x=0", "--reference", "x=200", "--size", "0.3"}, kExitBadInput,

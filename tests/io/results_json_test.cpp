@@ -18,7 +18,7 @@ using io_test::sample_displacement;
 using nlohmann::json;
 
 TEST(ResultsJson, HeaderModelAndSolver) {
-  const json j = solution_to_json(io_test::sample_structure(), io_test::sample_solution());
+  const json j = *solution_to_json(io_test::sample_structure(), io_test::sample_solution());
   EXPECT_EQ(j["schema"], "kinestat-msa-results");
   EXPECT_EQ(j["schema_version"], kResultsSchemaVersion);
   EXPECT_EQ(j["units"]["length"], "m");
@@ -40,7 +40,7 @@ TEST(ResultsJson, HeaderModelAndSolver) {
 }
 
 TEST(ResultsJson, LoadCaseFields) {
-  const json j = solution_to_json(io_test::sample_structure(), io_test::sample_solution());
+  const json j = *solution_to_json(io_test::sample_structure(), io_test::sample_solution());
   ASSERT_EQ(j["load_cases"].size(), 2u);
   const json& c = j["load_cases"][1];
   EXPECT_EQ(c["name"], "second <&>");
@@ -77,7 +77,7 @@ TEST(ResultsJson, LoadCaseFields) {
 
 TEST(ResultsJson, CartesianStiffnessWithUnitsAndIndices) {
   const msa::Solution sol = io_test::sample_solution();
-  const json j = solution_to_json(io_test::sample_structure(), sol);
+  const json j = *solution_to_json(io_test::sample_structure(), sol);
   const json& cs = j["cartesian_stiffness"];
   EXPECT_EQ(cs["node"], "C");
   EXPECT_EQ(cs["stiffness_defined"], true);
@@ -110,7 +110,7 @@ TEST(ResultsJson, CartesianStiffnessWithUnitsAndIndices) {
 }
 
 TEST(ResultsJson, NonFiniteNumbersBecomeNullWithANote) {
-  const json j = solution_to_json(io_test::sample_structure(), io_test::sample_solution());
+  const json j = *solution_to_json(io_test::sample_structure(), io_test::sample_solution());
   const json& ind = j["cartesian_stiffness"]["indices"];
   EXPECT_TRUE(ind["condition_number"].is_null());
   EXPECT_TRUE(ind["determinant"].is_null());
@@ -125,7 +125,7 @@ TEST(ResultsJson, NonFiniteNumbersBecomeNullWithANote) {
 }
 
 TEST(ResultsJson, SingularDiagnosis) {
-  const json j = solution_to_json(io_test::sample_structure(), io_test::sample_singular_solution());
+  const json j = *solution_to_json(io_test::sample_structure(), io_test::sample_singular_solution());
   EXPECT_EQ(j["status"]["code"], "singular");
   EXPECT_EQ(j["load_cases"].size(), 0u);
   EXPECT_TRUE(j["cartesian_stiffness"].is_null());
@@ -142,7 +142,7 @@ TEST(ResultsJson, SingularDiagnosis) {
 }
 
 TEST(ResultsJson, WriteJsonRoundTripsAndReportsBadPaths) {
-  const json j = solution_to_json(io_test::sample_structure(), io_test::sample_solution());
+  const json j = *solution_to_json(io_test::sample_structure(), io_test::sample_solution());
   const std::string path = ::testing::TempDir() + "kinestat_results_json_test.json";
   ASSERT_TRUE(write_json(path, j).ok());
   std::ifstream in(path);
@@ -160,7 +160,7 @@ TEST(ResultsJson, WriteJsonRoundTripsAndReportsBadPaths) {
 TEST(ResultsJson, CantileverEndToEnd) {
   const auto s = read_structure_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/cantilever.yaml");
   ASSERT_TRUE(s.ok()) << s.status().message();
-  const json j = solution_to_json(*s, msa::solve(*s));
+  const json j = *solution_to_json(*s, msa::solve(*s));
   ASSERT_EQ(j["status"]["code"], "ok");
   const json& c = j["load_cases"][0];
   ASSERT_EQ(c["name"], "tip_down");
@@ -168,6 +168,25 @@ TEST(ResultsJson, CantileverEndToEnd) {
   EXPECT_NEAR(c["displacements"][1]["translation"][2].get<double>(), -1000.0 / (3 * 210e9 * Iy), 1e-12);
   EXPECT_NEAR(c["reactions"][0]["force"][2].get<double>(), 1000.0, 1e-6);
   EXPECT_TRUE(j["cartesian_stiffness"]["stiffness_defined"].get<bool>());
+}
+
+// A solution of another structure is refused (it used to give a silent document with the other
+// structure's ids): by the counts solve() records, and for a hand-made one by its arrays.
+TEST(ResultsJson, SolutionOfAnotherStructureIsRefused) {
+  const auto s = read_structure_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/cantilever.yaml");
+  ASSERT_TRUE(s.ok()) << s.status().message();
+  const msa::Solution sol = msa::solve(*s);
+  ASSERT_TRUE(sol.status.ok()) << sol.status.message();
+  const auto other = solution_to_json(io_test::sample_structure(), sol);
+  ASSERT_EQ(other.status().code(), StatusCode::kInvalidInput);
+  EXPECT_NE(other.status().message().find("the counts it was solved for"), std::string::npos)
+      << other.status().message();
+
+  msa::Solution hand = io_test::sample_solution();
+  hand.cases[1].reaction.pop_back();
+  const auto short_one = solution_to_json(io_test::sample_structure(), hand);
+  ASSERT_EQ(short_one.status().code(), StatusCode::kInvalidInput);
+  EXPECT_NE(short_one.status().message().find("load case"), std::string::npos) << short_one.status().message();
 }
 
 }  // namespace

@@ -13,7 +13,8 @@
 namespace kinestat::io_test {
 
 // Nodes A (0,0,0), B (1,0,0), B2 (1,0,0), C (1,0.5,0); beam A-B, joint B-B2 (coincident nodes),
-// rigid link B2 -> C; A clamped.
+// rigid link B2 -> C; A clamped; the two load cases of sample_solution (without loads: the writers
+// read the loads' results from the solution, and check_solution_matches counts the cases).
 inline msa::Structure sample_structure() {
   msa::Structure s;
   s.set_title("sample");
@@ -45,6 +46,8 @@ inline msa::Structure sample_structure() {
   s.add_rigid_link(r);
   s.add_support({0, msa::kAllDofs, Mat3::Identity()});
   s.set_report_node(3);
+  s.add_load_case({"first", {}, {}});
+  s.add_load_case({"second <&>", {}, {}});
   return s;
 }
 

@@ -153,10 +153,14 @@ TEST_F(VtkOutput, UnwritableDirectoryIsReported) {
   EXPECT_EQ(st.message().rfind(blocker + "/out: ", 0), 0u) << st.message();
 }
 
-TEST_F(VtkOutput, MismatchedSolutionIsAnInternalError) {
+// A solution of another structure is bad input (msa::check_solution_matches), refused before any file.
+TEST_F(VtkOutput, MismatchedSolutionIsRefused) {
   msa::Solution sol = io_test::sample_solution();
   sol.cases[0].displacement.pop_back();
-  EXPECT_EQ(write_vtk(io_test::sample_structure(), sol, dir_, "x", nullptr).code(), StatusCode::kInternal);
+  const Status st = write_vtk(io_test::sample_structure(), sol, dir_, "x", nullptr);
+  EXPECT_EQ(st.code(), StatusCode::kInvalidInput);
+  EXPECT_NE(st.message().find("displacements"), std::string::npos) << st.message();
+  EXPECT_FALSE(fs::exists(fs::path(dir_) / "x.pvd"));
 }
 
 msa::Structure bundled(const std::string& name) {

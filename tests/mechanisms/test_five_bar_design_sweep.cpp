@@ -146,7 +146,13 @@ TEST(FiveBarDesignSweep, BadRangesAndStepsAreRefusedByName) {
   EXPECT_NE(message(o).find("1 designs per length"), std::string::npos);
   o = small_sweep();
   o.min_stiffness = -1.0;
-  EXPECT_NE(message(o).find("minimum stiffness"), std::string::npos);
+  EXPECT_NE(message(o).find("min_stiffness = -1 N/m must not be negative"), std::string::npos);
+  o = small_sweep();
+  o.threads = -5;
+  EXPECT_NE(message(o).find("threads = -5"), std::string::npos);
+  o = small_sweep();
+  o.region = MapGrid{};  // never set: one point at the origin
+  EXPECT_NE(message(o).find("region: 1 point(s), not a plane"), std::string::npos);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // or a unit mistake, never a model.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "kinestat/core/status.hpp"
@@ -59,6 +60,31 @@ template <class V>
 Status check_direction(const V& v, const std::string& item) {
   if (!v.allFinite() || v.cwiseAbs().maxCoeff() == 0.0)
     return Status::Invalid(item + ": the direction must be finite and non-zero, e.g. 0,0,1");
+  return Status::Ok();
+}
+
+// "ITEM[i]" for a vector (one column), "ITEM[i, j]" for a matrix: the entry named by the checks below.
+std::string entry_name(const std::string& item, long i, long j, bool vector);
+
+// check_quantity on every entry of the vector or matrix `m`, in row order: the first bad one's status.
+template <class M>
+Status check_entries(const M& m, Quantity q, const std::string& item, Sign sign = Sign::kAny) {
+  for (long i = 0; i < static_cast<long>(m.rows()); ++i)
+    for (long j = 0; j < static_cast<long>(m.cols()); ++j)
+      if (!check_quantity(m(i, j), q, item, {}, sign).ok())  // named only when it fails
+        return check_quantity(m(i, j), q, entry_name(item, i, j, m.cols() == 1), {}, sign);
+  return Status::Ok();
+}
+
+// kInvalidInput "ITEM[i, j] = VALUE is not a finite number; ..." for the first non-finite entry of a
+// vector or matrix whose entries have no one unit or range (a matrix given to stiffness_indices).
+template <class M>
+Status check_finite(const M& m, const std::string& item) {
+  for (long i = 0; i < static_cast<long>(m.rows()); ++i)
+    for (long j = 0; j < static_cast<long>(m.cols()); ++j)
+      if (!std::isfinite(m(i, j)))
+        return Status::Invalid(entry_name(item, i, j, m.cols() == 1) + " = " + std::to_string(m(i, j)) +
+                               " is not a finite number; give finite values");
   return Status::Ok();
 }
 

@@ -44,6 +44,11 @@ struct LinkStiffnessRun {
   std::string report;            // what was done and the result, for people (link_stiffness_report)
 };
 
+// kInvalidInput naming the field: mesh_size 0 (the default size) or a positive length, unit_scale a
+// positive length, max_elements positive. compute_link_stiffness and link_stiffness_convergence
+// check it first.
+Status validate(const LinkStiffnessRequest& request);
+
 // Checks the surface, then serves the result from the cache or meshes and solves (and stores it).
 // A result with fields (options.keep_fields) is always computed. kInvalidInput names the file.
 StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& request);

@@ -26,7 +26,7 @@ struct MeshingOptions {
   // Refuse to mesh when estimate_tetrahedra() exceeds this: 3e5 quadratic tetrahedra are ~1.3e6 dofs,
   // about 20 GB and minutes in the FEA that follows (benchmarks/README.md). Raised by the commands'
   // --max-elements and by `max_elements` in a model file's fea spring.
-  double max_elements = 3e5;
+  double max_elements = kDefaultMaxElements;
 };
 
 struct SurfaceInfo {

@@ -35,6 +35,15 @@ struct TetMesh {
 // faces conforming). Independent of CGAL: the validation meshes of the tests.
 TetMesh make_box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz);
 
+// The default limit on a mesh's tetrahedra (MeshingOptions::max_elements, surface_mesher.hpp).
+inline constexpr double kDefaultMaxElements = 3e5;
+
+// kInvalidInput naming the argument: lo and hi finite lengths with lo < hi on every axis, nx, ny,
+// nz >= 1 cells, and the 6 nx ny nz tetrahedra, estimated before anything is allocated, at most
+// `max_elements`. make_box_mesh trusts its arguments: callers check first.
+Status check_box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz,
+                      double max_elements = kDefaultMaxElements);
+
 // Adds one node at the midpoint of every edge: 4-node -> 10-node elements (straight-sided).
 TetMesh to_quadratic(const TetMesh& linear);
 

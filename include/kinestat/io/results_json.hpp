@@ -18,10 +18,11 @@ namespace kinestat::io {
 inline constexpr int kResultsSchemaVersion = 1;
 
 // Every result of an MSA solve: model summary, solver report, load cases, Cartesian stiffness,
-// indices and singularity diagnosis. Ids refer to the structure's nodes, beams and joints.
+// indices and singularity diagnosis. Ids refer to the structure's nodes, beams and joints:
+// kInvalidInput (msa::check_solution_matches) for a solution of another structure.
 // `stations` (msa::all_beam_stations, [case][beam]; null: none) adds each case's "beam_stations".
-nlohmann::json solution_to_json(const msa::Structure& s, const msa::Solution& sol,
-                                const std::vector<std::vector<msa::BeamStations>>* stations = nullptr);
+StatusOr<nlohmann::json> solution_to_json(const msa::Structure& s, const msa::Solution& sol,
+                                          const std::vector<std::vector<msa::BeamStations>>* stations = nullptr);
 
 // All fields of StiffnessIndices (eigenvectors as a list, eigenvectors[i] belonging to eigenvalues[i]).
 // May hold non-finite numbers: pass the finished document through encode_non_finite.

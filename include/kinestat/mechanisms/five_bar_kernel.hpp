@@ -20,6 +20,11 @@ struct FiveBarKernelOptions {
   Vec6 load = Vec6::Zero();          // wrench at P (N, N m) for PostureResult::deflection = C load
 };
 
+// kInvalidInput naming the bad value: the parameters (validate(FiveBarParams)) and the load's
+// components (finite, in the range of a force and a moment, core/input_checks). The kernels below
+// take any options (a bad one gives unreachable or failed points); callers check first.
+Status validate(const FiveBarKernelOptions& options);
+
 // Singularity measure: min(parallel_measure, serial_measure) of five_bar_jacobians (five_bar.hpp).
 // A point whose stiffness is not defined (a free motion) is kSingular.
 

@@ -27,6 +27,11 @@ namespace kinestat::mechanisms {
 // Both empty for invalid parameters.
 std::vector<MapCurve> five_bar_singular_loci(const FiveBarParams& p, WorkingMode mode, Assembly assembly,
                                              int samples = 4096);
+// kInvalidInput unless 8 <= samples <= kMaxLociSamples: a million points per turn draw any map far
+// below a pixel; more only cost time and memory (five_bar_singular_loci returns nothing for them
+// without a word: callers check first).
+inline constexpr int kMaxLociSamples = 1'000'000;
+Status check_loci_samples(int samples);
 
 // Bounding box (m) of the region of the working/assembly mode: that of its loci, which bound it.
 // kInvalidInput when the mode reaches nothing.

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "kinestat/core/status.hpp"
@@ -88,6 +89,16 @@ WorkspaceSearch search_joint_space(const OrthoglideGeometry& g, double rho_min, 
                                    int n = 101);
 // The cube [p_min, p_max]^3 (m) in the working mode.
 WorkspaceSearch search_cube(const OrthoglideGeometry& g, double p_min, double p_max, int n = 101);
+
+// Size checks of the numerical searches, estimated before anything is searched or allocated (the
+// searches above trust n). The default limit is `kinestat design orthoglide --max-points`'s.
+inline constexpr double kDefaultMaxSearchPoints = 2e6;
+// kInvalidInput unless n >= 2 and one search of grid n (search_joint_space, search_cube: faces,
+// cutting plane and interior, ~7 n^2 + n^3/64 points) visits at most max_points; `item` names n
+// ("--search-points", "n"), `limit` the option that raises the limit ("--max-points", "max_points").
+Status check_search_points(int n, double max_points, const std::string& item, const std::string& limit);
+// The same for an n x n x n grid (sample_joint_workspace, unit_dexterous_volumes): n^3 points.
+Status check_grid_points(int n, double max_points, const std::string& item, const std::string& limit);
 
 // Fig. 3 and Table 2 (L = 1): the singularity-free workspace W0 (the working mode inside the sphere
 // |p| < 1, on the near side of the flat singularity) relative to the sphere, and the parts of W0

@@ -20,6 +20,11 @@ struct OrthoglideKernelOptions {
   std::optional<Vec6> displacement;
 };
 
+// kInvalidInput naming the bad value: the model (validate_stiffness_model), a wrench and a
+// displacement given together (the loaded mode takes one), their components (finite, in range,
+// core/input_checks). The kernels below take any options; callers check first.
+Status validate(const OrthoglideKernelOptions& options);
+
 // Singularity measure: sigma_min / sigma_max of the inverse Jacobian (eq. 5 of the design paper;
 // velocity_transmission in orthoglide_kinematics.hpp), 0 at a serial or parallel singularity.
 // Points outside the working-mode inverse kinematics are kUnreachable; a point where the stiffness

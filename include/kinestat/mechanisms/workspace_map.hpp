@@ -117,6 +117,10 @@ struct MapOptions {
   std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
+// kInvalidInput naming the field: near_singular_threshold in [0, 1], min_stiffness finite and >= 0,
+// max_points >= 1, threads >= 0. compute_workspace_map checks it first.
+Status validate(const MapOptions& options);
+
 struct FieldValues {
   MapField field;
   std::vector<double> values;  // per grid point; NaN where the point has no value

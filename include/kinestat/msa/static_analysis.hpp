@@ -48,6 +48,12 @@ struct LoadCaseResult {
   int max_translation_node = -1;
 };
 
+// The counts of the structure a Solution was solved for: solve() records them, so that the solution
+// is never read against another structure (check_solution_matches).
+struct SolvedStructure {
+  int nodes = 0, beams = 0, joints = 0, load_cases = 0;
+};
+
 struct Solution {
   Status status;                   // kSingular: see `singularity`; cases are empty unless regularized
   bool regularized = false;
@@ -63,6 +69,7 @@ struct Solution {
   std::optional<StiffnessIndices> global_indices;    // of the reduced global matrix
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;
+  std::optional<SolvedStructure> structure;  // set by solve(); unset in a Solution built by hand
 };
 
 // Mutable workspace reused across solves of structures with the same topology (a posture sweep):
@@ -109,8 +116,15 @@ StatusOr<BeamStations> beam_stations(const Structure& s, const LoadCase& lc, con
 // Every beam of every solved load case: [case][beam]. Fails as beam_stations does.
 StatusOr<std::vector<std::vector<BeamStations>>> all_beam_stations(const Structure& s, const Solution& sol, int count);
 
+// kInvalidInput unless `sol` belongs to `s`: the counts solve() recorded (when set) equal the
+// structure's, and every per-node, per-beam, per-joint and per-load-case array has the structure's
+// size. Readers of a Solution (full_report, io::solution_to_json, io::write_vtk) check it first:
+// they index the arrays by the structure's items.
+Status check_solution_matches(const Structure& s, const Solution& sol);
+
 // A full human-readable report (as Ceres' Summary::FullReport): model size, solver, per load case
 // max displacement and equilibrium, Cartesian stiffness with units, indices, singularity diagnosis.
-std::string full_report(const Structure& s, const Solution& sol);
+// kInvalidInput (check_solution_matches) for a solution of another structure.
+StatusOr<std::string> full_report(const Structure& s, const Solution& sol);
 
 }  // namespace kinestat::msa
