@@ -114,8 +114,12 @@ TEST(BarValidation, LinearTetsLockInBending) {
 // OPENBLAS_NUM_THREADS=1 and 2): 6.5e-4, 6.5e-5, 6.6e-6, 6.5e-7 at 1e2..1e5, all torsion and
 // identical to 1e-3 across runs; from 1e6 on the bending entries are round-off that changes with
 // BLAS threads and CPU: 2.8e-6 to 6.9e-6 at 1e6 (1.5e-5 to 2.0e-5 at 1e7, 2.4e-4 to 3.9e-4 at 1e8
-// with those ratios added to the list). On CI's CPU this test failed its former bound of 1e-5 at
-// 1e6 (the log does not print the value; its other checks are far from their bounds here).
+// with those ratios added to the list). On CI's CPU a bound of 1e-5 at 1e6 failed. So 1e6 is
+// computed and printed, not asserted: a bound on round-off that varies by CPU guards nothing (docs/
+// fea.md: 1e4 to 1e5 is the useful range). What is asserted is the 1 / ratio law on the torsion
+// entry, the largest gap and the one round-off does not reach before 1e6: each decade's ratio of
+// gaps within 0.5 of 10 (printed; the gaps repeat to 1e-3 between runs), and the gap at 1e5 below
+// 1e-6 (measured 6.5e-7).
 TEST(BarValidation, StiffBodyConvergesToRigidCoupling) {
   const double t = L / 10;  // cap length
   const TetMesh mesh = to_quadratic(make_box_mesh(Vec3(0, -b / 2, -h / 2), Vec3(L + t, b / 2, h / 2), 22, 2, 3));
@@ -135,14 +139,14 @@ TEST(BarValidation, StiffBodyConvergesToRigidCoupling) {
     const Vec6 gap = (body->cartesian.compliance.diagonal() - rigid->cartesian.compliance.diagonal())
                          .cwiseQuotient(rigid->cartesian.compliance.diagonal());
     std::cout << "ratio " << ratio << ": relative gap (ux uy uz rx ry rz) " << gap.transpose() << "\n";
-    gaps.push_back(gap.cwiseAbs().maxCoeff());
+    gaps.push_back(std::abs(gap(3)));  // torsion: the body's own compliance, not round-off
   }
-  EXPECT_NEAR(gaps[0] / gaps[1], 10.0, 2.0);
-  EXPECT_NEAR(gaps[1] / gaps[2], 10.0, 2.0);
-  // 10.0 here, but the bending terms' round-off (~1e-7 here) is no longer far below the gap.
-  EXPECT_GT(gaps[2] / gaps[3], 5.0);
-  // Past the model error: a round-off bound, not a 1 / ratio one (a wrong body would be off by far more).
-  EXPECT_LT(gaps[4], 1e-4);
+  std::cout << "torsion gap ratios per decade: " << gaps[0] / gaps[1] << ", " << gaps[1] / gaps[2] << ", "
+            << gaps[2] / gaps[3] << " (1e6, not asserted: " << gaps[4] << ")\n";
+  EXPECT_NEAR(gaps[0] / gaps[1], 10.0, 0.5);
+  EXPECT_NEAR(gaps[1] / gaps[2], 10.0, 0.5);
+  EXPECT_NEAR(gaps[2] / gaps[3], 10.0, 0.5);
+  EXPECT_LT(gaps[3], 1e-6);
 }
 
 TEST(BarValidation, EmptyOrOverlappingRegionsAreInvalidInput) {

@@ -1,7 +1,9 @@
 """The long calls release the GIL. Asserted: Python code of another thread runs while a sweep, a map
-or a design sweep is in C++ (it could not if the call held the GIL). Printed as a figure, not
-asserted (the machine may be busy): benchmarks/python/bench_gil.py, two threads running a map each
-against one (about 1.0 when two cores are free)."""
+or a design sweep is in C++ (it could not if the call held the GIL); and the figure the GIL benchmark
+exists for, two threads each running a map against one thread running one map: about 1.0 when the
+two cores are free, 2.0 for a call that holds the GIL (serialized). ctest runs this file alone
+(RUN_SERIAL, tests/CMakeLists.txt) so that both cores are free; measured 1.01 on a quiet machine
+(benchmarks/README.md), so the bound 1.6 leaves room for a busy host and still fails a serialized call."""
 import os
 import pathlib
 import subprocess
@@ -63,8 +65,9 @@ def test_python_runs_during_a_long_call(call):
 def test_gil_benchmark_runs_and_prints_the_figure():
     script = SOURCE_DIR / "benchmarks" / "python" / "bench_gil.py"
     env = dict(os.environ, PYTHONPATH=str(pathlib.Path(ks.__file__).resolve().parents[1]))
-    run = subprocess.run([sys.executable, str(script), "--step", "5", "--repeat", "1"], env=env,
+    run = subprocess.run([sys.executable, str(script), "--step", "3", "--repeat", "3"], env=env,
                          capture_output=True, text=True, timeout=300)
     print(run.stdout)
     assert run.returncode == 0, run.stderr
-    assert "ratio two / one:" in run.stdout
+    ratio = float(run.stdout.split("ratio two / one:")[1].split()[0])
+    assert ratio < 1.6, f"two maps in two threads took {ratio:.2f} times one map: serialized (the GIL held?)"
