@@ -452,7 +452,9 @@ class Reader {
       // the two faces of a direction, the same for y and z: the mean of the four (Frame3DD's axial
       // term, alpha (Ty+ + Ty- + Tz+ + Tz-)/4 E A). The gradients are the face differences over the
       // depths, as ThermalLoad defines dTy and dTz (elements/member_loads.hpp): a hotter +y face
-      // lengthens the +y fibres and bends the beam towards -y, as in Frame3DD.
+      // lengthens the +y fibres and bends the beam towards -y. Term by term, the fixed-end forces of
+      // temperature_fixed_end_forces are then minus Frame3DD's equivalent end loads: N1 = E A alpha
+      // dT, Mz1 = -E Iz alpha (Ty+ - Ty-)/hy, My1 = E Iy alpha (Tz+ - Tz-)/hz.
       t.dT = (face[0] + face[1] + face[2] + face[3]) / 4.0;
       t.dTy = face[0] - face[1];
       t.dTz = face[2] - face[3];
