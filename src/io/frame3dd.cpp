@@ -63,14 +63,19 @@ class Reader {
     read_settings();
     add_beams();
     count_block_ = {};
-    const auto [cases, cases_line] = count("number of static load cases", {"load cases", 0});
+    const auto [cases, cases_line] = count("number of static load cases", {});
     if (cases < 1) fail(cases_line, "number of static load cases", "at least one load case is needed; write 1 or more");
     for (int k = 1; k <= cases; ++k) read_load_case(k);
     // The modal data follows the mode count and ends the file: a static solve needs none of it.
+    if (pos_ >= lines_.size())
+      fail(last_line_, "number of dynamic modes",
+           fmt::format("the file ends before it; add a last line 0 (no modes), or check the number of static load "
+                       "cases at line {}",
+                       cases_line));
     const auto [modes, modes_line] = count("number of dynamic modes", {"static load cases", cases_line});
     if (modes > 0 && notes)
       notes->push_back(fmt::format("{}:{}: {} dynamic modes asked for: kinestat solve is static and computes none; the "
-                                   "modal data from this line on is not read",
+                                   "modal data after this line is not read",
                                    file_, modes_line, modes));
     return std::move(s_);
   }

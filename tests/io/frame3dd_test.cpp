@@ -557,6 +557,17 @@ TEST(Frame3ddReader, BadInputNamesTheLine) {
   // A truncated file.
   m = error_of("title\n2\n1 0 0 0 0\n");
   expect_contains(m, "bad.3dd:3: node record: the file ends here");
+  // A file without its last line, the number of dynamic modes.
+  std::string text = kCantilever;
+  text = text.substr(0, text.find("4   # dynamic modes"));
+  m = error_of(text);
+  expect_contains(m, "bad.3dd:28: number of dynamic modes: the file ends before it; add a last line 0");
+  // An element that does not exist in a load.
+  m = error_of(replace_line(kCantilever, 19, "2  0 0.5 -1"));
+  expect_contains(m, "bad.3dd:19: load case 1 uniform load: element 2 does not exist");
+  // A concentrated load beyond the element's end (1000 mm long).
+  m = error_of(replace_line(kCantilever, 25, "1  0 50 -70 1250"));
+  expect_contains(m, "bad.3dd:25: load case 1: concentrated load on element 1 x: 1250 mm is not on element 1");
 }
 
 TEST(Frame3ddUnits, ForceDashLength) {
