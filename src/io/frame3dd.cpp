@@ -36,6 +36,7 @@ struct Line {
 struct Block {
   std::string what;  // "nodes"
   int line = 0;      // where its count is
+  std::string hint{};  // instead of "check the number of WHAT at line LINE"
 };
 
 struct NodeRecord {
@@ -48,6 +49,12 @@ struct ElementRecord {
   double A = 0, Asy = 0, Asz = 0, J = 0, Iy = 0, Iz = 0, E = 0, G = 0, roll = 0, density = 0;
   int line = 0;
 };
+
+// Files of Frame3DD versions before the zoom and dx lines fail at these lines or at the load-case
+// count after them.
+const Block kSettingsHint{"", 0,
+                          "after the elements come five lines: shear flag, geometric stiffness flag, exaggeration, "
+                          "zoom, dx (files of older Frame3DD versions lack zoom and dx: add them)"};
 
 class Reader {
  public:
@@ -63,7 +70,7 @@ class Reader {
     read_settings();
     add_beams();
     count_block_ = {};
-    const auto [cases, cases_line] = count("number of static load cases", {});
+    const auto [cases, cases_line] = count("number of static load cases", kSettingsHint);
     if (cases < 1) fail(cases_line, "number of static load cases", "at least one load case is needed; write 1 or more");
     for (int k = 1; k <= cases; ++k) read_load_case(k);
     // The modal data follows the mode count and ends the file: a static solve needs none of it.
@@ -110,8 +117,9 @@ class Reader {
   // The next line, which must hold `n` values described by `fields`; `block` names the count to
   // check when it holds another number (a count that does not match its records shows this way).
   const Line& next(const std::string& item, std::size_t n, const std::string& fields, const Block& block) {
-    const std::string hint =
-        block.line > 0 ? fmt::format("; check the number of {} at line {}", block.what, block.line) : "";
+    const std::string hint = !block.hint.empty() ? "; " + block.hint
+                             : block.line > 0 ? fmt::format("; check the number of {} at line {}", block.what, block.line)
+                                              : "";
     if (pos_ >= lines_.size())
       fail(last_line_, item, fmt::format("the file ends here, before {}{}", fields, hint));
     const Line& l = lines_[pos_++];
@@ -279,7 +287,7 @@ class Reader {
            "1 asks for a second-order (P-Delta) analysis, which kinestat solve does not do yet; write 0 for a "
            "linear analysis");
     for (const char* item : {"exaggeration of deformations", "zoom scale", "x increment for internal forces (dx)"}) {
-      const Line& l = next(item, 1, std::string("one number, the ") + item, {});
+      const Line& l = next(item, 1, std::string("one number, the ") + item, kSettingsHint);
       real(l.tokens[0], l.number, item);
     }
   }

@@ -554,6 +554,10 @@ TEST(Frame3ddReader, BadInputNamesTheLine) {
   // Node numbers 1..N, each once.
   m = error_of(replace_line(kCantilever, 4, "1  1000 0 0  0"));
   expect_contains(m, "bad.3dd:4: node 1: node 1 is defined twice (also at line 3)");
+  // A file of an older Frame3DD, without the zoom and dx lines.
+  m = error_of(replace_line(replace_line(kCantilever, 13, ""), 12, ""));
+  expect_contains(m, "bad.3dd:15: x increment for internal forces (dx): expected 1 value");
+  expect_contains(m, "lack zoom and dx: add them");
   // A truncated file.
   m = error_of("title\n2\n1 0 0 0 0\n");
   expect_contains(m, "bad.3dd:3: node record: the file ends here");
