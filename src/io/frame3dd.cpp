@@ -171,7 +171,8 @@ class Reader {
     const int i = integer(t, line, item);
     if (i < 1 || i > n)
       fail(line, item,
-           fmt::format("{} {} does not exist: the file has {} {}s, numbered 1 to {}", kind, i, n, kind, n));
+           fmt::format("{} {} does not exist: the file has {} {}s, numbered 1 to {}; refer to one of them", kind, i,
+                       n, kind, n));
     return i;
   }
 
