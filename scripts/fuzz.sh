@@ -31,7 +31,7 @@ seed() {
 }
 
 status=0
-for name in structure_yaml vjm_yaml identification_yaml surface_mesh option_parsers; do
+for name in structure_yaml vjm_yaml identification_yaml surface_mesh option_parsers frame3dd; do
   seed "$name"
   log=$root/$name.log
   echo "fuzz: $name for ${seconds} s"

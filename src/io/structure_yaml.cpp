@@ -13,24 +13,13 @@
 #include "kinestat/core/types.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
+#include "io/roll_orientation.hpp"
 #include "io/yaml_fields.hpp"
 
 namespace kinestat::io {
 namespace {
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
-
-// The local y axis of a beam along `d` rolled by `roll` (rad) about its axis, as Frame3DD defines it
-// (coord_trans with z vertical): unrolled, local y is global z x d normalized, and global y for an
-// exactly vertical member only (kinestat's default switches within 2.6 deg of vertical); the roll
-// turns local y towards local z. Used as the beam's orientation vector.
-Vec3 roll_orientation(const Vec3& d, double roll) {
-  const Vec3 x = d.normalized();
-  if (std::abs(x.z()) == 1.0) return Vec3(-x.z() * std::sin(roll), std::cos(roll), 0.0);
-  const Vec3 y0 = Vec3::UnitZ().cross(x).normalized();
-  const Vec3 z0 = x.cross(y0);
-  return std::cos(roll) * y0 + std::sin(roll) * z0;
-}
 
 // One parse of one file. Every check fails through fail(), which names the file, the line of the
 // offending YAML node, the item and the fix.

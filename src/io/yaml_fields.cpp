@@ -126,46 +126,6 @@ Section YamlFields::shape_section(const YAML::Node& n, const std::string& item, 
        fmt::format("unknown section type '{}'; use circle, tube, rectangle, hollow_rectangle{}", type, other_form));
 }
 
-UnitOfInput FileUnits::of(Quantity q) const {
-  if (length == 1.0 && force == 1.0) return {};  // SI: the quantity's own unit
-  const double area = length * length;
-  const std::string& L = length_name;
-  const std::string& F = force_name;
-  const bool n_mm = L == "mm" && F == "N";  // mm-N-s keeps its customary names (MPa, t)
-  switch (q) {
-    case Quantity::kLength: return {length, L};
-    case Quantity::kForce: return {force, F};
-    case Quantity::kMoment: return {force * length, F + " " + L};
-    case Quantity::kModulus: return {force / area, n_mm ? "MPa" : F + "/" + L + "^2"};
-    case Quantity::kArea: return {area, L + "^2"};
-    case Quantity::kInertia: return {area * area, L + "^4"};
-    case Quantity::kTranslationalStiffness: return {force / length, F + "/" + L};
-    case Quantity::kRotationalStiffness: return {force * length, F + " " + L + "/rad"};
-    // Mass is force / acceleration: N s^2/mm = 1000 kg = 1 t, so a density is in t/mm^3.
-    case Quantity::kDensity: return {force / (area * area), n_mm ? "t/mm^3" : F + " s^2/" + L + "^4"};
-    case Quantity::kAcceleration: return {length, L + "/s^2"};
-    case Quantity::kForcePerLength: return {force / length, F + "/" + L};
-    default: return {};
-  }
-}
-
-std::optional<double> length_unit(const std::string& name) {
-  static const std::pair<const char*, double> kUnits[] = {
-      {"m", 1.0}, {"mm", 1e-3}, {"cm", 1e-2}, {"in", 0.0254}, {"ft", 0.3048}};  // exact by definition
-  for (const auto& [n, v] : kUnits)
-    if (name == n) return v;
-  return std::nullopt;
-}
-
-std::optional<double> force_unit(const std::string& name) {
-  // 1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly; 1 kip = 1000 lbf.
-  static const std::pair<const char*, double> kUnits[] = {
-      {"N", 1.0}, {"kN", 1e3}, {"lbf", 4.4482216152605}, {"kip", 4448.2216152605}};
-  for (const auto& [n, v] : kUnits)
-    if (name == n) return v;
-  return std::nullopt;
-}
-
 FileUnits YamlFields::units(const YAML::Node& v, bool any_units) const {
   if (!v.IsDefined()) return {};
   const char* forms = any_units ? "SI (m, N, Pa), mm-N-s (mm, N, MPa) or {length: in, force: kip}"

@@ -14,6 +14,7 @@
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/elements/section.hpp"
+#include "kinestat/io/file_units.hpp"
 
 namespace kinestat::io {
 
@@ -24,21 +25,6 @@ struct YamlInputError {
 
 // "a, b, c"
 std::string join_keys(std::initializer_list<const char*> names);
-
-// Scale factors from a file's units to SI: `units: SI` (m, N, Pa), `units: mm-N-s` (mm, N, MPa) or,
-// in structure files, any length and force unit `units: {length: in, force: kip}` (time in s, so
-// mass in force s^2/length).
-struct FileUnits {
-  double length = 1.0;  // file length unit in m
-  double force = 1.0;   // file force unit in N
-  std::string length_name = "m", force_name = "N";
-  // The file's unit of `q` (its SI factor and name, e.g. 1e6 and "MPa"); angles: the SI rad.
-  UnitOfInput of(Quantity q) const;
-};
-
-// A length or force unit by name: m, mm, cm, in, ft; N, kN, lbf, kip. nullopt when unknown.
-std::optional<double> length_unit(const std::string& name);
-std::optional<double> force_unit(const std::string& name);
 
 class YamlFields {
  public:
