@@ -141,7 +141,7 @@ void bind_png(py::module_& m) {
   py::class_<io::PlotField2D>(m, "PlotField2D", "A scalar field on a regular grid, in plot units; NaN = blank.")
       .def(py::init([](const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>& v,
                        double x0, double y0, double dx, double dy, std::string title) {
-             io::PlotField2D f{static_cast<int>(v.cols()), static_cast<int>(v.rows()), x0, y0, dx, dy, {}, std::move(title)};
+             io::PlotField2D f{static_cast<int>(v.cols()), static_cast<int>(v.rows()), x0, y0, dx, dy, {}, std::move(title), {}};
              f.values.assign(v.data(), v.data() + v.size());
              return f;
            }),

@@ -192,23 +192,29 @@ Point paper(A a, double c) {
              : Point{{21.2, -10.2, 2.65, 1.14}, {16.7, -7.9, 2.50, 1.28}, 9418, 68376};
 }
 
-// "Reproduced" means within 10 % of the printed value, or within 1.5 units of its last printed digit
-// where that is coarser (the tiny loaded off-diagonal terms at Q0 are printed as +-0.01, 0.02).
-void expect_reproduced(double ours, double printed, double last_digit, const std::string& what) {
-  EXPECT_LE(std::abs(ours - printed), std::max(0.10 * std::abs(printed), 1.5 * last_digit))
-      << what << ": ours " << ours << ", paper " << printed;
+// A prediction against a printed entry. `measured` is our value when this test was written (the
+// comments list them): the bound is twice its distance from the paper, or 1.5 units of the entry's
+// last printed digit where that is coarser (what the paper's rounding alone allows). So an entry we
+// reproduce to 0.2 % is held to that, and one we miss by 7 % (said so in docs/vjm.md) is held to its
+// miss, not to a blanket 10 %. Printed with its bound.
+void expect_reproduced(double ours, double printed, double last_digit, double measured, const std::string& what) {
+  const double bound = std::max(2.0 * std::abs(measured - printed), 1.5 * last_digit);
+  std::cout << fmt::format("{}: ours {:.4g}, paper {:g}, |difference| {:.3g} <= {:.3g}\n", what, ours, printed,
+                           std::abs(ours - printed), bound);
+  EXPECT_LE(std::abs(ours - printed), bound) << what << ": ours " << ours << ", paper " << printed;
 }
 
 TEST(OrthoglidePrediction, Q0LoadedModeOfBothTables) {
   // At Q0 only the loaded entries are predictions: 2.74/-0.02 and 16.7/-0.02 (3-PUU), 1.88/0.01
   // (3-PRPaR). Measured: 2.771/-0.009, 16.93/-0.019, 1.898/+0.002; F = 1807 N (Table 3: 1823).
   for (A a : {A::kPUU, A::kPRPaR}) {
+    const bool puu = a == A::kPUU;
     const Point ours = computed(a, kQ0), p = paper(a, kQ0);
-    expect_reproduced(ours.loaded.tran_a, p.loaded.tran_a, 0.01, "Q0 loaded k_tran a");
-    expect_reproduced(ours.loaded.tran_b, p.loaded.tran_b, 0.01, "Q0 loaded k_tran b");
-    expect_reproduced(ours.loaded.rot_a, p.loaded.rot_a, 0.01, "Q0 loaded k_rot a");
-    expect_reproduced(ours.loaded.rot_b, p.loaded.rot_b, 0.01, "Q0 loaded k_rot b");
-    expect_reproduced(ours.force, p.force, 1, "Q0 Table 3 F");
+    expect_reproduced(ours.loaded.tran_a, p.loaded.tran_a, 0.01, 2.771, "Q0 loaded k_tran a");
+    expect_reproduced(ours.loaded.tran_b, p.loaded.tran_b, 0.01, -0.008794, "Q0 loaded k_tran b");
+    expect_reproduced(ours.loaded.rot_a, p.loaded.rot_a, puu ? 0.1 : 0.01, puu ? 16.93 : 1.898, "Q0 loaded k_rot a");
+    expect_reproduced(ours.loaded.rot_b, p.loaded.rot_b, 0.01, puu ? -0.01938 : 0.00243, "Q0 loaded k_rot b");
+    expect_reproduced(ours.force, p.force, 1, 1807, "Q0 Table 3 F");
     // The load lowers every diagonal term at Q0 (tension in the legs).
     EXPECT_LT(ours.loaded.tran_a, ours.unloaded.tran_a);
     EXPECT_LT(ours.loaded.rot_a, ours.unloaded.rot_a);
@@ -224,16 +230,16 @@ TEST(OrthoglidePrediction, RotationalComplianceAtQ1AndQ2) {
   // -0.31). Not reproduced (docs/vjm.md): 3-PRPaR Q2 3.10, 1.37 (2.65, 1.14) and both loaded Q2 blocks.
   const Point puu1 = computed(A::kPUU, kQ1), puu2 = computed(A::kPUU, kQ2), pa1 = computed(A::kPRPaR, kQ1);
   const Point ppuu1 = paper(A::kPUU, kQ1), ppuu2 = paper(A::kPUU, kQ2), ppa1 = paper(A::kPRPaR, kQ1);
-  expect_reproduced(puu1.unloaded.rot_a, ppuu1.unloaded.rot_a, 0.1, "3-PUU Q1 k_rot a");
-  expect_reproduced(puu1.unloaded.rot_b, ppuu1.unloaded.rot_b, 0.1, "3-PUU Q1 k_rot b");
-  expect_reproduced(puu1.loaded.rot_a, ppuu1.loaded.rot_a, 0.1, "3-PUU Q1 loaded k_rot a");
-  expect_reproduced(puu1.loaded.rot_b, ppuu1.loaded.rot_b, 0.1, "3-PUU Q1 loaded k_rot b");
-  expect_reproduced(puu2.unloaded.rot_a, ppuu2.unloaded.rot_a, 0.1, "3-PUU Q2 k_rot a");
-  expect_reproduced(puu2.unloaded.rot_b, ppuu2.unloaded.rot_b, 0.1, "3-PUU Q2 k_rot b");
-  expect_reproduced(pa1.unloaded.rot_a, ppa1.unloaded.rot_a, 0.01, "3-PRPaR Q1 k_rot a");
-  expect_reproduced(pa1.unloaded.rot_b, ppa1.unloaded.rot_b, 0.01, "3-PRPaR Q1 k_rot b");
-  expect_reproduced(pa1.loaded.rot_a, ppa1.loaded.rot_a, 0.01, "3-PRPaR Q1 loaded k_rot a");
-  expect_reproduced(pa1.loaded.rot_b, ppa1.loaded.rot_b, 0.01, "3-PRPaR Q1 loaded k_rot b");
+  expect_reproduced(puu1.unloaded.rot_a, ppuu1.unloaded.rot_a, 0.1, 24.15, "3-PUU Q1 k_rot a");
+  expect_reproduced(puu1.unloaded.rot_b, ppuu1.unloaded.rot_b, 0.1, 7.49, "3-PUU Q1 k_rot b");
+  expect_reproduced(puu1.loaded.rot_a, ppuu1.loaded.rot_a, 0.1, 21.38, "3-PUU Q1 loaded k_rot a");
+  expect_reproduced(puu1.loaded.rot_b, ppuu1.loaded.rot_b, 0.1, 5.563, "3-PUU Q1 loaded k_rot b");
+  expect_reproduced(puu2.unloaded.rot_a, ppuu2.unloaded.rot_a, 0.1, 25.93, "3-PUU Q2 k_rot a");
+  expect_reproduced(puu2.unloaded.rot_b, ppuu2.unloaded.rot_b, 0.1, -7.392, "3-PUU Q2 k_rot b");
+  expect_reproduced(pa1.unloaded.rot_a, ppa1.unloaded.rot_a, 0.01, 2.170, "3-PRPaR Q1 k_rot a");
+  expect_reproduced(pa1.unloaded.rot_b, ppa1.unloaded.rot_b, 0.01, -0.3436, "3-PRPaR Q1 k_rot b");
+  expect_reproduced(pa1.loaded.rot_a, ppa1.loaded.rot_a, 0.01, 2.150, "3-PRPaR Q1 loaded k_rot a");
+  expect_reproduced(pa1.loaded.rot_b, ppa1.loaded.rot_b, 0.01, -0.337, "3-PRPaR Q1 loaded k_rot b");
   // Ratios between points of the 3-PUU's rotational compliance: Q1/Q0 = 1.153, Q2/Q0 = 1.234 in
   // Table 1; ours 1.156 and 1.241.
   EXPECT_NEAR(puu1.unloaded.rot_a / 20.9, 24.1 / 20.9, 0.02);
@@ -271,8 +277,8 @@ TEST(OrthoglidePrediction, SignOfEveryOffDiagonalTerm) {
 TEST(OrthoglidePrediction, TranslationalOffDiagonalAtQ2) {
   // The Q2 diagonal terms are calibration entries; the coupling b is not: -34.82 (Table 1: -35.0),
   // -9.77 (Table 2: -10.2). It sets the compliance along the diagonal (1,1,1), a + 2b.
-  expect_reproduced(computed(A::kPUU, kQ2).unloaded.tran_b, -35.0, 0.1, "3-PUU Q2 k_tran b");
-  expect_reproduced(computed(A::kPRPaR, kQ2).unloaded.tran_b, -10.2, 0.1, "3-PRPaR Q2 k_tran b");
+  expect_reproduced(computed(A::kPUU, kQ2).unloaded.tran_b, -35.0, 0.1, -34.82, "3-PUU Q2 k_tran b");
+  expect_reproduced(computed(A::kPRPaR, kQ2).unloaded.tran_b, -10.2, 0.1, -9.774, "3-PRPaR Q2 k_tran b");
 }
 
 TEST(OrthoglidePrediction, LoadedOverUnloadedRatiosAtQ0AndQ1) {

@@ -319,6 +319,9 @@ void check_loaded(OrthoglideArchitecture a) {
     const Tally t = compare(*fast, *ref, pts, true, stalled);
     EXPECT_GT(t.ok, 40);
     EXPECT_GT(t.unreachable, 2);
+    // The excuse is for a rare stall of the reference's iteration, not a way to pass mismatches:
+    // measured 0 of the 54 points in every mode; more than 2 would mean the kernels disagree.
+    EXPECT_LE(t.explained, 2);
     fmt::print("{}: {} ok, {} singular, {} failed, {} unreachable, {} where the reference stalls; worst "
                "difference {:.2f} of the bound\n",
                fast->description(), t.ok, t.singular, t.failed, t.unreachable, t.explained, t.worst);
