@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Configures and builds kinestat (Release) in build/. Extra arguments are passed to `cmake --build`
 # (e.g. `--target kinestat`). Used by demo.sh and test.sh. KINESTAT_PETSC=1 also installs PETSc
-# (the optional distributed backends; test.sh sets it).
+# (the optional distributed backends; test.sh sets it); KINESTAT_WERROR=1 makes our warnings errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${KINESTAT_PETSC:-0}" = 1 ]; then
@@ -10,5 +10,6 @@ else
   "$(dirname "$0")/install-deps.sh"
 fi
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# KINESTAT_WERROR=1 (scripts/test.sh): a warning in kinestat's own code fails the build.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DKINESTAT_WERROR="${KINESTAT_WERROR:-0}" >/dev/null
 cmake --build build -j"$jobs" "$@"
