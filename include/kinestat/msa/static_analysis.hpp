@@ -1,6 +1,7 @@
-// Linear static analysis of an msa::Structure: assembly, CHOLMOD factorization, all load cases with
-// one factorization, reactions, element end forces, equilibrium check, Cartesian stiffness of the
-// report node, stiffness indices, and the diagnosis of singular structures.
+// Linear static analysis of an msa::Structure: assembly, one sparse Cholesky factorization (the
+// backend SolveOptions::cholesky chooses: CHOLMOD by default) for all load cases, reactions, member
+// end forces and along-member results, the equilibrium check (a failed one is an error), Cartesian
+// stiffness of the report node, stiffness indices, and the diagnosis of singular structures.
 #pragma once
 
 #include <array>
