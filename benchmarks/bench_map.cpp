@@ -123,10 +123,10 @@ void report_loaded(const PostureKernel& loaded, const PostureKernel& unloaded, c
   const Rate scratch = rate(loaded, sample, 1, s.min_time);
   const Rate warm = rate(loaded, path, 1, s.min_time, PointOrder::kPath);
   const Rate warm_all = rate(loaded, path, 0, s.min_time, PointOrder::kPath);
-  fmt::print("{:<46} {:>6} {:>6} {:>6} | {:>9.0f} {:>9.0f} {:>9.0f} {:>9.0f} {:>9.0f} | {:>6.1f}x {:>6.1f}x {:>5.2f}x | "
-             "{:>5.1f} {:>5.1f}\n",
-             loaded.description(), path.size(), counts[0], counts[3], plain.wall, scratch.wall, warm.wall, warm.cpu,
-             warm_all.wall, warm.wall / scratch.wall, plain.wall / warm.wall, warm_all.wall / warm.wall,
+  fmt::print("{:<50} {:>6} {:>6} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} | {:>6.1f}x {:>6.1f}x "
+             "{:>5.2f}x | {:>5.1f} {:>5.1f}\n",
+             loaded.description(), counts[0], counts[3], plain.wall, scratch.wall, warm.wall, plain.cpu, scratch.cpu,
+             warm.cpu, warm_all.wall, warm.cpu / scratch.cpu, plain.cpu / warm.cpu, warm_all.wall / warm.wall,
              scratch_steps, warm_steps);
   std::fflush(stdout);
 }
@@ -200,14 +200,15 @@ void loaded_table(const Settings& s) {
   box.dimensions = {41, 41, 41};
   std::vector<Vec3> path(box.num_points());
   for (std::size_t k = 0; k < path.size(); ++k) path[k] = box.point(box.path_index(k));
-  fmt::print("\nloaded mode along the serpentine path of the same cube; postures/s on 1 core (wall, best sweep): "
-             "the unloaded kernel, the loaded kernel from scratch at every posture (on <= {} of the points), "
-             "warm-started (wall; process CPU), warm-started on all cores; ratios warm/scratch, unloaded/warm, "
-             "all cores/1 core; mean Newton steps per posture from scratch and warm\n",
-             s.scratch_points);
-  fmt::print("{:<46} {:>6} {:>6} {:>6} | {:>9} {:>9} {:>9} {:>9} {:>9} | {:>7} {:>7} {:>6} | {:>5} {:>5}\n", "kernel",
-             "points", "ok", "failed", "unloaded", "scratch", "warm", "warm cpu", "warm all", "w/s", "u/w", "all/1",
-             "steps", "warm");
+  fmt::print("\nloaded mode along the serpentine path of the same cube ({} points); postures/s on 1 core of the "
+             "unloaded kernel, the loaded kernel from scratch at every posture (on <= {} of the points) and "
+             "warm-started, per second of wall time (best sweep) and of process CPU time (all sweeps); warm-started "
+             "on all cores (wall); ratios warm/scratch and unloaded/warm of the CPU rates (robust on a shared "
+             "machine), all cores/1 core; mean Newton steps per posture from scratch and warm\n",
+             path.size(), s.scratch_points);
+  fmt::print("{:<50} {:>6} {:>6} | {:>9} {:>9} {:>9} | {:>9} {:>9} {:>9} | {:>9} | {:>7} {:>7} {:>6} | {:>5} {:>5}\n",
+             "kernel", "ok", "failed", "unloaded", "scratch", "warm", "u cpu", "s cpu", "w cpu", "warm all", "w/s",
+             "u/w", "all/1", "steps", "warm");
   for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR}) {
     OrthoglideKernelOptions o;
     o.architecture = a;

@@ -201,14 +201,17 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
     ++steps;
     newton_matrix(c, w, lin, A);
     b << lin.r.cwiseProduct(w), -lin.g;
-    const BorderedVector d = Eigen::PartialPivLU<BorderedMatrix>(A).solve(b);
-    if (!d.allFinite()) return false;
+    if (!gauss_solve(A, b) || !b.allFinite()) return false;
+    const BorderedVector& d = b;
     double step = 1.0;
     for (int k = 0; k < 20; ++k, step *= 0.5) {
       const CoordinateVector x = s.x + step * d.head(n + m);
       const Vec6 F = s.wrench + step * d.tail<6>().cwiseProduct(w);
       linearize(c, target, w, x, F, trial);
-      if (trial.merit() < lin.merit() || k == 19) {
+      // Backtracking is for steps from afar: a step taken from a state that already meets the
+      // tolerances (the first step of a warm or nested re-solve) is kept, since at the round-off floor
+      // the merit need not decrease and 20 halvings would each walk the chain for nothing.
+      if (trial.merit() < lin.merit() || done(lin) || k == 19) {
         s.x = x;
         s.wrench = F;
         std::swap(lin, trial);
@@ -269,8 +272,8 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps
       rhs.setZero(N, 7);
       rhs.col(0) << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
       rhs.topRightCorner<6, 6>() = wc[i].asDiagonal();  // the target moved by a unit twist
-      sols[i] = Eigen::PartialPivLU<BorderedMatrix>(A).solve(rhs);
-      if (!sols[i].allFinite()) return false;
+      if (!gauss_solve(A, rhs) || !rhs.allFinite()) return false;
+      sols[i] = rhs;
       F0 += states_[i].wrench + sols[i].col(0).tail<6>().cwiseProduct(wc[i]);
       Ksum += wc[i].asDiagonal() * sols[i].bottomRightCorner<6, 6>();
     }
