@@ -8,7 +8,10 @@
 // Not a Google Benchmark: one line per kernel with the figures the map needs (issue 8).
 // The CPU-time rate (postures per second of the process's user + system time) is what one core
 // gives even on a busy machine; the wall-time rates are the figures to record on a quiet one.
-// Run: ./build/benchmarks/bench_map [--min-time S] [--reference-points N]
+// The loaded kernels: a table of their own, warm-started along the map's serpentine path against
+// the same kernel from scratch and the unloaded kernel, in the same run.
+// Run: ./build/benchmarks/bench_map [--min-time S] [--reference-points N] [--scratch-points N]
+//      [--loaded-only 1]
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -24,6 +27,7 @@
 
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
+#include "kinestat/mechanisms/workspace_map.hpp"
 
 namespace kinestat::mechanisms {
 namespace {
@@ -33,6 +37,8 @@ using Clock = std::chrono::steady_clock;
 struct Settings {
   double min_time = 1.0;        // s of repeated sweeps per measurement (the best sweep counts)
   int reference_points = 2000;  // subsample for the slow reference path
+  int scratch_points = 4000;    // subsample for the loaded kernels from scratch
+  bool loaded_only = false;     // only the loaded-mode table
 };
 
 double seconds(const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; }
@@ -49,7 +55,8 @@ struct Rate {
 };
 
 // Repeated sweeps lasting together at least `min_time` (at least one).
-Rate rate(const PostureKernel& kernel, const std::vector<Vec3>& points, int threads, double min_time) {
+Rate rate(const PostureKernel& kernel, const std::vector<Vec3>& points, int threads, double min_time,
+          PointOrder order = PointOrder::kIndependent) {
   std::vector<PostureResult> results;
   Rate r;
   double total = 0.0;
@@ -57,7 +64,7 @@ Rate rate(const PostureKernel& kernel, const std::vector<Vec3>& points, int thre
   std::size_t evaluated = 0;
   do {
     const auto t0 = Clock::now();
-    evaluate_postures(kernel, points, results, threads);
+    evaluate_postures(kernel, points, results, threads, {}, order);
     const double dt = std::chrono::duration<double>(Clock::now() - t0).count();
     total += dt;
     evaluated += points.size();
@@ -89,6 +96,41 @@ void report(const PostureKernel& fast, const PostureKernel& reference, const std
   std::fflush(stdout);
 }
 
+// Loaded mode: the kernel along the serpentine path of the grid (PointOrder::kPath, warm starts, as
+// compute_workspace_map runs it) against the same kernel from scratch at every posture (kIndependent,
+// on a subsample of the same grid) and the unloaded kernel on the same path, in the same run; the
+// mean Newton steps per reachable posture of each.
+void report_loaded(const PostureKernel& loaded, const PostureKernel& unloaded, const std::vector<Vec3>& path,
+                   const Settings& s) {
+  const auto mean_steps = [](const std::vector<PostureResult>& results, int counts[4]) {
+    double steps = 0.0, reached = 0.0;
+    for (const PostureResult& r : results) {
+      if (counts) ++counts[static_cast<int>(r.status)];
+      if (r.status == PostureStatus::kUnreachable) continue;
+      steps += r.newton_iterations;
+      reached += 1.0;
+    }
+    return reached > 0 ? steps / reached : 0.0;
+  };
+  std::vector<PostureResult> results;
+  int counts[4] = {0, 0, 0, 0};
+  evaluate_postures(loaded, path, results, 1, {}, PointOrder::kPath);
+  const double warm_steps = mean_steps(results, counts);
+  const std::vector<Vec3> sample = every_nth(path, s.scratch_points);
+  evaluate_postures(loaded, sample, results, 1);
+  const double scratch_steps = mean_steps(results, nullptr);
+  const Rate plain = rate(unloaded, path, 1, s.min_time, PointOrder::kPath);
+  const Rate scratch = rate(loaded, sample, 1, s.min_time);
+  const Rate warm = rate(loaded, path, 1, s.min_time, PointOrder::kPath);
+  const Rate warm_all = rate(loaded, path, 0, s.min_time, PointOrder::kPath);
+  fmt::print("{:<50} {:>6} {:>6} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} | {:>6.1f}x {:>6.1f}x "
+             "{:>5.2f}x | {:>5.1f} {:>5.1f}\n",
+             loaded.description(), counts[0], counts[3], plain.wall, scratch.wall, warm.wall, plain.cpu, scratch.cpu,
+             warm.cpu, warm_all.wall, warm.cpu / scratch.cpu, plain.cpu / warm.cpu, warm_all.wall / warm.wall,
+             scratch_steps, warm_steps);
+  std::fflush(stdout);
+}
+
 std::vector<Vec3> plane_grid(double x0, double x1, double y0, double y1, int n) {
   std::vector<Vec3> pts;
   for (int j = 0; j < n; ++j)
@@ -107,6 +149,9 @@ std::vector<Vec3> cube_grid(double lo, double hi, int n) {
   return pts;
 }
 
+void unloaded_tables(const Settings& s);
+void loaded_table(const Settings& s);
+
 int run(const Settings& s) {
   const auto t0 = Clock::now();
   fmt::print("hardware threads: {}; best of sweeps lasting >= {:g} s; reference on <= {} points of each grid\n"
@@ -116,6 +161,17 @@ int run(const Settings& s) {
   fmt::print("{:<46} {:>6} {:>6} {:>5} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>8} {:>7} {:>7}\n", "kernel", "points",
              "ok", "sing.", "unrch.", "1 core/s", "1 cpu/s", "all/s", "ratio", "ref/s", "vs ref", "(cpu)");
 
+  if (!s.loaded_only) unloaded_tables(s);
+  loaded_table(s);
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+  fmt::print("process: user {:.2f} s, system {:.2f} s, wall {:.2f} s\n", seconds(u.ru_utime), seconds(u.ru_stime),
+             wall);
+  return 0;
+}
+
+void unloaded_tables(const Settings& s) {
   // Five-bar: a 100 x 100 grid over the bounding box of its workspace (both legs' reach).
   FiveBarKernelOptions fb;
   const double reach = fb.params.r1 + fb.params.r2;
@@ -133,26 +189,38 @@ int run(const Settings& s) {
     o.architecture = a;
     report(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), cube, s);
   }
-  // Loaded mode (extra lines): the tables' wrench-free displacement case and a wrench.
-  Settings loaded = s;
-  loaded.reference_points = std::max(1, s.reference_points / 10);
-  const std::vector<Vec3> coarse = cube_grid(-0.12635, 0.07365, 11);
+}
+
+void loaded_table(const Settings& s) {
+  // Loaded mode: a wrench and the tables' wrench-free displacement case, on the same 41^3 cube,
+  // along its serpentine path (the map's order).
+  MapGrid box;
+  box.origin = Vec3::Constant(-0.12635);
+  box.spacing = Vec3::Constant(0.005);
+  box.dimensions = {41, 41, 41};
+  std::vector<Vec3> path(box.num_points());
+  for (std::size_t k = 0; k < path.size(); ++k) path[k] = box.point(box.path_index(k));
+  fmt::print("\nloaded mode along the serpentine path of the same cube ({} points); postures/s on 1 core of the "
+             "unloaded kernel, the loaded kernel from scratch at every posture (on <= {} of the points) and "
+             "warm-started, per second of wall time (best sweep) and of process CPU time (all sweeps); warm-started "
+             "on all cores (wall); ratios warm/scratch and unloaded/warm of the CPU rates (robust on a shared "
+             "machine), all cores/1 core; mean Newton steps per posture from scratch and warm\n",
+             path.size(), s.scratch_points);
+  fmt::print("{:<50} {:>6} {:>6} | {:>9} {:>9} {:>9} | {:>9} {:>9} {:>9} | {:>9} | {:>7} {:>7} {:>6} | {:>5} {:>5}\n",
+             "kernel", "ok", "failed", "unloaded", "scratch", "warm", "u cpu", "s cpu", "w cpu", "warm all", "w/s",
+             "u/w", "all/1", "steps", "warm");
   for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR}) {
     OrthoglideKernelOptions o;
     o.architecture = a;
+    const std::unique_ptr<PostureKernel> unloaded = make_orthoglide_kernel(o);
     o.wrench = (Vec6() << 100.0, -50.0, 80.0, 0.0, 0.0, 0.0).finished();
-    report(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), coarse, loaded);
+    report_loaded(*make_orthoglide_kernel(o), *unloaded, path, s);
+    o.wrench = (Vec6() << 0.0, 0.0, -500.0, 0.0, 0.0, 0.0).finished();  // the issue's `kinestat map` load
+    report_loaded(*make_orthoglide_kernel(o), *unloaded, path, s);
     o.wrench.reset();
     o.displacement = (Vec6() << -5e-4, -5e-4, -5e-4, 0.0, 0.0, 0.0).finished();
-    report(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), coarse, loaded);
+    report_loaded(*make_orthoglide_kernel(o), *unloaded, path, s);
   }
-
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-  fmt::print("process: user {:.2f} s, system {:.2f} s, wall {:.2f} s\n", seconds(u.ru_utime), seconds(u.ru_stime),
-             wall);
-  return 0;
 }
 
 }  // namespace
@@ -165,8 +233,15 @@ int main(int argc, char** argv) {
       s.min_time = std::atof(argv[i + 1]);
     } else if (std::strcmp(argv[i], "--reference-points") == 0) {
       s.reference_points = std::atoi(argv[i + 1]);
+    } else if (std::strcmp(argv[i], "--scratch-points") == 0) {
+      s.scratch_points = std::atoi(argv[i + 1]);
+    } else if (std::strcmp(argv[i], "--loaded-only") == 0) {
+      s.loaded_only = std::atoi(argv[i + 1]) != 0;
     } else {
-      fmt::print(stderr, "bench_map: unknown option {}; use --min-time S, --reference-points N\n", argv[i]);
+      fmt::print(stderr,
+                 "bench_map: unknown option {}; use --min-time S, --reference-points N, --scratch-points N, "
+                 "--loaded-only 0|1\n",
+                 argv[i]);
       return 2;
     }
   }

@@ -204,6 +204,10 @@ int run_map(MapArgs& a, Context& ctx) {
   if (!setup.ok()) return fail(setup.status());
   if ((*field == MapField::kDeflectionTranslation || *field == MapField::kDeflectionRotation) && !setup->with_load)
     return fail(Status::Invalid(fmt::format("--field {} needs a load (--load{})", a.field, five_bar ? "" : " or --wrench")));
+  // Only the loaded mode of a model iterates; the five-bar's --load is a deflection C w.
+  const bool loaded_mode = setup->with_load && !five_bar;
+  if (*field == MapField::kNewtonIterations && !loaded_mode)
+    return fail(Status::Invalid(fmt::format("--field {} needs the loaded mode of a model (--load or --wrench)", a.field)));
 
   // The point count is estimated before anything is allocated.
   double points = 1.0;
@@ -222,6 +226,7 @@ int run_map(MapArgs& a, Context& ctx) {
   options.near_singular_threshold = a.near_singular;
   if (a.min_stiffness) options.min_stiffness = *a.min_stiffness / kMm;
   options.with_deflection = setup->with_load;
+  options.with_iterations = loaded_mode;
   options.max_points = a.max_points;
   options.threads = a.threads;
   StatusOr<WorkspaceMap> map = Status::Ok();

@@ -73,7 +73,8 @@ MapFieldDisplay map_field_display(MapField f) {
 Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map, MapField field) {
   const FieldValues* found = map.find(field);
   if (found == nullptr)
-    return Status::Invalid(fmt::format("{}: the map has no field {} (the deflections need a load)", path,
+    return Status::Invalid(fmt::format("{}: the map has no field {} (the deflections need a load, the iterations the "
+                                       "loaded mode)", path,
                                        field_info(field).name));
   const MapGrid& g = map.grid;
   const PngPlanes planes = png_planes(g);

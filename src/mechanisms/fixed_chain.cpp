@@ -139,65 +139,162 @@ Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const V
   return T;
 }
 
+namespace {
+
+// A chain's residuals of eq. (11) at (x, F) for a target pose, with the Jacobian and H (a Newton
+// step needs both; the last one's serve the loaded stiffness: one walk of the chain per iterate).
+struct Linearization {
+  ChainJacobian J;
+  CoordinateMatrix H;
+  Vec6 r;              // target - f(x) as a twist
+  CoordinateVector g;  // (J_q^T F, J_theta^T F - K_theta theta)
+  double kin = 0, stat = 0;
+  double merit() const { return kin + stat; }
+};
+
+// vjm::chain_equilibrium's residuals and scaling (w: the chain's twist scale).
+void linearize(const FixedChain& c, const Pose& target, const Vec6& w, const CoordinateVector& x, const Vec6& F,
+               Linearization& l) {
+  const int n = c.num_passive(), m = c.num_virtual();
+  const Pose T = c.kinematics(x, l.J, &F, &l.H);
+  l.r = pose_difference(target, T);
+  l.kin = l.r.cwiseProduct(w).norm();
+  l.g = l.J.transpose() * F;
+  const CoordinateVector Kt = c.spring_stiffness() * x.tail(m);
+  const double jtf = l.g.tail(m).norm();
+  l.g.tail(m) -= Kt;
+  const double num = l.g.norm(), den = l.g.head(n).norm() + jtf + Kt.norm();
+  l.stat = num > 0 ? num / den : 0.0;
+}
+
+// The Newton matrix of eq. (11) at l. Rows: kinematics (scaled by W), J_q^T F, J_theta^T F - K_theta
+// theta; unknowns (dq, dtheta, W^-1 dF).
+void newton_matrix(const FixedChain& c, const Vec6& w, const Linearization& l, BorderedMatrix& A) {
+  const int n = c.num_passive(), m = c.num_virtual(), N = n + m + 6;
+  A.setZero(N, N);
+  A.topLeftCorner(6, n + m) = w.asDiagonal() * l.J;
+  A.bottomLeftCorner(n + m, n + m) = l.H;
+  A.block(6 + n, n, m, m) -= c.spring_stiffness();
+  A.bottomRightCorner(n + m, 6) = l.J.transpose() * w.asDiagonal();
+}
+
+}  // namespace
+
 // Eq. (11) by Newton-Raphson from s, with vjm::chain_equilibrium's residuals, scaling, tolerance and
 // backtracking; s is the converged state on return (true) or unspecified (false).
-bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s) const {
+bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, int& steps) const {
   const FixedChain& c = chains[i];
   const int n = c.num_passive(), m = c.num_virtual(), N = n + m + 6;
   const Vec6 w = twist_scale(c.length_scale());
-  struct Linearization {
-    ChainJacobian J;
-    Vec6 r;
-    CoordinateVector g;  // (J_q^T F, J_theta^T F - K_theta theta)
-    double kin = 0, stat = 0;
-    double merit() const { return kin + stat; }
-  };
-  const auto linearize = [&](const CoordinateVector& x, const Vec6& F, Linearization& l) {
-    const Pose T = c.kinematics(x, l.J, nullptr, nullptr);
-    l.r = pose_difference(target, T);
-    l.kin = l.r.cwiseProduct(w).norm();
-    l.g = l.J.transpose() * F;
-    const CoordinateVector Kt = c.spring_stiffness() * x.tail(m);
-    const double jtf = l.g.tail(m).norm();
-    l.g.tail(m) -= Kt;
-    const double num = l.g.norm(), den = l.g.head(n).norm() + jtf + Kt.norm();
-    l.stat = num > 0 ? num / den : 0.0;
-  };
   const auto done = [&](const Linearization& l) {
     return l.kin <= equilibrium_tolerance && l.stat <= equilibrium_tolerance;
   };
   Linearization lin, trial;
-  linearize(s.x, s.wrench, lin);
-  ChainJacobian J;
-  CoordinateMatrix H;
+  s.linearized = false;
+  linearize(c, target, w, s.x, s.wrench, lin);
   BorderedMatrix A(N, N);
   BorderedVector b(N);
   // At least one step: under a prescribed wrench the outer iteration moves the target by less than
   // the tolerance near convergence, and a chain left where it was would stall it.
   for (int it = 0; it == 0 || !done(lin); ++it) {
     if (it >= max_iterations) return false;
-    c.kinematics(s.x, J, &s.wrench, &H);
-    // Rows: kinematics (scaled by W), J_q^T F, J_theta^T F - K_theta theta; unknowns (dq, dtheta, W^-1 dF).
-    A.setZero();
-    A.topLeftCorner(6, n + m) = w.asDiagonal() * lin.J;
-    A.bottomLeftCorner(n + m, n + m) = H;
-    A.block(6 + n, n, m, m) -= c.spring_stiffness();
-    A.bottomRightCorner(n + m, 6) = lin.J.transpose() * w.asDiagonal();
+    ++steps;
+    newton_matrix(c, w, lin, A);
     b << lin.r.cwiseProduct(w), -lin.g;
-    const BorderedVector d = Eigen::PartialPivLU<BorderedMatrix>(A).solve(b);
-    if (!d.allFinite()) return false;
+    if (!gauss_solve(A, b) || !b.allFinite()) return false;
+    const BorderedVector& d = b;
     double step = 1.0;
     for (int k = 0; k < 20; ++k, step *= 0.5) {
       const CoordinateVector x = s.x + step * d.head(n + m);
       const Vec6 F = s.wrench + step * d.tail<6>().cwiseProduct(w);
-      linearize(x, F, trial);
-      if (trial.merit() < lin.merit() || k == 19) {
+      linearize(c, target, w, x, F, trial);
+      // Backtracking is for steps from afar: a step taken from a state that already meets the
+      // tolerances (the first step of a warm or nested re-solve) is kept, since at the round-off floor
+      // the merit need not decrease and 20 halvings would each walk the chain for nothing.
+      if (trial.merit() < lin.merit() || done(lin) || k == 19) {
         s.x = x;
         s.wrench = F;
         std::swap(lin, trial);
         break;
       }
     }
+  }
+  s.J = lin.J;
+  s.H = lin.H;
+  s.linearized = true;
+  return true;
+}
+
+// Under a wrench, from a warm start: Newton on all the equations at once, every chain's eq. (11) and
+// the platform's balance sum F_i = W_ext, unknowns every chain's (dx_i, dF_i) and the platform's
+// twist dt. Each chain's Newton system is solved for its own residual and for the six unit moves of
+// its target, which condenses it to F_i + dF_i0 + K_i dt (K_i: the chain's dF/dt, eq. 21 by the
+// Schur complement of the same matrix); the 6x6 sum gives dt. The nested iteration (equilibrium(),
+// the reference's) re-solves every chain to 1e-12 at each platform step; near a neighbour's solution
+// this converges in the same few steps for all the unknowns together. Stops one step after every
+// chain and the platform meet the nested iteration's tolerances; false after 8 iterations.
+bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps) {
+  constexpr int kMaxCoupledIterations = 8;
+  const Vec6 w = twist_scale(length_scale_);
+  const double ref = wrench.cwiseQuotient(w).norm();
+  std::array<Linearization, kMaxChains> lin;
+  std::array<Vec6, kMaxChains> wc;
+  for (int i = 0; i < num_chains; ++i) wc[i] = twist_scale(chains[i].length_scale());
+  BorderedMatrix A;
+  Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7> rhs, sol;
+  std::array<decltype(sol), kMaxChains> sols;
+  // One more step once the tolerances are met: Newton then lands at the round-off floor.
+  bool polished = false;
+  for (int it = 0;; ++it) {
+    bool chains_done = true;
+    Vec6 total = Vec6::Zero();
+    for (int i = 0; i < num_chains; ++i) {
+      FixedChainState& s = states_[i];
+      linearize(chains[i], displace(nominal_[i], d), wc[i], s.x, s.wrench, lin[i]);
+      chains_done = chains_done && lin[i].kin <= equilibrium_tolerance && lin[i].stat <= equilibrium_tolerance;
+      total += s.wrench;
+    }
+    const Vec6 R = (wrench - total).cwiseQuotient(w);
+    const double res = ref > 0 ? R.norm() / ref : R.norm();
+    if (polished) break;
+    if (chains_done && res <= 100 * equilibrium_tolerance)
+      polished = true;
+    else if (it >= kMaxCoupledIterations)
+      return false;
+    // Condensed platform system: sum K_i dt = W_ext - sum (F_i + dF_i0), in the platform's scaling.
+    Mat6 Ksum = Mat6::Zero();
+    Vec6 F0 = Vec6::Zero();
+    for (int i = 0; i < num_chains; ++i) {
+      const FixedChain& c = chains[i];
+      const int N = c.num_passive() + c.num_virtual() + 6;
+      ++steps;
+      newton_matrix(c, wc[i], lin[i], A);
+      rhs.setZero(N, 7);
+      rhs.col(0) << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
+      rhs.topRightCorner<6, 6>() = wc[i].asDiagonal();  // the target moved by a unit twist
+      if (!gauss_solve(A, rhs) || !rhs.allFinite()) return false;
+      sols[i] = rhs;
+      F0 += states_[i].wrench + sols[i].col(0).tail<6>().cwiseProduct(wc[i]);
+      Ksum += wc[i].asDiagonal() * sols[i].bottomRightCorner<6, 6>();
+    }
+    const Mat6 Kt = w.cwiseInverse().asDiagonal() * Ksum * w.cwiseInverse().asDiagonal();
+    const Eigen::FullPivLU<Mat6> lu(Kt);
+    if (!lu.isInvertible()) return false;
+    const Vec6 dt = lu.solve((wrench - F0).cwiseQuotient(w)).cwiseQuotient(w);
+    if (!dt.allFinite()) return false;
+    for (int i = 0; i < num_chains; ++i) {
+      FixedChainState& s = states_[i];
+      const int nm = chains[i].num_passive() + chains[i].num_virtual();
+      const auto& x = sols[i];
+      s.x += x.col(0).head(nm) + x.topRightCorner(nm, 6) * dt;
+      s.wrench += (x.col(0).tail<6>() + x.bottomRightCorner<6, 6>() * dt).cwiseProduct(wc[i]);
+    }
+    d = pose_difference(displace(displace(nominal_[0], d), dt), nominal_[0]);
+  }
+  for (int i = 0; i < num_chains; ++i) {
+    states_[i].J = lin[i].J;
+    states_[i].H = lin[i].H;
+    states_[i].linearized = true;
   }
   return true;
 }
@@ -208,9 +305,11 @@ bool LoadedPlatform::loaded_stiffness(int i, const FixedChainState& s, Mat6& K) 
   const FixedChain& c = chains[i];
   const int n = c.num_passive(), m = c.num_virtual();
   const Vec6 w = twist_scale(c.length_scale());
-  ChainJacobian J;
-  CoordinateMatrix H;
-  c.kinematics(s.x, J, &s.wrench, &H);
+  ChainJacobian walked_J;
+  CoordinateMatrix walked_H;
+  if (!s.linearized) c.kinematics(s.x, walked_J, &s.wrench, &walked_H);
+  const ChainJacobian& J = s.linearized ? s.J : walked_J;
+  const CoordinateMatrix& H = s.linearized ? s.H : walked_H;
   const CoordinateMatrix Ath = c.spring_stiffness() - H.bottomRightCorner(m, m);
   const Eigen::FullPivLU<CoordinateMatrix> lu(Ath);
   if (!lu.isInvertible()) return false;  // the springs buckle under this load
@@ -243,50 +342,141 @@ bool LoadedPlatform::platform_stiffness(Mat6& K) const {
   return true;
 }
 
-void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, PostureResult& r) {
+bool LoadedPlatform::solve_chains(const Vec6& d, int& steps) {
+  for (int i = 0; i < num_chains; ++i)
+    if (!solve_chain(i, displace(nominal_[i], d), states_[i], steps)) return false;
+  return true;
+}
+
+// vjm::platform_equilibrium_under_wrench: Newton on the platform pose with the loaded stiffness as
+// dF/dt, from the current states, the chains' equilibrium at d (at rest: d = 0).
+bool LoadedPlatform::nested_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps) {
+  const Vec6 w = twist_scale(length_scale_);
+  const double ref = wrench.cwiseQuotient(w).norm();
+  for (int it = 0;; ++it) {
+    if (!platform_stiffness(K)) return false;
+    Vec6 total = Vec6::Zero();
+    for (int i = 0; i < num_chains; ++i) total += states_[i].wrench;
+    const Vec6 R = (wrench - total).cwiseQuotient(w);
+    const double res = ref > 0 ? R.norm() / ref : R.norm();
+    if (res <= 100 * equilibrium_tolerance) break;
+    if (it >= max_iterations) return false;
+    const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
+    const Eigen::FullPivLU<Mat6> lu(Kt);
+    if (!lu.isInvertible()) return false;  // a free direction: the wrench cannot be resisted
+    const Vec6 dt = lu.solve(R).cwiseQuotient(w);
+    d = pose_difference(displace(displace(nominal_[0], d), dt), nominal_[0]);
+    if (!solve_chains(d, steps)) return false;
+  }
+  return true;
+}
+
+void LoadedPlatform::reset_to_rest() {
+  for (int i = 0; i < num_chains; ++i) {
+    states_[i].x = rest_[i];
+    states_[i].wrench.setZero();
+    states_[i].linearized = false;
+  }
+}
+
+bool LoadedPlatform::equilibrium(const Vec6* displacement, const Vec6* wrench, bool at_rest, Vec6& d, Mat6& K,
+                                 bool& have_K, int& steps) {
+  have_K = false;
+  if (!at_rest) {
+    if (displacement) return solve_chains(d = *displacement, steps);
+    return coupled_equilibrium(*wrench, d, steps);
+  }
+  // The load in n equal increments, each from the previous one's equilibrium: n = 1 first (the
+  // reference's start from rest); where that does not converge, 2, 4 and 8 increments (the natural
+  // branch followed from rest, which a far first Newton step can miss). Under a wrench the nested
+  // iteration's answer is then finished by the coupled one, as a warm start is: its Newton steps on
+  // all the unknowns reach the round-off floor (relative residuals ~1e-16, the nested iteration's
+  // ~1e-13), so that the two starts agree to the conditioning of the equilibrium, not to a
+  // tolerance (2e-10 apart in the deflection next to the buckling limit without it).
+  for (int n = 1; n <= 8; n *= 2) {
+    if (n > 1) reset_to_rest();
+    d.setZero();
+    bool ok = true;
+    for (int k = 1; k <= n && ok; ++k) {
+      const double share = static_cast<double>(k) / n;
+      ok = displacement ? solve_chains(d = share * *displacement, steps)
+                        : nested_equilibrium(share * *wrench, d, K, steps);
+    }
+    if (ok) return displacement || coupled_equilibrium(*wrench, d, steps);
+  }
+  // Last, under a wrench, the coupled iteration itself from rest, in the same increments: where a
+  // chain's own iteration fails on the way (measured: a 3-PRPaR corner under 5 kN, which warm starts
+  // from all six neighbours reach in five steps), the platform and chains converge together.
+  for (int n = 1; n <= 8 && wrench; n *= 2) {
+    reset_to_rest();
+    d.setZero();
+    bool ok = true;
+    for (int k = 1; k <= n && ok; ++k) ok = coupled_equilibrium(static_cast<double>(k) / n * *wrench, d, steps);
+    if (ok) return true;
+  }
+  return false;
+}
+
+void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm,
+                              PostureResult& r) {
   length_scale_ = 0.0;
   ChainJacobian J;
+  std::array<CoordinateVector, kMaxChains>& nominal = rest_;
   for (int i = 0; i < num_chains; ++i) {
-    states_[i].x = chains[i].nominal();
-    states_[i].wrench.setZero();
-    nominal_[i] = chains[i].kinematics(states_[i].x, J);
+    nominal[i] = chains[i].nominal();
+    nominal_[i] = chains[i].kinematics(nominal[i], J);
     length_scale_ = std::max(length_scale_, chains[i].length_scale());
   }
   const Vec6 w = twist_scale(length_scale_);
-  // Every chain at the platform displaced by d, from its current state.
-  const auto solve_chains = [&](const Vec6& d) {
-    for (int i = 0; i < num_chains; ++i)
-      if (!solve_chain(i, displace(nominal_[i], d), states_[i])) return false;
-    return true;
-  };
-  r.status = PostureStatus::kFailed;
   Vec6 d = Vec6::Zero();
   Mat6 K;
-  if (displacement) {
-    d = *displacement;
-    if (!solve_chains(d)) return;
-  } else {
-    // vjm::platform_equilibrium_under_wrench: Newton on the platform pose with the loaded stiffness
-    // as dF/dt, from the unloaded platform (the chains' nominal state is their equilibrium at d = 0).
-    const double ref = wrench->cwiseQuotient(w).norm();
-    for (int it = 0;; ++it) {
-      if (!platform_stiffness(K)) return;
-      Vec6 total = Vec6::Zero();
-      for (int i = 0; i < num_chains; ++i) total += states_[i].wrench;
-      const Vec6 R = (*wrench - total).cwiseQuotient(w);
-      const double res = ref > 0 ? R.norm() / ref : R.norm();
-      if (res <= 100 * equilibrium_tolerance) break;
-      if (it >= max_iterations) return;
+  bool have_K = false, found = false;
+  r.newton_iterations = 0;
+  // (A neighbour deflected beyond kMaxWarmDeflection would not pass the test below: no attempt.)
+  if (warm && solved_ && unloaded && solved_d_.cwiseProduct(w).norm() <= kMaxWarmDeflection) {
+    for (int i = 0; i < num_chains; ++i) {
+      states_[i].x += nominal[i] - solved_nominal_[i];
+      states_[i].linearized = false;
+    }
+    d = solved_d_;
+    found = equilibrium(displacement, wrench, false, d, K, have_K, r.newton_iterations);
+    // The branch test: a warm start follows the neighbour's equilibrium branch, the start from rest
+    // may find another where the load softens the robot much (next to a buckling limit, beyond which
+    // Newton from rest can land on an unstable equilibrium) or deflects it far (several stiff
+    // equilibria: 1-3 points of 1331 of the 3-PUU's map differed by up to 95 % under 14-20 kN,
+    // deflections of 9-38 mm). So the warm answer is kept only where the load leaves more than
+    // kBranchSoftening of the stiffness in every direction, of the platform (sym K - kBranchSoftening
+    // sym K0 positive definite, K0 unloaded, scaled twists) and of every chain's springs
+    // (sym(K_theta - H_thetatheta) - kBranchSoftening K_theta: eq. 21's spring block), and where
+    // |W d| <= kMaxWarmDeflection; elsewhere the point is solved from rest, as it would be alone.
+    if (found) {
+      if (!have_K && !platform_stiffness(K)) found = false;
+      have_K = found;
       const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
-      const Eigen::FullPivLU<Mat6> lu(Kt);
-      if (!lu.isInvertible()) return;  // a free direction: the wrench cannot be resisted
-      const Vec6 dt = lu.solve(R).cwiseQuotient(w);
-      d = pose_difference(displace(displace(nominal_[0], d), dt), nominal_[0]);
-      if (!solve_chains(d)) return;
+      const Mat6 K0t = w.cwiseInverse().asDiagonal() * *unloaded * w.cwiseInverse().asDiagonal();
+      const Mat6 margin = 0.5 * (Kt + Kt.transpose()) - kBranchSoftening * 0.5 * (K0t + K0t.transpose());
+      if (found && Eigen::LLT<Mat6>(margin).info() != Eigen::Success) found = false;
+      if (found && !(d.cwiseProduct(w).norm() <= kMaxWarmDeflection)) found = false;
+      for (int i = 0; i < num_chains && found; ++i) {
+        const FixedChain& c = chains[i];
+        const int m = c.num_virtual();
+        const auto Hth = states_[i].H.bottomRightCorner(m, m);
+        const CoordinateMatrix spring =
+            (1.0 - kBranchSoftening) * c.spring_stiffness() - 0.5 * (Hth + Hth.transpose());
+        found = states_[i].linearized && Eigen::LLT<CoordinateMatrix>(spring).info() == Eigen::Success;
+      }
     }
   }
+  if (!found) {
+    reset_to_rest();
+    d.setZero();
+    found = equilibrium(displacement, wrench, true, d, K, have_K, r.newton_iterations);
+  }
+  solved_ = false;
+  r.status = PostureStatus::kFailed;
+  if (!found) return;
   r.status = PostureStatus::kSingular;
-  if (!platform_stiffness(K)) return;
+  if (!have_K && !platform_stiffness(K)) return;
   // vjm's aggregate: a singular value of the scaled K below rank_tolerance of the largest is a free
   // direction (the compliance is undefined).
   const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
@@ -297,6 +487,9 @@ void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, Post
   r.compliance = w.cwiseInverse().asDiagonal() * Eigen::FullPivLU<Mat6>(Kt).inverse() * w.cwiseInverse().asDiagonal();
   r.indices = cartesian_indices(K);
   r.deflection = d;
+  solved_ = true;
+  solved_nominal_ = nominal;
+  solved_d_ = d;
 }
 
 }  // namespace kinestat::mechanisms::fixed_vjm

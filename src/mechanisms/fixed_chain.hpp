@@ -8,7 +8,10 @@
 // Differences from the vjm library, which the tests bound: the chain equilibrium is found by
 // Newton-Raphson on all of eq. (11) from the unloaded state (vjm first runs the paper's eq. (15)
 // iteration; both stop at the same 1e-12 residuals), with LU solves where vjm uses rank-revealing
-// decompositions that only matter at singular postures.
+// decompositions that only matter at singular postures; under a wrench, where vjm's nested iteration
+// fails the load is applied in increments, and the answer is finished by the coupled iteration
+// (all chains and the platform at once, docs/vjm.md "Sweep kernels"), which alone continues a warm
+// start from a neighbouring posture.
 #pragma once
 
 #include <array>
@@ -23,6 +26,12 @@ namespace kinestat::mechanisms::fixed_vjm {
 inline constexpr int kMaxFactors = 24;
 inline constexpr int kMaxCoordinates = 18;  // passive + virtual
 inline constexpr int kMaxChains = 3;
+// A warm-started loaded equilibrium is kept where the load leaves more than this share of the
+// unloaded stiffness in every direction, of the platform and of every chain's springs
+// (LoadedPlatform::evaluate).
+inline constexpr double kBranchSoftening = 0.5;
+// Nor beyond this deflection (scaled twist: translation / length scale, rotation in rad).
+inline constexpr double kMaxWarmDeflection = 0.01;
 
 using CoordinateVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxCoordinates, 1>;
 using CoordinateMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxCoordinates, kMaxCoordinates>;
@@ -83,6 +92,11 @@ class FixedChain {
 struct FixedChainState {
   CoordinateVector x;
   Vec6 wrench = Vec6::Zero();
+  // When `linearized`: the Jacobian [J_q J_theta] and H = d(J^T F)/dx at (x, wrench), as the
+  // equilibrium's last step left them, so that the loaded stiffness does not walk the chain again.
+  bool linearized = false;
+  ChainJacobian J;
+  CoordinateMatrix H;
 };
 
 // The platform in loaded mode: its chains, built by the kernel for each posture.
@@ -95,16 +109,41 @@ struct LoadedPlatform {
 
   // The loaded stiffness and deflection with the platform displaced by `displacement` or under
   // `wrench` (exactly one given), into r: kFailed where the equilibrium is not found, kSingular
-  // where the loaded stiffness does not exist or has a free direction, else kOk.
-  void evaluate(const Vec6* displacement, const Vec6* wrench, PostureResult& r);
+  // where the loaded stiffness does not exist or has a free direction, else kOk; the Newton steps in
+  // r.newton_iterations. From rest (each chain at its nominal state, the platform undisplaced), or,
+  // with `warm` and the unloaded platform stiffness `unloaded` of this posture, from the equilibrium
+  // of the last posture that ended kOk (the chains rebuilt for the new posture since), carried over:
+  // each passive joint keeps its deflection from its nominal angle, each spring its deflection, each
+  // chain its wrench, the platform its displacement. A warm start that does not converge, or whose
+  // loaded stiffness fails the branch test against `unloaded` (fixed_chain.cpp), is redone from rest.
+  void evaluate(const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm, PostureResult& r);
+  // The next warm start starts from rest (the previous posture had no equilibrium to carry over).
+  void forget() { solved_ = false; }
 
  private:
-  bool solve_chain(int i, const Pose& target, FixedChainState& s) const;
+  bool solve_chain(int i, const Pose& target, FixedChainState& s, int& steps) const;
+  bool coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps);
+  bool nested_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps);
+  // Every chain at the platform displaced by d, from its current state.
+  bool solve_chains(const Vec6& d, int& steps);
+  void reset_to_rest();
   bool loaded_stiffness(int i, const FixedChainState& s, Mat6& K) const;
   bool platform_stiffness(Mat6& K) const;
+  // The equilibrium from states_ and d (at_rest: states_ are the chains' nominal states, their
+  // equilibrium at d = 0; under a wrench, the nested iteration of the reference from rest, in load
+  // increments where it fails, finished by the coupled one, which alone continues a warm start);
+  // have_K: K is the loaded platform stiffness at the solution.
+  bool equilibrium(const Vec6* displacement, const Vec6* wrench, bool at_rest, Vec6& d, Mat6& K, bool& have_K,
+                   int& steps);
   std::array<FixedChainState, kMaxChains> states_;
+  std::array<CoordinateVector, kMaxChains> rest_;  // the chains' nominal coordinates (q0, 0)
   std::array<Pose, kMaxChains> nominal_;
   double length_scale_ = 1.0;
+  // The last kOk posture: its chains' nominal coordinates and the platform displacement (its chain
+  // states are states_).
+  bool solved_ = false;
+  std::array<CoordinateVector, kMaxChains> solved_nominal_;
+  Vec6 solved_d_ = Vec6::Zero();
 };
 
 }  // namespace kinestat::mechanisms::fixed_vjm

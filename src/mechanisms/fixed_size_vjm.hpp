@@ -4,6 +4,8 @@
 // chains whose springs are all regular, with the same twist scaling (vjm/bordered_system.hpp).
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "kinestat/core/types.hpp"
@@ -48,6 +50,44 @@ Eigen::Matrix<double, N, M> lower_solve(const Eigen::Matrix<double, N, N>& facto
     B.row(i) /= factor(i, i);
   }
   return B;
+}
+
+// A X = B for a square A of a few dozen rows by Gaussian elimination with partial pivoting, in place
+// (A is overwritten by its LU factors, B by X), in plain column-wise loops: Eigen's PartialPivLU takes
+// its blocked path above 16 rows (GEMM updates and packing), a quarter of a loaded map's time at the
+// chains' 22-23 rows. False at a zero pivot.
+template <class MatrixA, class MatrixB>
+bool gauss_solve(MatrixA& A, MatrixB& B) {
+  const Eigen::Index n = A.rows(), r = B.cols();
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::Index p = k;
+    for (Eigen::Index i = k + 1; i < n; ++i)
+      if (std::abs(A(i, k)) > std::abs(A(p, k))) p = i;
+    if (!(A(p, k) != 0.0)) return false;
+    if (p != k) {
+      A.row(p).swap(A.row(k));
+      B.row(p).swap(B.row(k));
+    }
+    const double pivot = A(k, k);
+    for (Eigen::Index i = k + 1; i < n; ++i) A(i, k) /= pivot;
+    for (Eigen::Index j = k + 1; j < n; ++j) {
+      const double a = A(k, j);
+      if (a != 0.0)
+        for (Eigen::Index i = k + 1; i < n; ++i) A(i, j) -= A(i, k) * a;
+    }
+    for (Eigen::Index j = 0; j < r; ++j) {
+      const double b = B(k, j);
+      if (b != 0.0)
+        for (Eigen::Index i = k + 1; i < n; ++i) B(i, j) -= A(i, k) * b;
+    }
+  }
+  for (Eigen::Index j = 0; j < r; ++j)
+    for (Eigen::Index k = n - 1; k >= 0; --k) {
+      const double x = B(k, j) /= A(k, k);
+      if (x != 0.0)
+        for (Eigen::Index i = 0; i < k; ++i) B(i, j) -= A(i, k) * x;
+    }
+  return true;
 }
 
 // The inverse L^-T L^-1 of a symmetric positive definite matrix from its Cholesky factorization:

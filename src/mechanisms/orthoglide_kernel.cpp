@@ -60,27 +60,8 @@ class OrthoglideKernel final : public PostureKernel {
     bar_compliance_ = inverse_spd(bar);
   }
 
-  PostureResult evaluate(const Vec3& p) override {
-    PostureResult r;
-    if (!geometry_valid_) return r;
-    const std::optional<Vec3> rho = try_inverse_kinematics(OrthoglideGeometry{o_.model.link_length}, p);
-    if (!rho || serial_singular(p, *rho)) return r;  // kUnreachable, as velocity_transmission_at fails
-    r.singularity_measure = singularity_measure(p, *rho);
-    if (!model_valid_) return r;  // orthoglide_chains fails: kUnreachable
-    r.status = springs_valid_ ? PostureStatus::kSingular : PostureStatus::kFailed;
-    if (!springs_valid_) return r;
-    if (o_.wrench || o_.displacement) return loaded(p, *rho, r);
-    Mat6 K = Mat6::Zero();
-    double length_scale = 0.0;  // of the platform: the largest chain's
-    for (int i = 0; i < 3; ++i) {
-      Mat6 Ki;
-      if (!chain_stiffness(i, p, (*rho)[i], Ki)) return r;
-      K += Ki;
-      length_scale = std::max(length_scale, chain_length_scale((*rho)[i]));
-    }
-    fixed_vjm::set_platform_result(K, fixed_vjm::twist_scale(length_scale), Vec6::Zero(), r);
-    return r;
-  }
+  PostureResult evaluate(const Vec3& p) override { return evaluate_loaded_or_not(p, false); }
+  PostureResult evaluate_next(const Vec3& p) override { return evaluate_loaded_or_not(p, true); }
 
   std::unique_ptr<PostureKernel> clone() const override { return std::make_unique<OrthoglideKernel>(*this); }
   std::string description() const override {
@@ -90,6 +71,45 @@ class OrthoglideKernel final : public PostureKernel {
   }
 
  private:
+  // warm: the loaded equilibrium may start from the previous posture's (evaluate_next), which must
+  // then have ended kOk.
+  PostureResult evaluate_loaded_or_not(const Vec3& p, bool warm) {
+    PostureResult r = evaluate(p, warm);
+    if (r.status != PostureStatus::kOk) loaded_.forget();
+    return r;
+  }
+
+  PostureResult evaluate(const Vec3& p, bool warm) {
+    PostureResult r;
+    if (!geometry_valid_) return r;
+    const std::optional<Vec3> rho = try_inverse_kinematics(OrthoglideGeometry{o_.model.link_length}, p);
+    if (!rho || serial_singular(p, *rho)) return r;  // kUnreachable, as velocity_transmission_at fails
+    r.singularity_measure = singularity_measure(p, *rho);
+    if (!model_valid_) return r;  // orthoglide_chains fails: kUnreachable
+    r.status = springs_valid_ ? PostureStatus::kSingular : PostureStatus::kFailed;
+    if (!springs_valid_) return r;
+    Mat6 K;
+    double length_scale = 0.0;  // of the platform: the largest chain's
+    // The loaded mode needs the unloaded stiffness only for its warm start's branch test.
+    const bool unloaded = !(o_.wrench || o_.displacement) || warm;
+    const bool regular = unloaded && unloaded_stiffness(p, *rho, K, length_scale);
+    if (o_.wrench || o_.displacement) return loaded(p, *rho, regular ? &K : nullptr, warm, r);
+    if (regular) fixed_vjm::set_platform_result(K, fixed_vjm::twist_scale(length_scale), Vec6::Zero(), r);
+    return r;
+  }
+
+  // The sum of the chains' stiffnesses (eq. 10); false where a chain's is not defined.
+  bool unloaded_stiffness(const Vec3& p, const Vec3& rho, Mat6& K, double& length_scale) const {
+    K.setZero();
+    for (int i = 0; i < 3; ++i) {
+      Mat6 Ki;
+      if (!chain_stiffness(i, p, rho[i], Ki)) return false;
+      K += Ki;
+      length_scale = std::max(length_scale, chain_length_scale(rho[i]));
+    }
+    return true;
+  }
+
   // sigma_min / sigma_max of J^-1 (eq. 5), as velocity_transmission; 0 where not finite.
   static double singularity_measure(const Vec3& p, const Vec3& rho) {
     Mat3 Jinv;
@@ -175,7 +195,7 @@ class OrthoglideKernel final : public PostureKernel {
     return true;
   }
 
-  PostureResult loaded(const Vec3& p, const Vec3& rho, PostureResult& r);
+  PostureResult loaded(const Vec3& p, const Vec3& rho, const Mat6* unloaded, bool warm, PostureResult& r);
 
   OrthoglideKernelOptions o_;
   bool geometry_valid_ = false, model_valid_ = false, springs_valid_ = false;
@@ -187,7 +207,8 @@ class OrthoglideKernel final : public PostureKernel {
 };
 
 // The chains of orthoglide_chains, factor by factor, for the loaded mode.
-PostureResult OrthoglideKernel::loaded(const Vec3& p, const Vec3& rho, PostureResult& r) {
+PostureResult OrthoglideKernel::loaded(const Vec3& p, const Vec3& rho, const Mat6* unloaded, bool warm,
+                                       PostureResult& r) {
   const double L = o_.model.link_length, d = o_.model.platform_offset;
   loaded_.num_chains = 3;
   for (int i = 0; i < 3; ++i) {
@@ -218,7 +239,7 @@ PostureResult OrthoglideKernel::loaded(const Vec3& p, const Vec3& rho, PostureRe
     c.add_transform(R.transpose(), Vec3::Zero());
   }
   // A wrench wins over a displacement, as in the reference.
-  loaded_.evaluate(o_.wrench ? nullptr : &*o_.displacement, o_.wrench ? &*o_.wrench : nullptr, r);
+  loaded_.evaluate(o_.wrench ? nullptr : &*o_.displacement, o_.wrench ? &*o_.wrench : nullptr, unloaded, warm, r);
   return r;
 }
 

@@ -1,5 +1,6 @@
 #include "kinestat/mechanisms/posture_kernel.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <mutex>
@@ -23,7 +24,7 @@ const char* to_string(PostureStatus s) {
 
 void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& points,
                        std::vector<PostureResult>& results, int threads,
-                       const std::function<void(std::size_t, std::size_t)>& progress) {
+                       const std::function<void(std::size_t, std::size_t)>& progress, PointOrder order) {
   results.resize(points.size());
   const std::size_t total = points.size();
   using Clock = std::chrono::steady_clock;
@@ -32,10 +33,20 @@ void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& poi
   auto last_report = Clock::now();
   // One kernel per worker thread: a kernel keeps mutable buffers (not thread-safe by contract).
   tbb::enumerable_thread_specific<std::unique_ptr<PostureKernel>> local([&] { return kernel.clone(); });
+  // Chunks of kPathChunk postures: small enough to balance, large enough that scheduling (and, on a
+  // path, the chunk's first posture solved from scratch) costs little. Fixed, not TBB's adaptive
+  // ranges, so that a path's warm starts do not depend on the threads.
+  const std::size_t chunks = (total + kPathChunk - 1) / kPathChunk;
   auto body = [&](const tbb::blocked_range<std::size_t>& r) {
     PostureKernel& k = *local.local();
-    for (std::size_t i = r.begin(); i != r.end(); ++i) results[i] = k.evaluate(points[i]);
-    const std::size_t now_done = done += r.size();
+    std::size_t count = 0;
+    for (std::size_t c = r.begin(); c != r.end(); ++c) {
+      const std::size_t begin = c * kPathChunk, end = std::min(total, begin + kPathChunk);
+      for (std::size_t i = begin; i != end; ++i)
+        results[i] = order == PointOrder::kPath && i != begin ? k.evaluate_next(points[i]) : k.evaluate(points[i]);
+      count += end - begin;
+    }
+    const std::size_t now_done = done += count;
     if (progress && report_mutex.try_lock()) {
       const auto now = Clock::now();
       if (now - last_report > std::chrono::milliseconds(100)) {
@@ -45,8 +56,7 @@ void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& poi
       report_mutex.unlock();
     }
   };
-  // Chunks of ~256 postures: small enough to balance, large enough that scheduling costs nothing.
-  const tbb::blocked_range<std::size_t> range(0, total, 256);
+  const tbb::blocked_range<std::size_t> range(0, chunks, 1);
   if (threads > 0) {
     tbb::task_arena arena(threads);
     arena.execute([&] { tbb::parallel_for(range, body); });

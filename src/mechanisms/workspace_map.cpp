@@ -28,6 +28,7 @@ constexpr std::array<MapFieldInfo, kNumMapFields> kFields = {{
     {"deflection_t", "m", "tool-point translation under the load: |(C w)_xyz|"},
     {"deflection_r", "rad", "tool-point rotation under the load: |(C w)_rx,ry,rz|"},
     {"singularity_measure", "1", "distance to a singularity in [0, 1], 0 at a singularity (the kernel's measure)"},
+    {"newton_iterations", "1", "Newton steps of the loaded equilibrium, every chain's summed (failed points too)"},
 }};
 
 void summarize(FieldValues& f, const MapGrid& grid) {
@@ -63,6 +64,15 @@ Vec3 MapGrid::point(std::size_t index) const {
   const Vec3 ijk(static_cast<double>(index % nx), static_cast<double>((index / nx) % ny),
                  static_cast<double>(index / (nx * ny)));
   return origin + spacing.cwiseProduct(ijk);
+}
+
+std::size_t MapGrid::path_index(std::size_t k) const {
+  const std::size_t nx = dimensions[0], ny = dimensions[1];
+  const std::size_t row = k / nx, z = row / ny;  // row: the path's row count, over the layers
+  std::size_t x = k % nx, y = row % ny;
+  if (row % 2 == 1) x = nx - 1 - x;
+  if (z % 2 == 1) y = ny - 1 - y;
+  return x + nx * (y + ny * z);
 }
 
 double MapGrid::cell_measure() const {
@@ -153,7 +163,8 @@ std::array<double, kNumMapFields> point_fields(const PostureResult& r) {
           ix.log10_abs_det,
           r.deflection.head<3>().norm(),
           r.deflection.tail<3>().norm(),
-          r.singularity_measure};
+          r.singularity_measure,
+          static_cast<double>(r.newton_iterations)};
 }
 
 const FieldValues* WorkspaceMap::find(MapField f) const {
@@ -192,29 +203,43 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
   map.near_singular_threshold = options.near_singular_threshold;
   map.min_stiffness = options.min_stiffness;
   map.status.assign(n, MapPointStatus::kUnreachable);
-  static_assert(static_cast<int>(MapField::kSingularityMeasure) == kNumMapFields - 1);
+  static_assert(static_cast<int>(MapField::kSingularityMeasure) == kNumMapFields - 2 &&
+                static_cast<int>(MapField::kNewtonIterations) == kNumMapFields - 1);
   for (int i = 0; i < kNumMapFields; ++i) {
     const auto f = static_cast<MapField>(i);
     const bool deflection = f == MapField::kDeflectionTranslation || f == MapField::kDeflectionRotation;
     if (deflection && !options.with_deflection) continue;
+    if (f == MapField::kNewtonIterations && !options.with_iterations) continue;
     map.fields.push_back({f, std::vector<double>(n, kNaN), {}});
   }
+  // Both set at every reachable point, with values or not.
+  FieldValues* const measure = &map.fields[map.fields.size() - (options.with_iterations ? 2 : 1)];
+  FieldValues* const iterations = options.with_iterations ? &map.fields.back() : nullptr;
 
-  // Chunks bound the memory of the posture results (~0.7 kB each) whatever the grid size.
+  // Chunks bound the memory of the posture results (~0.7 kB each) whatever the grid size. The points
+  // are visited along the serpentine path, so that a loaded kernel starts each posture from its
+  // neighbour's equilibrium (evaluate_postures, PointOrder::kPath).
   constexpr std::size_t kChunk = std::size_t{1} << 16;
   std::vector<Vec3> points;
+  std::vector<std::size_t> index;
   std::vector<PostureResult> results;
   for (std::size_t begin = 0; begin < n; begin += kChunk) {
     const std::size_t end = std::min(n, begin + kChunk);
     points.resize(end - begin);
-    for (std::size_t i = begin; i < end; ++i) points[i - begin] = grid.point(i);
+    index.resize(end - begin);
+    for (std::size_t k = begin; k < end; ++k) {
+      index[k - begin] = grid.path_index(k);
+      points[k - begin] = grid.point(index[k - begin]);
+    }
     std::function<void(std::size_t, std::size_t)> progress;
     if (options.progress)
       progress = [&, begin](std::size_t done, std::size_t) { options.progress(begin + done, n); };
-    evaluate_postures(kernel, points, results, options.threads, progress);
-    for (std::size_t i = begin; i < end; ++i) {
-      const PostureResult& r = results[i - begin];
+    evaluate_postures(kernel, points, results, options.threads, progress, PointOrder::kPath);
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t i = index[k - begin];
+      const PostureResult& r = results[k - begin];
       if (r.status == PostureStatus::kUnreachable) continue;
+      if (FieldValues* it = iterations) it->values[i] = r.newton_iterations;
       MapPointStatus s = static_cast<MapPointStatus>(r.status);
       if (s == MapPointStatus::kOk && !(r.singularity_measure >= options.near_singular_threshold))
         s = MapPointStatus::kNearSingular;
@@ -223,7 +248,7 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
         const std::array<double, kNumMapFields> v = point_fields(r);
         for (FieldValues& f : map.fields) f.values[i] = v[static_cast<int>(f.field)];
       } else {
-        map.fields.back().values[i] = r.singularity_measure;  // the last field (checked below)
+        measure->values[i] = r.singularity_measure;
       }
     }
   }

@@ -409,7 +409,9 @@ void bind_posture_kernels(py::module_& m) {
       .def_readonly("compliance", &PostureResult::compliance)
       .def_readonly("indices", &PostureResult::indices)
       .def_readonly("singularity_measure", &PostureResult::singularity_measure, "in [0, 1], 0 at a singularity")
-      .def_readonly("deflection", &PostureResult::deflection, "under the kernel's load (m, rad)");
+      .def_readonly("deflection", &PostureResult::deflection, "under the kernel's load (m, rad)")
+      .def_readonly("newton_iterations", &PostureResult::newton_iterations,
+                    "loaded mode: the equilibrium's Newton steps, every chain's summed");
   py::class_<PostureKernel>(m, "PostureKernel",
                             "The stiffness of a mechanism's tool point at many postures (points in m, kinematics "
                             "frame). Not thread-safe: clone() one per thread, or use evaluate_postures.")

@@ -145,7 +145,8 @@ void bind_map(py::module_& m) {
       .value("LOG10_DET", MapField::kLog10Det)
       .value("DEFLECTION_TRANSLATION", MapField::kDeflectionTranslation)
       .value("DEFLECTION_ROTATION", MapField::kDeflectionRotation)
-      .value("SINGULARITY_MEASURE", MapField::kSingularityMeasure);
+      .value("SINGULARITY_MEASURE", MapField::kSingularityMeasure)
+      .value("NEWTON_ITERATIONS", MapField::kNewtonIterations);
   py::class_<MapFieldInfo>(m, "MapFieldInfo")
       .def_readonly("name", &MapFieldInfo::name)
       .def_readonly("unit", &MapFieldInfo::unit, "SI")
@@ -167,6 +168,8 @@ void bind_map(py::module_& m) {
                      "points with values and singularity measure below this are NEAR_SINGULAR")
       .def_readwrite("min_stiffness", &MapOptions::min_stiffness, "N/m on k_t_min for stiff_measure, or None")
       .def_readwrite("with_deflection", &MapOptions::with_deflection, "the kernel carries a load: deflection fields")
+      .def_readwrite("with_iterations", &MapOptions::with_iterations,
+                     "the kernel iterates (loaded mode): the newton_iterations field")
       .def_readwrite("max_points", &MapOptions::max_points)
       .def_readwrite("threads", &MapOptions::threads, "0: all cores");
   py::class_<MapCurve>(m, "MapCurve", "Polylines (each an (n, 3) array, m) drawn over a map, e.g. a singular locus.")

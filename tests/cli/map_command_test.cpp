@@ -29,6 +29,7 @@ TEST(MapCommand, FiveBarJsonToStdoutIsTheOnlyOutput) {
   EXPECT_EQ(j["fields"]["k_t_min"].size(), dims[0].get<std::size_t>() * dims[1].get<std::size_t>());
   EXPECT_EQ(dims[2], 1);
   EXPECT_FALSE(j["fields"].contains("deflection_t"));  // no --load
+  EXPECT_FALSE(j["fields"].contains("newton_iterations"));  // no loaded mode
   EXPECT_GT(j["summary"]["status_counts"]["ok"].get<int>(), 0);
   EXPECT_NE(j["description"].get<std::string>().find("+-"), std::string::npos);
   // The default region is the workspace box widened to the step: its corners are multiples of 25 mm.
@@ -61,6 +62,9 @@ TEST(MapCommand, OrthoglideSliceUnderAWrench) {
     EXPECT_GT(v.get<double>(), 0.0);
   }
   EXPECT_EQ(j["summary"]["status_counts"]["unreachable"], 0);
+  // Loaded mode: the equilibrium's Newton steps at every point, at least one per chain.
+  ASSERT_EQ(j["fields"]["newton_iterations"].size(), 9u);
+  for (const auto& v : j["fields"]["newton_iterations"]) EXPECT_GE(v.get<double>(), 3.0);
 }
 
 // Weakest and stiffest direction under a force, from a compliance: 1 / eigenvalues of C_tt.

@@ -40,7 +40,10 @@ Status validate(const OrthoglideKernelOptions& options);
 //    (eq. 11) by Newton-Raphson from the unloaded state, the loaded stiffness (eq. 21), and under a
 //    wrench the platform's Newton iteration of vjm::platform_equilibrium_under_wrench; the tests
 //    of vjm (1e-12 residuals, 1e-10 rank tolerance). Where the reference's iterations stall (next to
-//    the flat singularity) this one may converge (see the tests).
+//    the flat singularity) this one may converge (see the tests). evaluate_next() (a sweep's next
+//    grid point) starts from the previous posture's equilibrium, falling back to the start from
+//    rest where that does not converge or fails the branch test (docs/maps.md, "Speed"); the answer
+//    equals evaluate()'s to ~1e-11. PostureResult::newton_iterations counts the chain steps.
 std::unique_ptr<PostureKernel> make_orthoglide_kernel(const OrthoglideKernelOptions& options);
 
 // Today's single-posture path: orthoglide_chains + vjm platform stiffness. The reference of tests.

@@ -37,6 +37,9 @@ struct PostureResult {
   // point is reachable, also when singular.
   double singularity_measure = 0.0;
   Vec6 deflection = Vec6::Zero();  // tool-point displacement under the kernel's load (m, rad); 0 without
+  // Loaded mode: the Newton steps its equilibrium took (every chain's, summed, a discarded warm
+  // start's included), also when it failed; 0 for a kernel without an iteration or an unreachable point.
+  int newton_iterations = 0;
 };
 
 class PostureKernel {
@@ -44,17 +47,30 @@ class PostureKernel {
   virtual ~PostureKernel() = default;
   // The posture reached at `point` (m) and its stiffness.
   virtual PostureResult evaluate(const Vec3& point) = 0;
+  // The same posture, for a sweep whose previous point, the last one this kernel evaluated, is a grid
+  // neighbour of `point`: a kernel that iterates (loaded mode) may start from that point's solution,
+  // and gives evaluate(point)'s answer to its convergence tolerance. Others: evaluate(point).
+  virtual PostureResult evaluate_next(const Vec3& point) { return evaluate(point); }
   // An independent copy for another thread (shares only immutable model data).
   virtual std::unique_ptr<PostureKernel> clone() const = 0;
   // "five-bar ++ up (MSA)", "Orthoglide 3-PUU (VJM, loaded)", ...: for titles and reports.
   virtual std::string description() const = 0;
 };
 
+// How evaluate_postures may visit the points: kIndependent, each by evaluate(); kPath, the caller
+// promises that consecutive points are grid neighbours (a serpentine path, workspace_map.cpp), and
+// each chunk of kPathChunk consecutive points is evaluated in order on one clone, its first point by
+// evaluate() and the others by evaluate_next(). The chunks are fixed, so the results do not depend
+// on the threads, bit for bit, either way.
+enum class PointOrder : std::uint8_t { kIndependent, kPath };
+inline constexpr std::size_t kPathChunk = 256;
+
 // Evaluates `kernel` at every point, on `threads` threads (0: all cores; TBB), one clone of the
 // kernel per thread; results[i] belongs to points[i]. `progress(done, total)` (may be empty) is
 // called from one thread at a time, about every 0.1 s, and once at the end.
 void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& points,
                        std::vector<PostureResult>& results, int threads = 0,
-                       const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+                       const std::function<void(std::size_t done, std::size_t total)>& progress = {},
+                       PointOrder order = PointOrder::kIndependent);
 
 }  // namespace kinestat::mechanisms

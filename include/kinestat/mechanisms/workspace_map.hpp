@@ -27,6 +27,10 @@ struct MapGrid {
   std::size_t num_points() const;
   int num_varying_axes() const;              // axes with more than one point: 2 (a plane) or 3 (a box)
   Vec3 point(std::size_t index) const;
+  // The grid index of the k-th point of the serpentine path through the grid: x rows alternately
+  // forward and backward, the rows of a z layer alternately up and down, so that consecutive points
+  // are grid neighbours (compute_workspace_map's order, for the loaded kernels' warm starts).
+  std::size_t path_index(std::size_t k) const;
   // Area (2D, m^2) or volume (3D, m^3) one point stands for: the product of the varying axes' spacings.
   double cell_measure() const;
 };
@@ -79,8 +83,9 @@ enum class MapField : int {
   kDeflectionTranslation,  // |C w| translational part under the load w (m)
   kDeflectionRotation,     // |C w| rotational part (rad)
   kSingularityMeasure,   // the kernel's distance to a singularity (1), 0 at a singularity
+  kNewtonIterations,     // loaded mode: the equilibrium's Newton steps (PostureResult::newton_iterations)
 };
-inline constexpr int kNumMapFields = 14;
+inline constexpr int kNumMapFields = 15;
 
 struct MapFieldInfo {
   const char* name;         // "k_t_min": JSON key, VTI array name (with the unit), --field value
@@ -111,6 +116,9 @@ struct MapOptions {
   std::optional<double> min_stiffness;
   // The kernel carries a load: the deflection fields are part of the map.
   bool with_deflection = false;
+  // The kernel iterates (loaded mode): the newton_iterations field is part of the map, set at every
+  // reachable point (also singular and failed ones) so that slow regions show.
+  bool with_iterations = false;
   std::size_t max_points = 2'000'000;
   int threads = 0;  // 0: all cores
   // progress(done, total) from one thread at a time (evaluate_postures).
@@ -148,9 +156,9 @@ struct WorkspaceMap {
   const FieldValues* find(MapField f) const;  // nullptr when the map does not have it
 };
 
-// Evaluates `kernel` at every grid point (in chunks, on options.threads threads) and fills the fields
-// and summary. Unreachable points have no value in any field (NaN); singular and failed points keep
-// only the singularity measure. kInvalidInput when the grid is empty or above options.max_points.
+// Evaluates `kernel` at every grid point (in chunks, on options.threads threads, along a serpentine
+// path: PointOrder::kPath) and fills the fields and summary. Unreachable points have no value in any
+// field (NaN); singular and failed points keep only the singularity measure and the iterations. kInvalidInput when the grid is empty or above options.max_points.
 StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const MapGrid& grid,
                                              const MapOptions& options = {});
 

@@ -148,19 +148,21 @@ ChainHessians hessians(const Chain& chain, const VecX& q, const VecX& theta, con
 // bracket [xi_a, xi_b] = (w_a x v_b - w_b x v_a, w_a x w_b); every factor moves the tool point by
 // its point velocity v_a + w_a x p, which changes column b's lever arm. Shared with the posture
 // kernels' fixed-size chains (mechanisms).
+//
+// With dv, dw the bracket (a before b) and u_a = v_a + w_a x p, the term is
+//   f . (dv + dw x p + w_b x u_a) + m . dw = u_a . g_b + [a < b] (w_a . h_b - v_a . g_b),
+//   g_b = f x w_b,  h_b = v_b x f + w_b x (p x f + m)
+// (triple products rearranged): two cross products per column and dot products per pair.
 template <class Twist, class Add>
 void for_each_hessian_term(const Twist* tw, int count, const Vec3& p, const Vec6& F, Add&& add) {
-  const Vec3 f = F.head<3>(), m = F.tail<3>();
+  const Vec3 f = F.head<3>(), M = p.cross(f) + F.tail<3>();
   for (int b = 0; b < count; ++b) {
+    const Vec3 g = f.cross(tw[b].w), h = tw[b].v.cross(f) + tw[b].w.cross(M);
     for (int a = 0; a < count; ++a) {
-      Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
-      if (a < b) {
-        dv = tw[a].w.cross(tw[b].v) - tw[b].w.cross(tw[a].v);
-        dw = tw[a].w.cross(tw[b].w);
-      }
-      const Vec3 dp = tw[a].v + tw[a].w.cross(p);
-      const Vec3 dcol_p = dv + dw.cross(p) + tw[b].w.cross(dp);
-      add(b, a, f.dot(dcol_p) + m.dot(dw));
+      const Vec3 u = tw[a].v + tw[a].w.cross(p);
+      double term = u.dot(g);
+      if (a < b) term += tw[a].w.dot(h) - tw[a].v.dot(g);
+      add(b, a, term);
     }
   }
 }
