@@ -127,7 +127,8 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
     o.wrench = *w;
   }
   s.with_load = o.displacement || o.wrench;
-  // Read last: a model with fea: springs may mesh and solve its links.
+  // Read after the options, so that a bad option is reported first (reading meshes nothing: `fea:`
+  // springs are computed by io::resolve_fea_springs, which the Orthoglide kernel does not call).
   auto model = io::read_vjm_model_yaml(a.target);
   if (!model.ok()) return model.status();
   if (!model->orthoglide)
