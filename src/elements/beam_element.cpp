@@ -111,6 +111,30 @@ StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& re
   return out;
 }
 
+Mat12 beam_local_geometric_stiffness(double N, double L, double polar_radius2) {
+  Mat12 K = Mat12::Zero();
+  const double c = N / L;
+  K(0, 0) = K(6, 6) = c;
+  K(0, 6) = K(6, 0) = -c;
+  const double t = c * polar_radius2;
+  K(3, 3) = K(9, 9) = t;
+  K(3, 9) = K(9, 3) = -t;
+  // McGuire-Gallagher-Ziemian eq. (9.18): x-y plane (uy1, rz1, uy2, rz2); the x-z plane has the
+  // coupling signs flipped as in beam_local_stiffness (a positive ry bends towards -z).
+  const double k[4][4] = {{6.0 / 5, L / 10, -6.0 / 5, L / 10},
+                          {L / 10, 2 * L * L / 15, -L / 10, -L * L / 30},
+                          {-6.0 / 5, -L / 10, 6.0 / 5, -L / 10},
+                          {L / 10, -L * L / 30, -L / 10, 2 * L * L / 15}};
+  const int dy[4] = {1, 5, 7, 11}, dz[4] = {2, 4, 8, 10};
+  const double sz[4] = {1, -1, 1, -1};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      K(dy[i], dy[j]) = c * k[i][j];
+      K(dz[i], dz[j]) = c * sz[i] * sz[j] * k[i][j];
+    }
+  return K;
+}
+
 Mat12 beam_transformation(const Mat3& axes) {
   Mat12 T = Mat12::Zero();
   for (int b = 0; b < 4; ++b) T.block<3, 3>(3 * b, 3 * b) = axes.transpose();

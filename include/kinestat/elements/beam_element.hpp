@@ -35,6 +35,16 @@ StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released);
 // K: f*_a = f_a - K_ar K_rr^-1 f_r, zero at r (the released dofs carry no force).
 StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& released, const Vec12& f);
 
+// 12x12 local geometric (initial-stress) stiffness of a beam carrying the axial force N (N, positive
+// in tension): the consistent matrix of the cubic Euler-Bernoulli shape functions, McGuire,
+// Gallagher & Ziemian, "Matrix Structural Analysis", 2nd ed. (2000), eq. (9.18) with the end
+// moments set to zero (Przemieniecki 1968, sec. 15.2, gives the same terms). Bending in each plane:
+// (N/L) [6/5, L/10, -6/5, L/10; ., 2L^2/15, -L/10, -L^2/30; ...]; axial: (N/L) [1 -1; -1 1]; with
+// `polar_radius2` = (Iy + Iz)/A > 0, the torsion term N Ip/(A L) [1 -1; -1 1] (Wagner), 0: none.
+// The same matrix for a Timoshenko beam (its shear flexibility is in the elastic matrix only).
+// Symmetric; zero for rigid translations. Used as K_G in K phi = -lambda K_G phi (msa/buckling.hpp).
+Mat12 beam_local_geometric_stiffness(double N, double length, double polar_radius2 = 0.0);
+
 // T such that u_local = T u_global, from the local axes (columns x, y, z in global coordinates).
 Mat12 beam_transformation(const Mat3& axes);
 
