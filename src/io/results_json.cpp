@@ -258,6 +258,41 @@ StatusOr<json> buckling_to_json(const msa::Structure& s, const msa::BucklingResu
   return j;
 }
 
+StatusOr<json> modes_to_json(const msa::Structure& s, const msa::ModalResult& r, bool lumped) {
+  json j;
+  j["schema"] = "kinestat-modes-results";
+  j["schema_version"] = kResultsSchemaVersion;
+  j["units"] = {{"length", "m"},         {"mass", "kg"},
+                {"angle", "rad"},        {"frequency", "Hz"},
+                {"angular_frequency", "rad/s"}, {"shape", "m/sqrt(kg) (translation), rad/sqrt(kg) (rotation)"},
+                {"participation", "sqrt(kg)"}};
+  j["model"] = {{"title", s.title()},
+                {"num_nodes", s.nodes().size()},
+                {"num_beams", s.beams().size()},
+                {"num_free_dofs", r.num_free_dofs}};
+  j["status"] = status_json(r.status);
+  j["mass_matrix"] = lumped ? "lumped" : "consistent";
+  j["total_mass"] = to_array(r.total_mass);
+  j["modes"] = json::array();
+  for (std::size_t k = 0; k < r.modes.size(); ++k) {
+    const msa::VibrationMode& m = r.modes[k];
+    if (m.shape.size() != s.nodes().size())
+      return Status::Invalid(fmt::format("mode {}: {} node motions for a structure of {} nodes", k + 1, m.shape.size(),
+                                         s.nodes().size()));
+    json mode = {{"mode", k + 1},
+                 {"frequency", m.frequency},
+                 {"omega", m.omega},
+                 {"residual", m.residual},
+                 {"participation", to_array(m.participation)},
+                 {"effective_mass", to_array(m.effective_mass)}};
+    mode["shape"] = json::array();
+    for (std::size_t n = 0; n < m.shape.size(); ++n) mode["shape"].push_back(node_motion(s.nodes()[n].id, m.shape[n]));
+    j["modes"].push_back(std::move(mode));
+  }
+  encode_non_finite(j);
+  return j;
+}
+
 void write_json(std::ostream& out, const json& j, int indent) {
   // `replace`: a title with invalid UTF-8 must not abort the whole report.
   out << j.dump(indent, ' ', false, json::error_handler_t::replace) << '\n';

@@ -2,11 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
-#include <stdexcept>
 
-#include <Eigen/Eigenvalues>
-#include <Spectra/SymGEigsSolver.h>
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
@@ -14,75 +10,9 @@
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
+#include "msa/generalized_eigen.hpp"
 
 namespace kinestat::msa {
-namespace {
-
-// Spectra's matrix operations (the interface of its SparseSymMatProd and SparseRegularInverse).
-// A = -K_G (reduced): y = A x.
-struct NegatedProduct {
-  using Scalar = double;
-  const solver::SparseMatrix& A;
-  Eigen::Index rows() const { return A.rows(); }
-  Eigen::Index cols() const { return A.cols(); }
-  void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<VecX>(y_out, A.rows()).noalias() = -(A * Eigen::Map<const VecX>(x_in, A.cols()));
-  }
-};
-
-// B = K (reduced, positive definite): y = B x, and y = B^-1 x through kinestat's sparse Cholesky
-// (CHOLMOD, or the caller's backend), factorized once.
-struct StiffnessInverse {
-  using Scalar = double;
-  const solver::SparseMatrix& K;
-  const solver::SparseCholesky& chol;
-  Eigen::Index rows() const { return K.rows(); }
-  Eigen::Index cols() const { return K.cols(); }
-  void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<VecX>(y_out, K.rows()).noalias() = K * Eigen::Map<const VecX>(x_in, K.cols());
-  }
-  void solve(const double* x_in, double* y_out) const {
-    MatX X;
-    if (Status st = chol.Solve(Eigen::Map<const VecX>(x_in, K.rows()), &X); !st.ok())
-      throw std::runtime_error(st.message());  // caught around compute() below
-    Eigen::Map<VecX>(y_out, K.rows()) = X.col(0);
-  }
-};
-
-// Below this many free dofs the pencil is solved densely (Eigen): Lanczos needs nev < ncv <= n and
-// would build the full basis anyway.
-constexpr int kDenseBelow = 24;
-
-// Eigenpairs (mu, q) of -K_G q = mu K q with the largest mu, descending.
-StatusOr<std::pair<VecX, MatX>> largest_mu(const solver::SparseMatrix& Kr, const solver::SparseMatrix& KGr,
-                                           const solver::SparseCholesky& chol, int count) {
-  const int n = static_cast<int>(Kr.rows());
-  if (n < kDenseBelow) {
-    Eigen::GeneralizedSelfAdjointEigenSolver<MatX> ges(-MatX(KGr), MatX(Kr));
-    if (ges.info() != Eigen::Success) return Status::Internal("the dense generalized eigensolver failed");
-    const int m = std::min(count, n);
-    return std::pair<VecX, MatX>{ges.eigenvalues().tail(m).reverse(), ges.eigenvectors().rightCols(m).rowwise().reverse()};
-  }
-  NegatedProduct op{KGr};
-  StiffnessInverse bop{Kr, chol};
-  const int nev = std::min(count, n - 1);
-  const int ncv = std::min(n, std::max(2 * nev + 1, 20));
-  try {
-    Spectra::SymGEigsSolver<NegatedProduct, StiffnessInverse, Spectra::GEigsMode::RegularInverse> eig(op, bop, nev,
-                                                                                                         ncv);
-    eig.init();
-    eig.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
-    if (eig.info() != Spectra::CompInfo::Successful)
-      return Status::NotConverged(fmt::format("the Lanczos eigensolver (Spectra) did not converge to {} load factors "
-                                              "in 1000 restarts; ask for fewer (--count)",
-                                              nev));
-    return std::pair<VecX, MatX>{eig.eigenvalues(), eig.eigenvectors()};
-  } catch (const std::exception& e) {
-    return Status::Internal(fmt::format("the Lanczos eigensolver (Spectra) failed: {}", e.what()));
-  }
-}
-
-}  // namespace
 
 BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   BucklingResult res;
@@ -164,17 +94,15 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   const solver::SparseMatrix KGr = C.transpose() * KG * C;
   res.num_free_dofs = static_cast<int>(Kr.rows());
 
-  // The standard form for mu = 1/lambda, -K_G q = mu K q, with K positive definite as B (Spectra's
-  // regular-inverse mode: one Cholesky of K, no shift to guess). The wanted lambdas, the smallest
-  // positive, are the largest mu: the extreme end of a spectrum that gathers at 0 (stiff, barely
-  // loaded motions), where Lanczos converges fastest (Euler: mu_2/mu_1 = 1/4). A shift-invert on
-  // K - sigma K_G would need a sigma below lambda_1, unknown in advance, and an indefinite factor.
+  // Solved as -K_G q = mu K q, mu = 1/lambda: the smallest positive lambdas are the largest mu
+  // (msa/generalized_eigen.hpp says why this form; Euler's column: mu_2/mu_1 = 1/4, well apart).
   auto chol = solver::make_sparse_cholesky(opt.solve.cholesky);
   if (Status st = chol->Factorize(Kr, nullptr); !st.ok()) {
     res.status = st;
     return res;
   }
-  auto eig = largest_mu(Kr, KGr, *chol, opt.count);
+  const solver::SparseMatrix minus_KGr = -KGr;
+  auto eig = largest_generalized_eigenpairs(minus_KGr, Kr, *chol, opt.count);
   if (!eig.ok()) {
     res.status = eig.status();
     return res;

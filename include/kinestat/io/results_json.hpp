@@ -10,6 +10,7 @@
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/stiffness_indices.hpp"
 #include "kinestat/msa/buckling.hpp"
+#include "kinestat/msa/modes.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/msa/structure.hpp"
 
@@ -29,6 +30,11 @@ StatusOr<nlohmann::json> solution_to_json(const msa::Structure& s, const msa::So
 // beams' axial forces, and per mode the load factor, its residual, the most compressed beam's
 // critical axial force and the shape. kInvalidInput when its arrays do not match the structure.
 StatusOr<nlohmann::json> buckling_to_json(const msa::Structure& s, const msa::BucklingResult& r);
+
+// A modal analysis (schema "kinestat-modes-results", docs/results-json.md): total mass, and per mode
+// the frequency, the participation factors and effective masses along x, y, z and the
+// mass-normalized shape. kInvalidInput when its arrays do not match the structure.
+StatusOr<nlohmann::json> modes_to_json(const msa::Structure& s, const msa::ModalResult& r, bool lumped);
 
 // All fields of StiffnessIndices (eigenvectors as a list, eigenvectors[i] belonging to eigenvalues[i]).
 // May hold non-finite numbers: pass the finished document through encode_non_finite.

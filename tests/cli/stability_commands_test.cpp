@@ -1,4 +1,4 @@
-// kinestat buckling on models/euler_column.yaml (pinned-pinned, L = 2 m, EI = 4200 N m^2, P = 1 kN):
+// kinestat buckling and modes on models/euler_column.yaml (pinned-pinned, L = 2 m, EI = 4200 N m^2, P = 1 kN):
 // the load factor, JSON, VTK and the refusals.
 #include <gtest/gtest.h>
 
@@ -60,6 +60,49 @@ TEST(BucklingCommand, CaseSelectionAndRefusals) {
   r = run_cli({"buckling", kModels + "cantilever.yaml"});
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("compresses no beam"), std::string::npos) << r.err;
+}
+
+// kinestat modes on the same column (rho = 7850 kg/m^3, A = 6e-4 m^2, r^2 = Iz / A = 3.33e-5 m^2).
+// Euler-Bernoulli: f_1 = pi^2 sqrt(EI / (rho A L^4)) / (2 pi) = 11.72665 Hz. The command's default
+// consistent mass includes the rotary inertia: a Rayleigh beam, f_1 / sqrt(1 + (pi r / L)^2)
+// (Timoshenko, Vibration Problems in Engineering, rotary-inertia correction) = 11.72617 Hz; 8 beams
+// are 1.64e-5 above the closed form (tests/msa/modes_test.cpp, measured 1.6e-5 here too): asserted
+// within twice that. The first mode carries 8/pi^2 = 81.06 % of the mass.
+TEST(ModesCommand, ColumnFrequencyJsonAndVtk) {
+  const auto dir = std::filesystem::path(KINESTAT_BINARY_DIR) / "test_modes_out";
+  std::filesystem::remove_all(dir);
+  const std::string json = (dir / "m.json").string();
+  const CliRun r = run_cli({"modes", kModels + "euler_column.yaml", "--count", "2", "--json", json, "--vtk",
+                            (dir / "vtk").string()});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("Natural frequencies"), std::string::npos) << r.out;
+  std::ifstream in(json);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j.at("schema"), "kinestat-modes-results");
+  ASSERT_EQ(j.at("modes").size(), 2u);
+  const double pi = std::numbers::pi;
+  const double euler_bernoulli = pi * pi * std::sqrt(210e9 * 2e-8 / (7850 * 6e-4 * 16.0)) / (2 * pi);
+  const double exact = euler_bernoulli / std::sqrt(1 + pi * pi * (2e-8 / 6e-4) / 4.0);
+  const double f1 = j["modes"][0].at("frequency").get<double>();
+  EXPECT_GT(f1, exact);
+  EXPECT_NEAR(f1, exact, 2 * 1.64e-5 * exact);
+  // Effective mass along y: 8/pi^2 of the continuum; 8 beams put 1/16 of it on the pinned nodes,
+  // which do not move along y: measured 81.050 % of the total (asserted 81.06 +- 0.05 %).
+  EXPECT_NEAR(j["modes"][0]["effective_mass"][1].get<double>() / 9.42, 8 / (pi * pi), 5e-4);
+  EXPECT_NEAR(j.at("total_mass")[1].get<double>(), 7850 * 6e-4 * 2.0, 1e-12 * 9.42);
+  EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "euler_column_modes_mode1.vtu"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / "euler_column_modes.pvd"));
+
+  const CliRun lumped = run_cli({"modes", kModels + "euler_column.yaml", "--count", "1", "--lumped", "--json", "-"});
+  ASSERT_EQ(lumped.code, kExitOk) << lumped.err;
+  // Lumped masses carry no rotary inertia: below the Euler-Bernoulli value (measured 11.7265 Hz).
+  EXPECT_LT(nlohmann::json::parse(lumped.out)["modes"][0].at("frequency").get<double>(), euler_bernoulli);
+}
+
+TEST(ModesCommand, WithoutDensityIsRefused) {
+  const CliRun r = run_cli({"modes", kModels + "cantilever.yaml"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("has no density"), std::string::npos) << r.err;
 }
 
 }  // namespace
