@@ -60,6 +60,11 @@ TEST(BucklingCommand, CaseSelectionAndRefusals) {
   r = run_cli({"buckling", kModels + "cantilever.yaml"});
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("compresses no beam"), std::string::npos) << r.err;
+  // A singular structure: the static solve's diagnosis, exit 3, no load factors.
+  r = run_cli({"buckling", kModels + "released_chain.yaml"});
+  EXPECT_EQ(r.code, kExitSingular);
+  EXPECT_NE(r.err.find("singular"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("Critical load factors"), std::string::npos) << r.out;
 }
 
 // kinestat modes on the same column (rho = 7850 kg/m^3, A = 6e-4 m^2, r^2 = Iz / A = 3.33e-5 m^2).
