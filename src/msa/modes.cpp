@@ -21,12 +21,15 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     res.status = Status::Invalid(fmt::format("count {}: ask for at least one mode", opt.count));
     return res;
   }
+  // Without nodal masses every beam needs a density (a forgotten one would give a massless beam and
+  // wrong frequencies without a word); with them, a beam without density is massless on purpose.
+  const bool nodal_masses = !s.masses().empty();
   for (const Beam& b : s.beams()) {
-    if (b.material >= 0 && b.material < static_cast<int>(s.materials().size()) &&
+    if (!nodal_masses && b.material >= 0 && b.material < static_cast<int>(s.materials().size()) &&
         !(s.materials()[b.material].density > 0.0)) {
       res.status = Status::Invalid(at_source(
           b.source, fmt::format("beam '{}': its material '{}' has no density, so the beam has no mass; give the "
-                                "material a density (kg/m^3) for modal analysis",
+                                "material a density (kg/m^3) for modal analysis, or give the structure nodal 'masses:'",
                                 b.id, s.materials()[b.material].id)));
       return res;
     }
@@ -39,8 +42,9 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
       return res;
     }
   }
-  if (s.beams().empty()) {
-    res.status = Status::Invalid(at_source(s.source(), "the structure has no beams, so no mass: nothing vibrates"));
+  if (s.beams().empty() && !nodal_masses) {
+    res.status = Status::Invalid(at_source(s.source(), "the structure has no beams and no nodal masses, so no mass: "
+                                                       "nothing vibrates; add 'masses:' or beams with a density"));
     return res;
   }
   res.linear = solve(s, opt.solve);
@@ -68,6 +72,11 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
         for (int k = 0; k < 6; ++k)
           for (int l = 0; l < 6; ++l) trip.emplace_back(base[a] + k, base[c] + l, me(6 * a + k, 6 * c + l));
   }
+  for (const NodalMass& nm : s.masses())
+    for (int d = 0; d < 3; ++d) {
+      trip.emplace_back(6 * nm.node + d, 6 * nm.node + d, nm.mass);
+      trip.emplace_back(6 * nm.node + 3 + d, 6 * nm.node + 3 + d, nm.inertia(d));
+    }
   solver::SparseMatrix M(s.num_dofs(), s.num_dofs());
   M.setFromTriplets(trip.begin(), trip.end());
   const solver::SparseMatrix& C = map->C;

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 #include <numbers>
 #include <string>
 
@@ -148,6 +150,53 @@ TEST(Modes, NoDensityIsRefused) {
   const ModalResult r = modal_analysis(beam(true, 4, weightless));
   EXPECT_EQ(r.status.code(), StatusCode::kInvalidInput);
   EXPECT_NE(r.status.message().find("material 'air_steel' has no density"), std::string::npos) << r.status.message();
+}
+
+}  // namespace
+}  // namespace kinestat::msa
+
+namespace kinestat::msa {
+namespace {
+
+// A massless cantilever (no density) with a tip mass m and tip rotary inertia Ixx: the bending
+// modes are sqrt(k / m) with the exact tip stiffness k = 3 E I / L^3 (one cubic beam is exact for a
+// tip load, and no other dof has mass), the torsion mode sqrt(G J / (L Ixx)): to round-off.
+TEST(Modes, TipMassOnMasslessCantilever) {
+  const Material massless{"steel", 2.1e11, 0.81e11, 0.0};
+  const Section sec = rectangle_section(0.02, 0.03);
+  const double L = 1.5, m = 20.0, Ixx = 0.05;
+  for (int n : {1, 3}) {
+    Structure s;
+    const int mi = s.add_material(massless);
+    const int c = s.add_section(sec);
+    for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), Vec3(L * i / n, 0, 0));
+    for (int i = 0; i < n; ++i) {
+      Beam b;
+      b.id = fmt::format("b{}", i);
+      b.node1 = i;
+      b.node2 = i + 1;
+      b.material = mi;
+      b.section = c;
+      s.add_beam(b);
+    }
+    s.add_support({0, kAllDofs, Mat3::Identity()});
+    s.add_mass({n, m, Vec3(Ixx, 0, 0)});
+    const ModalResult r = run(s, false, true, 3);
+    ASSERT_EQ(r.modes.size(), 3u) << n;  // y and z bending, torsion; the axial mode is far above
+    const double wy = std::sqrt(3 * kSteel.E * sec.Iz / (m * L * L * L));
+    const double wz = std::sqrt(3 * kSteel.E * sec.Iy / (m * L * L * L));
+    const double wt = std::sqrt(kSteel.G * sec.J / (L * Ixx));
+    std::vector<double> expected{wy, wz, wt};
+    std::sort(expected.begin(), expected.end());
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(r.modes[k].omega, expected[k], 1e-10 * expected[k]) << n << " " << k;
+    EXPECT_NEAR(r.total_mass(1), m, 1e-12 * m);
+    // The y-bending mode carries the whole tip mass along y.
+    for (const auto& mode : r.modes) {
+      if (std::abs(mode.omega - wy) < 1e-6 * wy) {
+        EXPECT_NEAR(mode.effective_mass(1), m, 1e-9 * m);
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Natural frequencies and mode shapes of an msa::Structure: K phi = omega^2 M phi on the reduced
 // dofs u = C q of the static solve (supports and rigid ties), M assembled from the beams' density
-// (elements/beam_element.hpp: consistent or lumped). Documented in docs/stability-and-modes.md.
+// (elements/beam_element.hpp: consistent or lumped) and the structure's nodal masses and rotary
+// inertias. Documented in docs/stability-and-modes.md.
 #pragma once
 
 #include <vector>
@@ -28,7 +29,8 @@ struct VibrationMode {
 };
 
 struct ModalResult {
-  // kInvalidInput (bad model, a beam without density, a beam with end releases), kSingular (K
+  // kInvalidInput (bad model, a beam without density in a structure without nodal masses, a beam with
+  // end releases), kSingular (K
   // singular: see `linear.singularity`), kNotConverged (the eigensolver), kInternal.
   Status status;
   Solution linear;            // the static solve (its checks and diagnosis; load cases if any)
