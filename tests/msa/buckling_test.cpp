@@ -152,6 +152,16 @@ TEST(Buckling, HigherModesAndShape) {
   for (double N : r.axial_force) EXPECT_NEAR(N, -1000.0, 1e-9);
 }
 
+TEST(Buckling, SmallSystemsTakeTheDensePath) {
+  // One beam clamped at one end: 6 free dofs, below msa/generalized_eigen's Lanczos threshold (24),
+  // so Eigen's dense solver answers. The one-element cantilever's textbook value is 2.4860 EI/L^2
+  // (exact pi^2/4 = 2.4674): asserted to its 5 digits.
+  const double L = 2.0, P = 1000.0;
+  const double EI = kSteel.E * rectangle_section(0.02, 0.03).Iz;
+  const double l1 = first_factor(column(Ends::kFixedFree, 1, L, P));
+  EXPECT_NEAR(l1 * P * L * L / EI, 2.4860, 5e-5);
+}
+
 TEST(Buckling, LoadFactorScalesAsOneOverLoad) {
   const double l1 = first_factor(column(Ends::kFixedFree, 8, 2.0, 1000.0));
   const double l2 = first_factor(column(Ends::kFixedFree, 8, 2.0, 2500.0));
