@@ -7,6 +7,7 @@ PACKAGES=(
   build-essential cmake pkg-config
   python3                  # scripts/check_layers.py (Debian's /usr/bin/python3)
   libeigen3-dev            # dense linear algebra
+  libspectra-dev           # sparse symmetric eigensolver on Eigen (kinestat buckling: Lanczos on the Cholesky of K)
   libsuitesparse-dev       # CHOLMOD (sparse Cholesky), with METIS ordering
   libopenblas0-pthread     # optimized BLAS under CHOLMOD's supernodal factorization
   libcgal-dev              # Mesh_3 tetrahedral meshing

@@ -64,6 +64,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   // Every subcommand is listed here once.
   for (const CommandRegistrar& r : std::initializer_list<CommandRegistrar>{
            register_solve_command,
+           register_buckling_command,
+           register_modes_command,
            register_fivebar_command,
            register_design_command,
            register_vjm_command,

@@ -27,6 +27,8 @@ const QuantityRange& quantity_range(Quantity q) {
       {"a force per length", "N/m", 1e12, 0.0},
       {"a temperature change", "K", 1e4, 0.0},
       {"a thermal expansion coefficient", "1/K", 1.0, 1e-12},
+      {"a mass", "kg", 1e12, 0.0},
+      {"a rotary inertia", "kg m^2", 1e24, 0.0},
   };
   return kRanges[static_cast<int>(q)];
 }

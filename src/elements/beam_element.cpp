@@ -111,6 +111,64 @@ StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& re
   return out;
 }
 
+Mat12 beam_local_geometric_stiffness(double N, double L, double polar_radius2) {
+  Mat12 K = Mat12::Zero();
+  const double c = N / L;
+  K(0, 0) = K(6, 6) = c;
+  K(0, 6) = K(6, 0) = -c;
+  const double t = c * polar_radius2;
+  K(3, 3) = K(9, 9) = t;
+  K(3, 9) = K(9, 3) = -t;
+  // McGuire-Gallagher-Ziemian eq. (9.18): x-y plane (uy1, rz1, uy2, rz2); the x-z plane has the
+  // coupling signs flipped as in beam_local_stiffness (a positive ry bends towards -z).
+  const double k[4][4] = {{6.0 / 5, L / 10, -6.0 / 5, L / 10},
+                          {L / 10, 2 * L * L / 15, -L / 10, -L * L / 30},
+                          {-6.0 / 5, -L / 10, 6.0 / 5, -L / 10},
+                          {L / 10, -L * L / 30, -L / 10, 2 * L * L / 15}};
+  const int dy[4] = {1, 5, 7, 11}, dz[4] = {2, 4, 8, 10};
+  const double sz[4] = {1, -1, 1, -1};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      K(dy[i], dy[j]) = c * k[i][j];
+      K(dz[i], dz[j]) = c * sz[i] * sz[j] * k[i][j];
+    }
+  return K;
+}
+
+Mat12 beam_local_mass(const Material& mat, const Section& s, double L, bool lumped, bool rotary_inertia) {
+  Mat12 M = Mat12::Zero();
+  const double m = mat.density * s.A * L, mt = mat.density * (s.Iy + s.Iz) * L;
+  if (lumped) {
+    for (int i : {0, 1, 2, 6, 7, 8}) M(i, i) = m / 2;
+    M(3, 3) = M(9, 9) = mt / 2;
+    return M;
+  }
+  M(0, 0) = M(6, 6) = m / 3;
+  M(0, 6) = M(6, 0) = m / 6;
+  M(3, 3) = M(9, 9) = mt / 3;
+  M(3, 9) = M(9, 3) = mt / 6;
+  // Przemieniecki ch. 11: translational (m/420) and rotary (rho I/(30 L)) parts, x-y plane
+  // (uy1, rz1, uy2, rz2); the x-z plane flips the coupling signs as the stiffness does.
+  const double t[4][4] = {{156, 22 * L, 54, -13 * L},
+                          {22 * L, 4 * L * L, 13 * L, -3 * L * L},
+                          {54, 13 * L, 156, -22 * L},
+                          {-13 * L, -3 * L * L, -22 * L, 4 * L * L}};
+  const double r[4][4] = {{36, 3 * L, -36, 3 * L},
+                          {3 * L, 4 * L * L, -3 * L, -L * L},
+                          {-36, -3 * L, 36, -3 * L},
+                          {3 * L, -L * L, -3 * L, 4 * L * L}};
+  const double ry = rotary_inertia ? mat.density * s.Iz / (30 * L) : 0.0;  // bending about z: Iz
+  const double rz = rotary_inertia ? mat.density * s.Iy / (30 * L) : 0.0;
+  const int dy[4] = {1, 5, 7, 11}, dz[4] = {2, 4, 8, 10};
+  const double sz[4] = {1, -1, 1, -1};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      M(dy[i], dy[j]) = m / 420 * t[i][j] + ry * r[i][j];
+      M(dz[i], dz[j]) = sz[i] * sz[j] * (m / 420 * t[i][j] + rz * r[i][j]);
+    }
+  return M;
+}
+
 Mat12 beam_transformation(const Mat3& axes) {
   Mat12 T = Mat12::Zero();
   for (int b = 0; b < 4; ++b) T.block<3, 3>(3 * b, 3 * b) = axes.transpose();

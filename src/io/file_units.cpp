@@ -25,6 +25,8 @@ UnitOfInput FileUnits::of(Quantity q) const {
     case Quantity::kDensity: return {force / (area * area), n_mm ? "t/mm^3" : F + " s^2/" + L + "^4"};
     case Quantity::kAcceleration: return {length, L + "/s^2"};
     case Quantity::kForcePerLength: return {force / length, F + "/" + L};
+    case Quantity::kMass: return {force / length, n_mm ? "t" : F + " s^2/" + L};
+    case Quantity::kMassInertia: return {force * length, n_mm ? "t mm^2" : F + " s^2 " + L};
     default: return {};
   }
 }

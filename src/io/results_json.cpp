@@ -221,6 +221,78 @@ StatusOr<json> solution_to_json(const msa::Structure& s, const msa::Solution& so
   return j;
 }
 
+StatusOr<json> buckling_to_json(const msa::Structure& s, const msa::BucklingResult& r) {
+  if (r.axial_force.size() != s.beams().size())
+    return Status::Invalid(fmt::format("buckling result: {} axial forces for a structure of {} beams",
+                                       r.axial_force.size(), s.beams().size()));
+  json j;
+  j["schema"] = "kinestat-buckling-results";
+  j["schema_version"] = kResultsSchemaVersion;
+  j["units"] = {{"length", "m"}, {"force", "N"}, {"angle", "rad"}, {"load_factor", "-"}};
+  j["model"] = {{"title", s.title()},
+                {"num_nodes", s.nodes().size()},
+                {"num_beams", s.beams().size()},
+                {"num_free_dofs", r.num_free_dofs}};
+  j["status"] = status_json(r.status);
+  j["load_case"] = r.load_case_name;
+  j["axial_forces"] = json::array();
+  int most = -1;  // the most compressed beam
+  for (std::size_t i = 0; i < r.axial_force.size(); ++i) {
+    j["axial_forces"].push_back({{"beam", s.beams()[i].id}, {"N", r.axial_force[i]}});
+    if (most < 0 || r.axial_force[i] < r.axial_force[static_cast<std::size_t>(most)]) most = static_cast<int>(i);
+  }
+  j["modes"] = json::array();
+  for (std::size_t k = 0; k < r.modes.size(); ++k) {
+    const msa::BucklingMode& m = r.modes[k];
+    if (m.shape.size() != s.nodes().size())
+      return Status::Invalid(fmt::format("buckling mode {}: {} node motions for a structure of {} nodes", k + 1,
+                                         m.shape.size(), s.nodes().size()));
+    json mode = {{"mode", k + 1}, {"load_factor", m.load_factor}, {"residual", m.residual}};
+    mode["most_compressed_beam"] = {{"beam", s.beams()[static_cast<std::size_t>(most)].id},
+                                    {"critical_axial_force", m.load_factor * r.axial_force[static_cast<std::size_t>(most)]}};
+    mode["shape"] = json::array();
+    for (std::size_t n = 0; n < m.shape.size(); ++n) mode["shape"].push_back(node_motion(s.nodes()[n].id, m.shape[n]));
+    j["modes"].push_back(std::move(mode));
+  }
+  encode_non_finite(j);
+  return j;
+}
+
+StatusOr<json> modes_to_json(const msa::Structure& s, const msa::ModalResult& r, bool lumped) {
+  json j;
+  j["schema"] = "kinestat-modes-results";
+  j["schema_version"] = kResultsSchemaVersion;
+  j["units"] = {{"length", "m"},         {"mass", "kg"},
+                {"angle", "rad"},        {"frequency", "Hz"},
+                {"angular_frequency", "rad/s"}, {"shape", "m/sqrt(kg) (translation), rad/sqrt(kg) (rotation)"},
+                {"participation", "sqrt(kg)"}};
+  j["model"] = {{"title", s.title()},
+                {"num_nodes", s.nodes().size()},
+                {"num_beams", s.beams().size()},
+                {"num_free_dofs", r.num_free_dofs}};
+  j["status"] = status_json(r.status);
+  j["mass_matrix"] = lumped ? "lumped" : "consistent";
+  j["total_mass"] = to_array(r.total_mass);
+  j["modes"] = json::array();
+  for (std::size_t k = 0; k < r.modes.size(); ++k) {
+    const msa::VibrationMode& m = r.modes[k];
+    if (m.shape.size() != s.nodes().size())
+      return Status::Invalid(fmt::format("mode {}: {} node motions for a structure of {} nodes", k + 1, m.shape.size(),
+                                         s.nodes().size()));
+    json mode = {{"mode", k + 1},
+                 {"frequency", m.frequency},
+                 {"omega", m.omega},
+                 {"residual", m.residual},
+                 {"participation", to_array(m.participation)},
+                 {"effective_mass", to_array(m.effective_mass)}};
+    mode["shape"] = json::array();
+    for (std::size_t n = 0; n < m.shape.size(); ++n) mode["shape"].push_back(node_motion(s.nodes()[n].id, m.shape[n]));
+    j["modes"].push_back(std::move(mode));
+  }
+  encode_non_finite(j);
+  return j;
+}
+
 void write_json(std::ostream& out, const json& j, int indent) {
   // `replace`: a title with invalid UTF-8 must not abort the whole report.
   out << j.dump(indent, ' ', false, json::error_handler_t::replace) << '\n';

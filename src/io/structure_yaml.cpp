@@ -34,7 +34,7 @@ class Parser : public YamlFields {
       fail(root, "file", "the top level is not a map of keys; write 'nodes:', 'beams:', ... at the start of lines");
     check_keys(root, "file",
                {"units", "title", "beam_theory", "nodes", "materials", "sections", "beams", "joints", "rigid_links",
-                "supports", "load_cases", "report"});
+                "supports", "masses", "load_cases", "report"});
     units_ = units(root["units"], true);
     if (const YAML::Node t = root["beam_theory"]; t.IsDefined()) default_theory_ = theory(t, "file", "beam_theory");
     s_.set_source(file());
@@ -47,6 +47,7 @@ class Parser : public YamlFields {
     for_each(root, "joints", false, [&](const YAML::Node& n, int i) { parse_joint(n, i); });
     for_each(root, "rigid_links", false, [&](const YAML::Node& n, int i) { parse_rigid_link(n, i); });
     for_each(root, "supports", false, [&](const YAML::Node& n, int i) { parse_support(n, i); });
+    for_each(root, "masses", false, [&](const YAML::Node& n, int i) { parse_mass(n, i); });
     for_each(root, "load_cases", false, [&](const YAML::Node& n, int i) { parse_load_case(n, i); });
     if (const YAML::Node r = root["report"]; r.IsDefined()) {
       check_map(r, "report", {"node"});
@@ -310,6 +311,25 @@ class Parser : public YamlFields {
     sup.fixed = dof_mask(require(n, item, "fixed"), item);
     if (const YAML::Node f = n["frame"]; f.IsDefined()) sup.frame = frame(f, item);
     s_.add_support(sup);
+  }
+
+  void parse_mass(const YAML::Node& n, int i) {
+    const std::string fallback = fmt::format("mass #{}", i + 1);
+    check_map(n, fallback, {"node", "mass", "inertia"});
+    msa::NodalMass m;
+    m.source = source(n);
+    m.node = node_ref(require(n, fallback, "node"), fallback, "node");
+    const std::string item = fmt::format("mass at node '{}'", s_.nodes()[m.node].id);
+    const YAML::Node mass = n["mass"], inertia = n["inertia"];
+    if (!mass.IsDefined() && !inertia.IsDefined())
+      fail(n, item, "a nodal mass needs 'mass: M' and/or 'inertia: [Ixx, Iyy, Izz]'");
+    if (mass.IsDefined())
+      m.mass = value(mass, item, "mass", Quantity::kMass, units_.of(Quantity::kMass), Sign::kNonNegative);
+    if (inertia.IsDefined()) {
+      m.inertia = vec3(inertia, item, "inertia", Quantity::kMassInertia, units_.of(Quantity::kMassInertia));
+      if (m.inertia.minCoeff() < 0.0) fail(inertia, item, "a rotary inertia must not be negative");
+    }
+    s_.add_mass(m);
   }
 
   void parse_load_case(const YAML::Node& n, int i) {

@@ -132,23 +132,46 @@ Status write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
   return write_vtk_xml(*writer, path);
 }
 
+// The output folder, made if missing, and the files written into it, collected for the .pvd.
+class Collection {
+ public:
+  Collection(std::string dir, std::vector<std::string>* written) : dir_(std::move(dir)), written_(written) {}
+  Status create() const {
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec || !fs::is_directory(dir_))
+      return Status::Invalid(fmt::format("{}: cannot create the output directory ({})", dir_, ec.message()));
+    return Status::Ok();
+  }
+  Status emit(vtkUnstructuredGrid* grid, std::string file, std::string name) {
+    const std::string path = (fs::path(dir_) / file).string();
+    if (Status st = write_grid(grid, path); !st.ok()) return st;
+    if (written_) written_->push_back(path);
+    entries_.push_back({std::move(file), std::move(name)});
+    return Status::Ok();
+  }
+  Status finish(const std::string& basename) {
+    const std::string pvd = (fs::path(dir_) / (basename + ".pvd")).string();
+    if (Status st = write_pvd(pvd, entries_); !st.ok()) return st;
+    if (written_) written_->push_back(pvd);
+    return Status::Ok();
+  }
+
+ private:
+  std::string dir_;
+  std::vector<std::string>* written_;
+  std::vector<PvdEntry> entries_;
+};
+
 }  // namespace
 
 Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::string& dir, const std::string& basename,
                  std::vector<std::string>* written) {
   if (Status st = msa::check_solution_matches(s, sol); !st.ok()) return st;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    return Status::Invalid(fmt::format("{}: cannot create the output directory ({})", dir, ec.message()));
-
-  std::vector<PvdEntry> entries;
-  auto emit = [&](vtkUnstructuredGrid* grid, std::string file, std::string name) -> Status {
-    const std::string path = (fs::path(dir) / file).string();
-    if (Status st = write_grid(grid, path); !st.ok()) return st;
-    if (written) written->push_back(path);
-    entries.push_back({std::move(file), std::move(name)});
-    return Status::Ok();
+  Collection files(dir, written);
+  if (Status st = files.create(); !st.ok()) return st;
+  auto emit = [&](vtkUnstructuredGrid* grid, std::string file, std::string name) {
+    return files.emit(grid, std::move(file), std::move(name));
   };
   for (std::size_t i = 0; i < sol.cases.size(); ++i) {
     auto grid = geometry(s);
@@ -162,10 +185,32 @@ Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::s
     if (Status st = emit(grid, basename + "_undeformed.vtu", "undeformed"); !st.ok()) return st;
   }
 
-  const std::string pvd = (fs::path(dir) / (basename + ".pvd")).string();
-  if (Status st = write_pvd(pvd, entries); !st.ok()) return st;
-  if (written) written->push_back(pvd);
-  return Status::Ok();
+  return files.finish(basename);
+}
+
+Status write_mode_shapes_vtk(const msa::Structure& s, const std::vector<VtkModeShape>& modes, const std::string& dir,
+                             const std::string& basename, const std::string& shape_unit,
+                             std::vector<std::string>* written) {
+  for (const VtkModeShape& m : modes)
+    if (m.shape.size() != s.nodes().size())
+      return Status::Invalid(fmt::format("mode '{}': {} node motions for a structure of {} nodes", m.name,
+                                         m.shape.size(), s.nodes().size()));
+  Collection files(dir, written);
+  if (Status st = files.create(); !st.ok()) return st;
+  for (std::size_t k = 0; k < modes.size(); ++k) {
+    auto grid = geometry(s);
+    // Replaces the geometry's list (this file has no load-case arrays).
+    add_units(*grid, {{"coordinates", "m"}, {"mode_shape", shape_unit}, {"mode_rotation", shape_unit}});
+    grid->GetPointData()->AddArray(node_array("mode_shape", modes[k].shape, false));
+    grid->GetPointData()->AddArray(node_array("mode_rotation", modes[k].shape, true));
+    grid->GetPointData()->SetActiveVectors("mode_shape");
+    double max_translation = 0.0;
+    for (const Vec6& v : modes[k].shape) max_translation = std::max(max_translation, v.head<3>().norm());
+    add_display_hints(*grid, modes[k].name, s.length_scale(), max_translation);
+    if (Status st = files.emit(grid, fmt::format("{}_mode{}.vtu", basename, k + 1), modes[k].name); !st.ok())
+      return st;
+  }
+  return files.finish(basename);
 }
 
 }  // namespace kinestat::io

@@ -189,6 +189,16 @@ Status Structure::validate() const {
       return invalid(r.source, fmt::format("rigid link '{}': its frame is not a rotation", r.id));
     constrained.insert(r.slave);
   }
+  for (const auto& m : masses_) {
+    if (!node_ok(m.node)) return invalid(m.source, "a nodal mass refers to a node that does not exist");
+    const std::string item = fmt::format("mass at node '{}'", nodes_[m.node].id);
+    if (Status st = check_quantity(m.mass, Quantity::kMass, item + ": mass", {}, Sign::kNonNegative); !st.ok())
+      return invalid(m.source, st.message());
+    for (int d = 0; d < 3; ++d)
+      if (Status st = check_quantity(m.inertia(d), Quantity::kMassInertia, item + ": inertia", {}, Sign::kNonNegative);
+          !st.ok())
+        return invalid(m.source, st.message());
+  }
   for (const auto& s : supports_) {
     if (!node_ok(s.node)) return invalid(s.source, "a support refers to a node that does not exist");
     if (!is_rotation(s.frame))

@@ -92,6 +92,8 @@ TEST(CommandConventions, VersionNamesKinestatAndTheNumericalLibraries) {
 TEST(CommandConventions, JsonToStdoutForEveryCommand) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> commands = {
       {{"solve", kModels + "five_bar.yaml"}, "kinestat-msa-results"},
+      {{"buckling", kModels + "euler_column.yaml"}, "kinestat-buckling-results"},
+      {{"modes", kModels + "euler_column.yaml"}, "kinestat-modes-results"},
       {{"fivebar", "--theta1", "64", "--theta2", "75"}, "kinestat-msa-results"},
       {{"vjm", kModels + "orthoglide_puu.yaml", "--wrench", "10,0,0,0,0,0"}, "kinestat-vjm-results"},
       {{"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--strategy", "2", "--search-points", "5"},

@@ -43,6 +43,8 @@ using CommandRegistrar = std::function<void(CLI::App& app, Context& ctx)>;
 
 // The subcommands (one file each: solve_command.cpp, fivebar_command.cpp, ...).
 void register_solve_command(CLI::App& app, Context& ctx);
+void register_buckling_command(CLI::App& app, Context& ctx);
+void register_modes_command(CLI::App& app, Context& ctx);
 void register_fivebar_command(CLI::App& app, Context& ctx);
 void register_design_command(CLI::App& app, Context& ctx);
 void register_vjm_command(CLI::App& app, Context& ctx);

@@ -30,6 +30,8 @@ enum class Quantity {
   kForcePerLength,           // N/m: distributed loads on beams
   kTemperature,              // K: temperature changes
   kThermalExpansion,         // 1/K
+  kMass,                     // kg: nodal masses
+  kMassInertia,              // kg m^2: nodal rotary inertias
 };
 
 struct QuantityRange {

@@ -9,6 +9,8 @@
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/stiffness_indices.hpp"
+#include "kinestat/msa/buckling.hpp"
+#include "kinestat/msa/modes.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/msa/structure.hpp"
 
@@ -23,6 +25,16 @@ inline constexpr int kResultsSchemaVersion = 1;
 // `stations` (msa::all_beam_stations, [case][beam]; null: none) adds each case's "beam_stations".
 StatusOr<nlohmann::json> solution_to_json(const msa::Structure& s, const msa::Solution& sol,
                                           const std::vector<std::vector<msa::BeamStations>>* stations = nullptr);
+
+// A buckling analysis (schema "kinestat-buckling-results", docs/results-json.md): the load case, the
+// beams' axial forces, and per mode the load factor, its residual, the most compressed beam's
+// critical axial force and the shape. kInvalidInput when its arrays do not match the structure.
+StatusOr<nlohmann::json> buckling_to_json(const msa::Structure& s, const msa::BucklingResult& r);
+
+// A modal analysis (schema "kinestat-modes-results", docs/results-json.md): total mass, and per mode
+// the frequency, the participation factors and effective masses along x, y, z and the
+// mass-normalized shape. kInvalidInput when its arrays do not match the structure.
+StatusOr<nlohmann::json> modes_to_json(const msa::Structure& s, const msa::ModalResult& r, bool lumped);
 
 // All fields of StiffnessIndices (eigenvectors as a list, eigenvectors[i] belonging to eigenvalues[i]).
 // May hold non-finite numbers: pass the finished document through encode_non_finite.

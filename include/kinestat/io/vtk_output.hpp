@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/msa/structure.hpp"
 
@@ -24,5 +25,21 @@ inline constexpr int kVtkRigidLink = 3;
 // kInternal when the Solution's sizes do not match the Structure.
 Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::string& dir, const std::string& basename,
                  std::vector<std::string>* written);
+
+// A mode shape to draw (a buckling mode, a vibration mode): per node, global, translations and
+// rotations; `name` is shown by ParaView (e.g. "mode 1: lambda = 2.47").
+struct VtkModeShape {
+  std::string name;
+  std::vector<Vec6> shape;
+};
+
+// Writes DIR/BASENAME_modeK.vtu (K = 1, 2, ...) with the model's geometry and point arrays
+// "mode_shape" (translation, the active vectors) and "mode_rotation", and DIR/BASENAME.pvd with one
+// time step per mode. Shapes are dimensionless ratios (their scale is the caller's normalization,
+// said in its "units" field data). Paths appended to `written`; kInvalidInput when a file cannot be
+// written or a shape's node count is not the structure's.
+Status write_mode_shapes_vtk(const msa::Structure& s, const std::vector<VtkModeShape>& modes, const std::string& dir,
+                             const std::string& basename, const std::string& shape_unit,
+                             std::vector<std::string>* written);
 
 }  // namespace kinestat::io

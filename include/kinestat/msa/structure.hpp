@@ -84,6 +84,15 @@ struct PrescribedDisplacement {
   std::string source{};
 };
 
+// A point mass at a node (kinestat modes): `mass` on its translations, `inertia` its rotary inertias
+// about axes through the node parallel to global x, y, z.
+struct NodalMass {
+  int node = -1;
+  double mass = 0.0;             // kg
+  Vec3 inertia = Vec3::Zero();   // Ixx Iyy Izz, kg m^2
+  std::string source{};
+};
+
 enum class MemberLoadType { kUniform, kTrapezoidal, kPoint, kTemperature };
 
 // A load on the span of a beam (elements/member_loads.hpp gives its fixed-end forces). Vectors are
@@ -124,6 +133,7 @@ class Structure {
   int add_joint(Joint j);
   int add_rigid_link(RigidLink r);
   void add_support(Support s);
+  void add_mass(NodalMass m) { masses_.push_back(std::move(m)); }
   int add_load_case(LoadCase lc);
   void set_report_node(int node) { report_node_ = node; }
   void set_title(std::string t) { title_ = std::move(t); }
@@ -145,6 +155,7 @@ class Structure {
   const std::vector<Joint>& joints() const { return joints_; }
   const std::vector<RigidLink>& rigid_links() const { return rigid_links_; }
   const std::vector<Support>& supports() const { return supports_; }
+  const std::vector<NodalMass>& masses() const { return masses_; }
   const std::vector<LoadCase>& load_cases() const { return load_cases_; }
   std::optional<int> report_node() const { return report_node_; }
 
@@ -171,6 +182,7 @@ class Structure {
   std::vector<Joint> joints_;
   std::vector<RigidLink> rigid_links_;
   std::vector<Support> supports_;
+  std::vector<NodalMass> masses_;
   std::vector<LoadCase> load_cases_;
   std::optional<int> report_node_;
 };

@@ -1,0 +1,115 @@
+// kinestat modes FILE [--count N] [--lumped] [--vtk DIR] [--json FILE|-] [--quiet]
+#include <filesystem>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "cli/command_output.hpp"
+#include "kinestat/io/results_json.hpp"
+#include "kinestat/io/structure_yaml.hpp"
+#include "kinestat/io/vtk_output.hpp"
+#include "kinestat/msa/modes.hpp"
+
+namespace kinestat::cli {
+namespace {
+
+constexpr std::size_t kMaxPrintedNodes = 50;  // larger models: --json or --vtk
+
+std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lumped) {
+  std::string t = fmt::format("Natural frequencies (K phi = omega^2 M phi, {} beam masses, {} free dofs)\n",
+                              lumped ? "lumped" : "consistent", r.num_free_dofs);
+  t += fmt::format("Total mass: {:.6g} kg (x), {:.6g} kg (y), {:.6g} kg (z)\n", r.total_mass(0), r.total_mass(1),
+                   r.total_mass(2));
+  t += fmt::format("  {:>4}  {:>14}  {:>14}  {:>26}  {:>9}\n", "mode", "f (Hz)", "omega (rad/s)",
+                   "effective mass x, y, z (%)", "residual");
+  for (std::size_t k = 0; k < r.modes.size(); ++k) {
+    const auto& m = r.modes[k];
+    Vec3 pct = Vec3::Zero();
+    for (int d = 0; d < 3; ++d) pct(d) = r.total_mass(d) > 0 ? 100 * m.effective_mass(d) / r.total_mass(d) : 0.0;
+    t += fmt::format("  {:>4}  {:>14.8g}  {:>14.8g}  {:>8.3f} {:>8.3f} {:>8.3f}  {:>9.1e}\n", k + 1, m.frequency, m.omega,
+                     pct(0), pct(1), pct(2), m.residual);
+  }
+  t += "Mode shapes (mass-normalized, phi' M phi = 1: translations m/sqrt(kg), rotations rad/sqrt(kg)):\n";
+  for (std::size_t k = 0; k < r.modes.size(); ++k) {
+    t += fmt::format("  mode {} (f = {:.8g} Hz)\n", k + 1, r.modes[k].frequency);
+    if (s.nodes().size() > kMaxPrintedNodes) {
+      t += fmt::format("    ({} nodes: see --json or --vtk)\n", s.nodes().size());
+      continue;
+    }
+    t += fmt::format("    {:>10} {:>11} {:>11} {:>11} {:>11} {:>11} {:>11}\n", "node", "ux", "uy", "uz", "rx", "ry", "rz");
+    for (std::size_t n = 0; n < s.nodes().size(); ++n) {
+      const Vec6& v = r.modes[k].shape[n];
+      t += fmt::format("    {:>10} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e}\n", s.nodes()[n].id, v(0),
+                       v(1), v(2), v(3), v(4), v(5));
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+void register_modes_command(CLI::App& app, Context& ctx) {
+  struct Args {
+    std::string file, vtk_dir;
+    int count = 6;
+    bool lumped = false;
+    OutputOptions out;
+  };
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand(
+      "modes", "natural frequencies and mode shapes of a YAML structure file (docs/stability-and-modes.md; materials "
+               "need a density); report, JSON and VTK in SI units");
+  cmd->add_option("file", args->file, "structure file (.yaml)")->required();
+  cmd->add_option("--count", args->count, "how many of the lowest frequencies (1 to 100, default 6)")
+      ->check(CLI::Range(1, 100));
+  cmd->add_flag("--lumped", args->lumped, "lumped beam masses instead of consistent ones");
+  cmd->add_option("--vtk", args->vtk_dir, "write ParaView files (.vtu per mode + .pvd) into this folder");
+  add_output_options(*cmd, args->out, "kinestat-modes-results");
+  cmd->callback([args, &ctx] {
+    auto s = io::read_structure_yaml(args->file);
+    if (!s.ok()) {
+      ctx.exit_code = report_failure(ctx, "modes", s.status());
+      return;
+    }
+    msa::ModalOptions opt;
+    opt.count = args->count;
+    opt.lumped = args->lumped;
+    const msa::ModalResult r = msa::modal_analysis(*s, opt);
+    if (!r.status.ok()) {
+      ctx.exit_code = report_failure(ctx, "modes", r.status);
+      return;
+    }
+    Output out(ctx, args->out);
+    out.report() << report(*s, r, args->lumped);
+    if (out.json_wanted()) {
+      auto j = io::modes_to_json(*s, r, args->lumped);
+      if (!j.ok()) {
+        ctx.exit_code = report_failure(ctx, "modes", j.status());
+        return;
+      }
+      if (Status st = out.write_json(*j); !st.ok()) {
+        ctx.exit_code = report_failure(ctx, "modes", st);
+        return;
+      }
+      if (args->out.json != "-") out.report() << "JSON results: " << args->out.json << "\n";
+    }
+    if (!args->vtk_dir.empty()) {
+      std::vector<io::VtkModeShape> modes;
+      for (std::size_t k = 0; k < r.modes.size(); ++k)
+        modes.push_back({fmt::format("mode {}: f = {:.6g} Hz", k + 1, r.modes[k].frequency), r.modes[k].shape});
+      std::vector<std::string> written;
+      if (Status st = io::write_mode_shapes_vtk(*s, modes, args->vtk_dir,
+                                                std::filesystem::path(args->file).stem().string() + "_modes",
+                                                "m/sqrt(kg), rad/sqrt(kg) (mass-normalized)", &written);
+          !st.ok()) {
+        ctx.exit_code = report_failure(ctx, "modes", st);
+        return;
+      }
+      for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
+    }
+    ctx.exit_code = out.finish("modes", r.status);
+  });
+}
+
+}  // namespace kinestat::cli

@@ -1,0 +1,82 @@
+#include "msa/generalized_eigen.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <stdexcept>
+
+#include <Eigen/Eigenvalues>
+#include <Spectra/SymGEigsSolver.h>
+#include <fmt/format.h>
+
+namespace kinestat::msa {
+namespace {
+
+// Spectra's matrix operations (the interface of its SparseSymMatProd and SparseRegularInverse).
+// y = A x.
+struct Product {
+  using Scalar = double;
+  const solver::SparseMatrix& A;
+  Eigen::Index rows() const { return A.rows(); }
+  Eigen::Index cols() const { return A.cols(); }
+  void perform_op(const double* x_in, double* y_out) const {
+    Eigen::Map<VecX>(y_out, A.rows()).noalias() = A * Eigen::Map<const VecX>(x_in, A.cols());
+  }
+};
+
+// B = K (reduced, positive definite): y = B x, and y = B^-1 x through kinestat's sparse Cholesky
+// (CHOLMOD, or the caller's backend), factorized once.
+struct StiffnessInverse {
+  using Scalar = double;
+  const solver::SparseMatrix& K;
+  const solver::SparseCholesky& chol;
+  Eigen::Index rows() const { return K.rows(); }
+  Eigen::Index cols() const { return K.cols(); }
+  void perform_op(const double* x_in, double* y_out) const {
+    Eigen::Map<VecX>(y_out, K.rows()).noalias() = K * Eigen::Map<const VecX>(x_in, K.cols());
+  }
+  void solve(const double* x_in, double* y_out) const {
+    MatX X;
+    if (Status st = chol.Solve(Eigen::Map<const VecX>(x_in, K.rows()), &X); !st.ok())
+      throw std::runtime_error(st.message());  // caught around compute() below
+    Eigen::Map<VecX>(y_out, K.rows()) = X.col(0);
+  }
+};
+
+// Below this many free dofs the pencil is solved densely (Eigen): Lanczos needs nev < ncv <= n and
+// would build the full basis anyway.
+constexpr int kDenseBelow = 24;
+
+}  // namespace
+
+StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const solver::SparseMatrix& A,
+                                                               const solver::SparseMatrix& Kr,
+                                                               const solver::SparseCholesky& chol, int count) {
+  const int n = static_cast<int>(Kr.rows());
+  if (n < kDenseBelow) {
+    const MatX Ad(A), Kd(Kr);
+    Eigen::GeneralizedSelfAdjointEigenSolver<MatX> ges(Ad, Kd);
+    if (ges.info() != Eigen::Success) return Status::Internal("the dense generalized eigensolver failed");
+    const int m = std::min(count, n);
+    return std::pair<VecX, MatX>{ges.eigenvalues().tail(m).reverse(), ges.eigenvectors().rightCols(m).rowwise().reverse()};
+  }
+  Product op{A};
+  StiffnessInverse bop{Kr, chol};
+  const int nev = std::min(count, n - 1);
+  const int ncv = std::min(n, std::max(2 * nev + 1, 20));
+  try {
+    Spectra::SymGEigsSolver<Product, StiffnessInverse, Spectra::GEigsMode::RegularInverse> eig(op, bop, nev,
+                                                                                                         ncv);
+    eig.init();
+    eig.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
+    if (eig.info() != Spectra::CompInfo::Successful)
+      return Status::NotConverged(fmt::format("the Lanczos eigensolver (Spectra) did not converge to {} eigenvalues in "
+                                              "1000 restarts; ask for fewer (--count)",
+                                              nev));
+    return std::pair<VecX, MatX>{eig.eigenvalues(), eig.eigenvectors()};
+  } catch (const std::exception& e) {
+    return Status::Internal(fmt::format("the Lanczos eigensolver (Spectra) failed: {}", e.what()));
+  }
+}
+
+
+}  // namespace kinestat::msa

@@ -1,0 +1,27 @@
+// The largest eigenvalues of a symmetric pencil A q = mu K q with K the (positive definite) reduced
+// stiffness: buckling (A = -K_G, mu = 1/lambda) and vibration (A = M, mu = 1/omega^2). Spectra's
+// Lanczos solver in regular-inverse mode (SymGEigsSolver<..., GEigsMode::RegularInverse>) on
+// kinestat's sparse Cholesky of K; below 24 unknowns, Eigen's dense generalized solver.
+//
+// Why this form: the wanted eigenvalues (the smallest positive lambda, the lowest omega^2) are the
+// largest mu, at the end of a spectrum that gathers at 0 (the stiff motions), where Lanczos converges
+// fastest; K is already factorized by the static solve's checks, and no shift has to be guessed (a
+// shift-invert on K - sigma K_G needs sigma below the unknown lambda_1 and an indefinite factor).
+#pragma once
+
+#include <utility>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+#include "kinestat/solver/sparse_cholesky.hpp"
+
+namespace kinestat::msa {
+
+// The `count` largest mu (fewer when the system has fewer unknowns), descending, and their vectors
+// as columns, K-orthonormal (q' K q = 1). `chol` holds K's factorization. kNotConverged when Lanczos
+// does not converge, kInternal when it fails.
+StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const solver::SparseMatrix& A,
+                                                               const solver::SparseMatrix& Kr,
+                                                               const solver::SparseCholesky& chol, int count);
+
+}  // namespace kinestat::msa

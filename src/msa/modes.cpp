@@ -1,0 +1,135 @@
+#include "kinestat/msa/modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "kinestat/core/input_checks.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
+#include "msa/assembly.hpp"
+#include "msa/dof_map.hpp"
+#include "msa/generalized_eigen.hpp"
+
+namespace kinestat::msa {
+
+ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
+  ModalResult res;
+  if (opt.count < 1) {
+    res.status = Status::Invalid(fmt::format("count {}: ask for at least one mode", opt.count));
+    return res;
+  }
+  // Without nodal masses every beam needs a density (a forgotten one would give a massless beam and
+  // wrong frequencies without a word); with them, a beam without density is massless on purpose.
+  const bool nodal_masses = !s.masses().empty();
+  for (const Beam& b : s.beams()) {
+    if (!nodal_masses && b.material >= 0 && b.material < static_cast<int>(s.materials().size()) &&
+        !(s.materials()[b.material].density > 0.0)) {
+      res.status = Status::Invalid(at_source(
+          b.source, fmt::format("beam '{}': its material '{}' has no density, so the beam has no mass; give the "
+                                "material a density (kg/m^3) for modal analysis, or give the structure nodal 'masses:'",
+                                b.id, s.materials()[b.material].id)));
+      return res;
+    }
+    // The mass of a released dof would have to be condensed with it (an approximation): refused.
+    if (std::any_of(b.releases.begin(), b.releases.end(), [](bool r) { return r; })) {
+      res.status = Status::Invalid(at_source(
+          b.source, fmt::format("beam '{}' has end releases, which modal analysis does not support (its mass is not "
+                                "condensed); model the hinge with a joint of zero stiffness in the released direction",
+                                b.id)));
+      return res;
+    }
+  }
+  if (s.beams().empty() && !nodal_masses) {
+    res.status = Status::Invalid(at_source(s.source(), "the structure has no beams and no nodal masses, so no mass: "
+                                                       "nothing vibrates; add 'masses:' or beams with a density"));
+    return res;
+  }
+  res.linear = solve(s, opt.solve);
+  if (!res.linear.status.ok()) {
+    res.status = res.linear.status;
+    return res;
+  }
+  auto map = build_dof_map(s);
+  auto K = assemble_stiffness(s);
+  if (!map.ok() || !K.ok()) {  // cannot happen: solve() built both
+    res.status = Status::Internal("modes: the assembly failed after the static solve succeeded");
+    return res;
+  }
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(144 * s.beams().size());
+  for (const Beam& b : s.beams()) {
+    const Mat12 T = beam_transformation(s.beam_axes(b));
+    const Mat12 me = T.transpose() *
+                     beam_local_mass(s.materials()[b.material], s.sections()[b.section], s.beam_length(b), opt.lumped,
+                                     opt.rotary_inertia) *
+                     T;
+    const int base[2] = {6 * b.node1, 6 * b.node2};
+    for (int a = 0; a < 2; ++a)
+      for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 6; ++k)
+          for (int l = 0; l < 6; ++l) trip.emplace_back(base[a] + k, base[c] + l, me(6 * a + k, 6 * c + l));
+  }
+  for (const NodalMass& nm : s.masses())
+    for (int d = 0; d < 3; ++d) {
+      trip.emplace_back(6 * nm.node + d, 6 * nm.node + d, nm.mass);
+      trip.emplace_back(6 * nm.node + 3 + d, 6 * nm.node + 3 + d, nm.inertia(d));
+    }
+  solver::SparseMatrix M(s.num_dofs(), s.num_dofs());
+  M.setFromTriplets(trip.begin(), trip.end());
+  const solver::SparseMatrix& C = map->C;
+  const solver::SparseMatrix Kr = C.transpose() * *K * C;
+  const solver::SparseMatrix Mr = C.transpose() * M * C;
+  res.num_free_dofs = static_cast<int>(Kr.rows());
+
+  const int nn = static_cast<int>(s.nodes().size());
+  MatX R = MatX::Zero(s.num_dofs(), 3);  // rigid unit translations along x, y, z
+  for (int i = 0; i < nn; ++i)
+    for (int d = 0; d < 3; ++d) R(6 * i + d, d) = 1.0;
+  const MatX MR = M * R;
+  for (int d = 0; d < 3; ++d) res.total_mass(d) = R.col(d).dot(MR.col(d));
+
+  // M q = mu K q, mu = 1/omega^2: the lowest frequencies are the largest mu (msa/generalized_eigen.hpp).
+  auto chol = solver::make_sparse_cholesky(opt.solve.cholesky);
+  if (Status st = chol->Factorize(Kr, nullptr); !st.ok()) {
+    res.status = st;
+    return res;
+  }
+  auto eig = largest_generalized_eigenpairs(Mr, Kr, *chol, opt.count);
+  if (!eig.ok()) {
+    res.status = eig.status();
+    return res;
+  }
+  const auto& [mu, Q] = *eig;
+  for (int k = 0; k < mu.size(); ++k) {
+    // mu = 0: a massless motion (lumped masses leave the bending rotations without mass): no frequency.
+    if (!(mu(k) > 1e-12 * mu(0))) continue;
+    VibrationMode m;
+    m.omega = 1.0 / std::sqrt(mu(k));
+    m.frequency = m.omega / (2 * std::numbers::pi);
+    VecX q = Q.col(k);
+    q /= std::sqrt(q.dot(Mr * q));  // mass-normalized
+    const VecX Kq = Kr * q;
+    m.residual = (Kq - m.omega * m.omega * (Mr * q)).norm() / Kq.norm();
+    const VecX u = C * q;
+    // The sign is arbitrary: the largest translation component is made positive.
+    double largest = 0.0;
+    for (int i = 0; i < nn; ++i)
+      for (int d = 0; d < 3; ++d)
+        if (std::abs(u(6 * i + d)) > std::abs(largest)) largest = u(6 * i + d);
+    const double sign = largest < 0 ? -1.0 : 1.0;
+    for (int i = 0; i < nn; ++i) m.shape.push_back(sign * u.segment<6>(6 * i));
+    m.participation = sign * (MR.transpose() * u);
+    m.effective_mass = m.participation.cwiseAbs2();
+    res.modes.push_back(std::move(m));
+  }
+  std::sort(res.modes.begin(), res.modes.end(),
+            [](const VibrationMode& a, const VibrationMode& b) { return a.omega < b.omega; });
+  if (res.modes.empty())
+    res.status = Status::Invalid(at_source(s.source(), "no mode with mass was found; check the densities"));
+  return res;
+}
+
+}  // namespace kinestat::msa
