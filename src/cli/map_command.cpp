@@ -2,12 +2,13 @@
 // kinestat map MODEL.yaml --box x0:x1,y0:y1,z0:z1 --step MM [--load D | --wrench W]
 // A workspace stiffness map (mechanisms/workspace_map.hpp; docs/maps.md): every point of a grid,
 // written as VTI (ParaView), JSON and PNG, with a short summary on stdout.
+#include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <ostream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -214,10 +215,17 @@ int run_map(MapArgs& a, Context& ctx) {
   double points = 1.0;
   for (const MapRange& r : setup->ranges) points *= map_axis_points(r, *a.step * kMm);
   const std::string region = ranges_text(setup->ranges);
-  if (points > static_cast<double>(a.max_points))
-    return fail(Status::Invalid(fmt::format("--step {:g} mm over {} gives {:.3g} points, more than --max-points {}; "
-                                            "use a larger --step or a smaller {}",
-                                            *a.step, region, points, a.max_points, setup->range_option)));
+  if (points > static_cast<double>(a.max_points)) {
+    // The time it would take, at the sweep kernels' rates per thread (benchmarks/README.md: about
+    // 2e5 postures/s unloaded, 1e4 loaded), so that the limit reads as a cost, not a rule.
+    const int threads = a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const double minutes = points / ((setup->with_load ? 1e4 : 2e5) * threads) / 60.0;
+    return fail(Status::Invalid(fmt::format("--step {:g} mm over {} gives {:.3g} points (about {:.2g} min on {} "
+                                            "thread{}), more than --max-points {}; use a larger --step or a smaller "
+                                            "{}, or raise --max-points",
+                                            *a.step, region, points, minutes, threads, threads > 1 ? "s" : "",
+                                            a.max_points, setup->range_option)));
+  }
   auto grid = make_map_grid(setup->ranges, *a.step * kMm, a.max_points);
   if (!grid.ok())
     return fail(Status::Invalid(fmt::format("{} with --step {:g} mm: {}", setup->range_option, *a.step,

@@ -18,15 +18,15 @@ StatusOr<RichardsonEstimate> richardson_estimate(const std::vector<double>& h, c
   const double h1 = h[n - 3], h2 = h[n - 2], h3 = h[n - 1];
   const double d12 = f[n - 3] - f[n - 2], d23 = f[n - 2] - f[n - 1];
   if (!(d12 * d23 > 0.0))
-    return Status(StatusCode::kNotConverged,
-                  "Richardson estimate: the differences between meshes change sign or vanish; refine further");
+    return Status::NotConverged(
+        "Richardson estimate: the differences between meshes change sign or vanish; refine further");
   // Solve (h1^p - h2^p) / (h2^p - h3^p) = d12 / d23 for p by bisection on log(ratio), which
   // increases monotonically with p.
   const double target = std::log(d12 / d23);
   auto g = [&](double p) { return std::log((std::pow(h1, p) - std::pow(h2, p)) / (std::pow(h2, p) - std::pow(h3, p))); };
   double lo = 1e-3, hi = 20.0;
   if (target <= g(lo) || target >= g(hi))
-    return Status(StatusCode::kNotConverged, fmt::format("Richardson estimate: no order in [{:g}, {:g}] fits", lo, hi));
+    return Status::NotConverged(fmt::format("Richardson estimate: no order in [{:g}, {:g}] fits", lo, hi));
   for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
     (g(mid) < target ? lo : hi) = mid;

@@ -225,11 +225,10 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
                    out.iterations, out.evaluations, worst, worst_label);
   out.report = std::move(r);
   if (!(worst <= tolerance))
-    return Status(StatusCode::kNotConverged,
-                  fmt::format("identification did not reach the tolerance {:g}: from this start, no values of the "
-                              "inputs make the model meet these targets (inconsistent targets, or a start too far "
-                              "away); the closest model found:\n{}",
-                              tolerance, out.report));
+    return Status::NotConverged(fmt::format("identification did not reach the tolerance {:g}: from this start, no "
+                                            "values of the inputs make the model meet these targets (inconsistent "
+                                            "targets, or a start too far away); the closest model found:\n{}",
+                                            tolerance, out.report));
   return out;
 }
 

@@ -157,11 +157,10 @@ StatusOr<ChainState> chain_equilibrium(const Chain& chain, const Vec6& displacem
   rep.static_residual = lin.stat;
   s.pose = lin.J.pose;
   if (!rep.converged)
-    return Status(StatusCode::kNotConverged,
-                  fmt::format("chain '{}': the loaded equilibrium was not found ({}). The load may exceed the "
-                              "buckling load, or the displacement asks for motion along a direction the chain "
-                              "cannot move in",
-                              chain.name(), rep.summary()));
+    return Status::NotConverged(fmt::format("chain '{}': the loaded equilibrium was not found ({}). The load may "
+                                            "exceed the buckling load, or the displacement asks for motion along a "
+                                            "direction the chain cannot move in",
+                                            chain.name(), rep.summary()));
   return s;
 }
 
@@ -303,10 +302,10 @@ StatusOr<PlatformState> platform_equilibrium_under_wrench(const std::vector<Chai
     }
     if (it >= opt.max_newton_iterations) {
       P->report.converged = false;
-      return Status(StatusCode::kNotConverged,
-                    fmt::format("the platform equilibrium under the wrench did not converge in {} iterations "
-                                "(relative wrench residual {:.2e}); the load may exceed the buckling load",
-                                it, res));
+      return Status::NotConverged(fmt::format("the platform equilibrium under the wrench did not converge in {} "
+                                              "iterations (relative wrench residual {:.2e}); the load may exceed the "
+                                              "buckling load",
+                                              it, res));
     }
     // Minimum norm along lost directions.
     const Vec6 dt = Eigen::CompleteOrthogonalDecomposition<Mat6>(Kt).solve(R).cwiseQuotient(w);

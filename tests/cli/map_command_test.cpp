@@ -144,6 +144,7 @@ TEST(MapCommand, BadOptionsExitTwoNamingTheOption) {
       {{"map", "fivebar", "--load", "1,2"}, "--load"},
       {{"map", "fivebar", "--min-stiffness", "-1"}, "--min-stiffness"},
       {{"map", "fivebar", "--step", "0.01"}, "--max-points"},
+      {{"map", "fivebar", "--step", "0.01", "--threads", "2"}, "min on 2 threads), more than --max-points"},
       {{"map", "fivebar", "--box", "0:1,0:1,0:1"}, "--box"},
       {{"map", "fivebar", "--wrench", "1,0,0,0,0,0"}, "--wrench"},
       {{"map", kPuu, "--step", "10"}, "--box"},
