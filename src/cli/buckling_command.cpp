@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "cli/command_output.hpp"
+#include "cli/msa_output.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/structure_yaml.hpp"
 #include "kinestat/io/vtk_output.hpp"
@@ -99,35 +99,13 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
       ctx.exit_code = report_failure(ctx, "buckling", r.status);
       return;
     }
-    Output out(ctx, args->out);
-    out.report() << report(*s, r);
-    if (out.json_wanted()) {
-      auto j = io::buckling_to_json(*s, r);
-      if (!j.ok()) {
-        ctx.exit_code = report_failure(ctx, "buckling", j.status());
-        return;
-      }
-      if (Status st = out.write_json(*j); !st.ok()) {
-        ctx.exit_code = report_failure(ctx, "buckling", st);
-        return;
-      }
-      if (args->out.json != "-") out.report() << "JSON results: " << args->out.json << "\n";
-    }
-    if (!args->vtk_dir.empty()) {
-      std::vector<io::VtkModeShape> modes;
-      for (std::size_t k = 0; k < r.modes.size(); ++k)
-        modes.push_back({fmt::format("buckling mode {}: lambda = {:.6g}", k + 1, r.modes[k].load_factor), r.modes[k].shape});
-      std::vector<std::string> written;
-      if (Status st = io::write_mode_shapes_vtk(*s, modes, args->vtk_dir,
-                                                std::filesystem::path(args->file).stem().string() + "_buckling",
-                                                "m (scaled: largest translation 1 m), rad", &written);
-          !st.ok()) {
-        ctx.exit_code = report_failure(ctx, "buckling", st);
-        return;
-      }
-      for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
-    }
-    ctx.exit_code = out.finish("buckling", r.status);
+    std::vector<io::VtkModeShape> modes;
+    for (std::size_t k = 0; k < r.modes.size(); ++k)
+      modes.push_back(
+          {fmt::format("buckling mode {}: lambda = {:.6g}", k + 1, r.modes[k].load_factor), r.modes[k].shape});
+    ctx.exit_code = finish_mode_run("buckling", *s, report(*s, r), [&] { return io::buckling_to_json(*s, r); }, modes,
+                                    args->vtk_dir, std::filesystem::path(args->file).stem().string() + "_buckling",
+                                    "m (scaled: largest translation 1 m), rad", args->out, r.status, ctx);
   });
 }
 

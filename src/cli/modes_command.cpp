@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "cli/command_output.hpp"
+#include "cli/msa_output.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/structure_yaml.hpp"
 #include "kinestat/io/vtk_output.hpp"
@@ -80,35 +80,13 @@ void register_modes_command(CLI::App& app, Context& ctx) {
       ctx.exit_code = report_failure(ctx, "modes", r.status);
       return;
     }
-    Output out(ctx, args->out);
-    out.report() << report(*s, r, args->lumped);
-    if (out.json_wanted()) {
-      auto j = io::modes_to_json(*s, r, args->lumped);
-      if (!j.ok()) {
-        ctx.exit_code = report_failure(ctx, "modes", j.status());
-        return;
-      }
-      if (Status st = out.write_json(*j); !st.ok()) {
-        ctx.exit_code = report_failure(ctx, "modes", st);
-        return;
-      }
-      if (args->out.json != "-") out.report() << "JSON results: " << args->out.json << "\n";
-    }
-    if (!args->vtk_dir.empty()) {
-      std::vector<io::VtkModeShape> modes;
-      for (std::size_t k = 0; k < r.modes.size(); ++k)
-        modes.push_back({fmt::format("mode {}: f = {:.6g} Hz", k + 1, r.modes[k].frequency), r.modes[k].shape});
-      std::vector<std::string> written;
-      if (Status st = io::write_mode_shapes_vtk(*s, modes, args->vtk_dir,
-                                                std::filesystem::path(args->file).stem().string() + "_modes",
-                                                "m/sqrt(kg), rad/sqrt(kg) (mass-normalized)", &written);
-          !st.ok()) {
-        ctx.exit_code = report_failure(ctx, "modes", st);
-        return;
-      }
-      for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
-    }
-    ctx.exit_code = out.finish("modes", r.status);
+    std::vector<io::VtkModeShape> modes;
+    for (std::size_t k = 0; k < r.modes.size(); ++k)
+      modes.push_back({fmt::format("mode {}: f = {:.6g} Hz", k + 1, r.modes[k].frequency), r.modes[k].shape});
+    ctx.exit_code = finish_mode_run("modes", *s, report(*s, r, args->lumped),
+                                    [&] { return io::modes_to_json(*s, r, args->lumped); }, modes, args->vtk_dir,
+                                    std::filesystem::path(args->file).stem().string() + "_modes",
+                                    "m/sqrt(kg), rad/sqrt(kg) (mass-normalized)", args->out, r.status, ctx);
   });
 }
 

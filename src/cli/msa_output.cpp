@@ -45,4 +45,25 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
   return out.finish(command, sol.status);
 }
 
+int finish_mode_run(const std::string& command, const msa::Structure& s, const std::string& report,
+                    const std::function<StatusOr<nlohmann::json>()>& make_json,
+                    const std::vector<io::VtkModeShape>& modes, const std::string& vtk_dir, const std::string& basename,
+                    const std::string& shape_units, const OutputOptions& o, const Status& status, Context& ctx) {
+  Output out(ctx, o);
+  out.report() << report;
+  if (out.json_wanted()) {
+    StatusOr<nlohmann::json> j = make_json();
+    if (!j.ok()) return report_failure(ctx, command, j.status());
+    if (Status st = out.write_json(*j); !st.ok()) return report_failure(ctx, command, st);
+    if (o.json != "-") out.report() << "JSON results: " << o.json << "\n";
+  }
+  if (!vtk_dir.empty()) {
+    std::vector<std::string> written;
+    if (Status st = io::write_mode_shapes_vtk(s, modes, vtk_dir, basename, shape_units, &written); !st.ok())
+      return report_failure(ctx, command, st);
+    for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
+  }
+  return out.finish(command, status);
+}
+
 }  // namespace kinestat::cli

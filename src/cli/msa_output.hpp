@@ -1,12 +1,16 @@
 // What every MSA-based command does after solving: print the report, write JSON and VTK, and
-// turn the solution's status into the exit code. Shared by `solve` and `fivebar`.
+// turn the solution's status into the exit code. Shared by `solve` and `fivebar`; the end of the
+// eigenvalue commands (`buckling`, `modes`) too.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/command_output.hpp"
+#include "kinestat/io/vtk_output.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::cli {
@@ -26,5 +30,13 @@ void add_msa_output_options(CLI::App& cmd, MsaOutputOptions& o);
 // `extra` holds fields added to the JSON document (the five-bar's posture).
 int finish_msa_run(const std::string& command, const msa::Structure& s, const msa::Solution& sol,
                    const MsaOutputOptions& o, Context& ctx, const nlohmann::json& extra = nlohmann::json::object());
+
+// The end of `buckling` and `modes`: the report, the JSON (`make_json` is called only when JSON is
+// wanted) and, with `vtk_dir`, one .vtu per mode shape and a .pvd named BASENAME (the shapes in
+// `shape_units`). Returns the exit status for `status`, or the first writing failure's.
+int finish_mode_run(const std::string& command, const msa::Structure& s, const std::string& report,
+                    const std::function<StatusOr<nlohmann::json>()>& make_json,
+                    const std::vector<io::VtkModeShape>& modes, const std::string& vtk_dir, const std::string& basename,
+                    const std::string& shape_units, const OutputOptions& o, const Status& status, Context& ctx);
 
 }  // namespace kinestat::cli
