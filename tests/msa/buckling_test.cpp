@@ -7,15 +7,14 @@
 #include <numbers>
 #include <string>
 
-#include <fmt/format.h>
 
 #include "kinestat/elements/section.hpp"
 #include "kinestat/msa/buckling.hpp"
+#include "beam_line.hpp"
 
 namespace kinestat::msa {
 namespace {
 
-const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
 constexpr double kPi = std::numbers::pi;
 
 enum class Ends { kPinnedPinned, kFixedFree, kFixedPinned, kFixedFixed };
@@ -23,19 +22,7 @@ enum class Ends { kPinnedPinned, kFixedFree, kFixedPinned, kFixedFixed };
 // A column along x from node 0 (x = 0) to node n (x = L) in n beams, compressed by P at node n.
 // The 20 x 30 mm rectangle buckles about local z first (Iz < Iy = 2.25 Iz): in the x-y plane.
 Structure column(Ends ends, int n, double L = 2.0, double P = 1000.0) {
-  Structure s;
-  const int m = s.add_material(kSteel);
-  const int c = s.add_section(rectangle_section(0.02, 0.03));
-  for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), Vec3(L * i / n, 0, 0));
-  for (int i = 0; i < n; ++i) {
-    Beam b;
-    b.id = fmt::format("b{}", i);
-    b.node1 = i;
-    b.node2 = i + 1;
-    b.material = m;
-    b.section = c;
-    s.add_beam(b);
-  }
+  Structure s = straight(L, n, rectangle_section(0.02, 0.03));
   const DofMask pinned{true, true, true, true, false, false};  // with the twist held
   const DofMask fixed = kAllDofs;
   const DofMask roller{false, true, true, false, false, false};   // free along the axis only

@@ -10,15 +10,14 @@
 #include <numbers>
 #include <string>
 
-#include <fmt/format.h>
 
 #include "kinestat/elements/section.hpp"
 #include "kinestat/msa/modes.hpp"
+#include "beam_line.hpp"
 
 namespace kinestat::msa {
 namespace {
 
-const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
 constexpr double kPi = std::numbers::pi;
 // Cantilever: the first root of cos(bL) cosh(bL) = -1 (Blevins, Formulas for Natural Frequency and
 // Mode Shape, table 8-1).
@@ -27,20 +26,7 @@ constexpr double kCantileverBetaL = 1.8751040687119611;
 // A beam along x from node 0 to node n (L = 2 m, 20 x 30 mm steel: Iz < Iy, so the first mode bends
 // in the x-y plane). cantilever: node 0 clamped; otherwise pinned at both ends (twist held at 0).
 Structure beam(bool cantilever, int n, const Material& mat = kSteel) {
-  Structure s;
-  const int m = s.add_material(mat);
-  const int c = s.add_section(rectangle_section(0.02, 0.03));
-  const double L = 2.0;
-  for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), Vec3(L * i / n, 0, 0));
-  for (int i = 0; i < n; ++i) {
-    Beam b;
-    b.id = fmt::format("b{}", i);
-    b.node1 = i;
-    b.node2 = i + 1;
-    b.material = m;
-    b.section = c;
-    s.add_beam(b);
-  }
+  Structure s = straight(2.0, n, rectangle_section(0.02, 0.03), BeamTheory::kEulerBernoulli, mat);
   if (cantilever) {
     s.add_support({0, kAllDofs, Mat3::Identity()});
   } else {
@@ -166,19 +152,7 @@ TEST(Modes, TipMassOnMasslessCantilever) {
   const Section sec = rectangle_section(0.02, 0.03);
   const double L = 1.5, m = 20.0, Ixx = 0.05;
   for (int n : {1, 3}) {
-    Structure s;
-    const int mi = s.add_material(massless);
-    const int c = s.add_section(sec);
-    for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), Vec3(L * i / n, 0, 0));
-    for (int i = 0; i < n; ++i) {
-      Beam b;
-      b.id = fmt::format("b{}", i);
-      b.node1 = i;
-      b.node2 = i + 1;
-      b.material = mi;
-      b.section = c;
-      s.add_beam(b);
-    }
+    Structure s = straight(L, n, sec, BeamTheory::kEulerBernoulli, massless);
     s.add_support({0, kAllDofs, Mat3::Identity()});
     s.add_mass({n, m, Vec3(Ixx, 0, 0)});
     const ModalResult r = run(s, false, true, 3);

@@ -8,35 +8,14 @@
 #include <fmt/format.h>
 
 #include "kinestat/msa/static_analysis.hpp"
+#include "beam_line.hpp"
 #include "msa/assembly.hpp"
 
 namespace kinestat::msa {
 namespace {
 
-const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
-
 void expect_contains(const std::string& message, const std::string& part) {
   EXPECT_NE(message.find(part), std::string::npos) << "expected \"" << part << "\" in: " << message;
-}
-
-// n beams along x from 0 to L, nodes "0".."n", no supports.
-Structure straight(double L, int n, const Section& sec, BeamTheory th = BeamTheory::kEulerBernoulli,
-                   const Material& mat = kSteel) {
-  Structure s;
-  const int m = s.add_material(mat);
-  const int c = s.add_section(sec);
-  for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), Vec3(L * i / n, 0, 0));
-  for (int i = 0; i < n; ++i) {
-    Beam b;
-    b.id = fmt::format("b{}", i);
-    b.node1 = i;
-    b.node2 = i + 1;
-    b.material = m;
-    b.section = c;
-    b.theory = th;
-    s.add_beam(b);
-  }
-  return s;
 }
 
 MemberLoad uniform(int beam, const Vec3& w, bool global = true) {

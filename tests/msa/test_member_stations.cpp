@@ -8,29 +8,10 @@
 #include <fmt/format.h>
 
 #include "kinestat/msa/static_analysis.hpp"
+#include "beam_line.hpp"
 
 namespace kinestat::msa {
 namespace {
-
-const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
-
-Structure straight(double L, int n, const Section& sec, BeamTheory th = BeamTheory::kEulerBernoulli) {
-  Structure s;
-  s.add_material(kSteel);
-  s.add_section(sec);
-  for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), Vec3(L * i / n, 0, 0));
-  for (int i = 0; i < n; ++i) {
-    Beam b;
-    b.id = fmt::format("b{}", i);
-    b.node1 = i;
-    b.node2 = i + 1;
-    b.material = 0;
-    b.section = 0;
-    b.theory = th;
-    s.add_beam(b);
-  }
-  return s;
-}
 
 // The stations of beam `beam` in case 0 compared with closed forms of x: component `dof` of the
 // displacement or (forces = true) of the internal forces, to `rel` of the curve's largest value.
