@@ -15,6 +15,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   libbenchmark-dev
   libyaml-cpp-dev          # structure files
+  libmuparser-dev          # expressions of named parameters in robot files (models/robots/)
   libcli11-dev             # command-line options
   nlohmann-json3-dev       # JSON results
   libfmt-dev               # formatting

@@ -20,10 +20,12 @@
 #include "kinestat/io/map_vti.hpp"
 #include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/io/results_json.hpp"
+#include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
 #include "kinestat/mechanisms/five_bar_loci.hpp"
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
+#include "kinestat/mechanisms/robot_kernel.hpp"
 #include "kinestat/mechanisms/workspace_map.hpp"
 
 namespace kinestat::cli {
@@ -39,7 +41,7 @@ struct MapArgs {
   std::string mode = "++", assembly = "up", method = "msa";
   std::vector<std::string> region, box;  // "lo:hi" per axis, mm
   std::optional<double> step;            // mm
-  std::vector<double> load, wrench;
+  std::vector<double> load, wrench, orientation;
   std::optional<double> min_stiffness;   // N/mm
   double near_singular = MapOptions{}.near_singular_threshold;
   std::size_t max_points = MapOptions{}.max_points;
@@ -48,7 +50,7 @@ struct MapArgs {
   bool quiet = false;
   // Options given on the command line, to refuse those that do not apply to the target.
   CLI::Option *mode_opt = nullptr, *assembly_opt = nullptr, *method_opt = nullptr, *region_opt = nullptr,
-              *box_opt = nullptr, *wrench_opt = nullptr;
+              *box_opt = nullptr, *wrench_opt = nullptr, *orientation_opt = nullptr;
 };
 
 // What the target needs before the grid: the kernel, the ranges, the curves, words for messages.
@@ -66,8 +68,22 @@ Status refuse_if_given(const CLI::Option* o, const std::string& why) {
   return Status::Ok();
 }
 
+// The loaded mode of --load (a displacement) or --wrench, shared by model and robot files.
+Status parse_load(const MapArgs& a, std::optional<Vec6>& displacement, std::optional<Vec6>& wrench) {
+  if (!a.load.empty()) {
+    auto d = parse_displacement_option(a.load, "--load");
+    if (!d.ok()) return d.status();
+    displacement = *d;
+  } else if (!a.wrench.empty()) {
+    auto w = parse_wrench_option(a.wrench, "--wrench");
+    if (!w.ok()) return w.status();
+    wrench = *w;
+  }
+  return Status::Ok();
+}
+
 StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
-  for (const CLI::Option* o : {a.box_opt, a.wrench_opt})
+  for (const CLI::Option* o : {a.box_opt, a.wrench_opt, a.orientation_opt})
     if (Status s = refuse_if_given(o, "applies to model files; the five-bar takes --region x0:x1,y0:y1 (mm) and "
                                       "--load Fx,Fy,Fz,Mx,My,Mz (N, N mm)");
         !s.ok())
@@ -105,7 +121,7 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
 }
 
 StatusOr<MapSetup> model_setup(const MapArgs& a) {
-  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt})
+  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt, a.orientation_opt})
     if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a model file takes --box, --step, "
                                       "--load or --wrench");
         !s.ok())
@@ -118,15 +134,7 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   if (!r.ok()) return r.status();
   s.ranges = {(*r)[0], (*r)[1], (*r)[2]};
   OrthoglideKernelOptions o;
-  if (!a.load.empty()) {
-    auto d = parse_displacement_option(a.load, "--load");
-    if (!d.ok()) return d.status();
-    o.displacement = *d;
-  } else if (!a.wrench.empty()) {
-    auto w = parse_wrench_option(a.wrench, "--wrench");
-    if (!w.ok()) return w.status();
-    o.wrench = *w;
-  }
+  if (Status st = parse_load(a, o.displacement, o.wrench); !st.ok()) return st;
   s.with_load = o.displacement || o.wrench;
   // Read after the options, so that a bad option is reported first (reading meshes nothing: `fea:`
   // springs are computed by io::resolve_fea_springs, which the Orthoglide kernel does not call).
@@ -142,6 +150,60 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
                                  o.model.link_length / kMm);
   if (Status st = validate(o); !st.ok()) return st;
   s.kernel = make_orthoglide_kernel(o);
+  return s;
+}
+
+// A robot file (docs/robots.md): the box from --box or the file's `workspace:`, the orientation
+// task coordinates from --orientation.
+StatusOr<MapSetup> robot_setup(const MapArgs& a) {
+  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt})
+    if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a robot file takes --box, --step, "
+                                      "--orientation, --load or --wrench");
+        !s.ok())
+      return s;
+  if (!a.step) return Status::Invalid("--step MM is required with a robot file");
+  RobotKernelOptions o;
+  if (Status st = parse_load(a, o.displacement, o.wrench); !st.ok()) return st;
+  auto model = io::read_robot_model(a.target);
+  if (!model.ok()) return model.status();
+  auto shared = std::make_shared<const RobotModel>(std::move(*model));
+  const RobotDescription& d = shared->description();
+  o.model = shared;
+  o.task = shared->home_task();
+  if (!a.orientation.empty()) {
+    if (a.orientation.size() != 3) return Status::Invalid("--orientation takes three angles rx,ry,rz (deg)");
+    bool any = false;
+    for (std::size_t t = 0; t < d.task.size(); ++t)
+      if (d.task[t] >= TaskCoordinate::kRx) {
+        const double deg = a.orientation[static_cast<int>(d.task[t]) - 3];
+        if (!std::isfinite(deg)) return Status::Invalid("--orientation: an angle is not finite");
+        o.task(static_cast<int>(t)) = deg * M_PI / 180.0;
+        any = true;
+      }
+    if (!any) return Status::Invalid(fmt::format("--orientation: {} commands no orientation (its task has no rx, ry "
+                                                 "or rz)", d.name));
+  }
+  MapSetup s;
+  s.range_option = "--box";
+  if (!a.box.empty()) {
+    auto r = parse_ranges_mm(a.box, 3, "--box", "x0:x1,y0:y1,z0:z1");
+    if (!r.ok()) return r.status();
+    s.ranges = {(*r)[0], (*r)[1], (*r)[2]};
+  } else if (d.workspace) {
+    for (int i = 0; i < 3; ++i) s.ranges[i] = {(*d.workspace)[i].first, (*d.workspace)[i].second};
+  } else {
+    return Status::Invalid(fmt::format("{}: no `workspace:` in the file; give --box x0:x1,y0:y1,z0:z1 (mm)", a.target));
+  }
+  // An axis that sets no task coordinate must be flat (a planar robot's z).
+  const std::array<int, 3> axes = default_map_axes(*shared);
+  for (int i = 0; i < 3; ++i)
+    if (axes[i] < 0 && s.ranges[i].lo != s.ranges[i].hi)
+      return Status::Invalid(fmt::format("{} commands no {}: give a single value for it in --box (e.g. {}0)", d.name,
+                                         "xyz"[i], i == 0 ? "" : i == 1 ? "x0:x1," : "x0:x1,y0:y1,"));
+  s.with_load = o.displacement || o.wrench;
+  s.workspace_hint = fmt::format("no posture of {} closes there on the home posture's branch", d.name);
+  if (Status st = validate(o); !st.ok()) return st;
+  s.kernel = make_robot_kernel(o);
   return s;
 }
 
@@ -202,7 +264,14 @@ int run_map(MapArgs& a, Context& ctx) {
   if (!field)
     return fail(Status::Invalid(fmt::format("--field '{}' is not a map field; use one of {}", a.field, field_names())));
 
-  StatusOr<MapSetup> setup = five_bar ? five_bar_setup(a) : model_setup(a);
+  StatusOr<MapSetup> setup = Status::Ok();
+  if (five_bar) {
+    setup = five_bar_setup(a);
+  } else {
+    StatusOr<bool> robot = io::is_robot_file(a.target);
+    if (!robot.ok()) return fail(robot.status());
+    setup = *robot ? robot_setup(a) : model_setup(a);
+  }
   if (!setup.ok()) return fail(setup.status());
   if ((*field == MapField::kDeflectionTranslation || *field == MapField::kDeflectionRotation) && !setup->with_load)
     return fail(Status::Invalid(fmt::format("--field {} needs a load (--load{})", a.field, five_bar ? "" : " or --wrench")));
@@ -298,8 +367,9 @@ void register_map_command(CLI::App& app, Context& ctx) {
   CLI::App* cmd = app.add_subcommand(
       "map", "workspace stiffness map (docs/maps.md): the tool-point stiffness at every point of a grid, as VTI "
              "(ParaView), JSON and PNG. Targets: `fivebar` (the 5R five-bar of Goncalves et al. 2010, the plane "
-             "of P) or a VJM model file with `mechanism: orthoglide` (a 3D box or a slice)");
-  cmd->add_option("target", a->target, "`fivebar` or a VJM model file (YAML, mechanism: orthoglide)")->required();
+             "of P), a VJM model file with `mechanism: orthoglide` (a 3D box or a slice) or a robot file (`robot:`, "
+             "docs/robots.md; models/robots/)");
+  cmd->add_option("target", a->target, "`fivebar`, a VJM model file (YAML, mechanism: orthoglide) or a robot file (YAML, robot:)")->required();
   a->mode_opt = cmd->add_option("--mode", a->mode, "fivebar: working mode ++ (default), +-, -+ or --");
   a->assembly_opt = cmd->add_option("--assembly", a->assembly, "fivebar: assembly mode up (default) or down");
   a->method_opt = cmd->add_option("--method", a->method, "fivebar: stiffness by msa (default) or vjm");
@@ -310,6 +380,10 @@ void register_map_command(CLI::App& app, Context& ctx) {
                                "model: x0:x1,y0:y1,z0:z1 in mm (a single value for one axis: a 2D slice)")
                    ->delimiter(',');
   cmd->add_option("--step", a->step, "grid step in mm (fivebar default 5)");
+  a->orientation_opt = cmd->add_option("--orientation", a->orientation,
+                                       "robot file: the tool's orientation rx,ry,rz in deg (Rz Ry Rx, base axes) for "
+                                       "the task's angles at every point (default: home's, 0)")
+                           ->delimiter(',');
   CLI::Option* load = cmd->add_option("--load", a->load,
                                       "fivebar: wrench at P Fx,Fy,Fz (N), Mx,My,Mz (N mm) for the deflection fields; "
                                       "model: prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg), loaded mode")

@@ -1,0 +1,201 @@
+// A parallel robot as data (docs/robots.md): legs of joints and links from the base to one platform,
+// drawn at the home posture, and what the user commands (the task coordinates). Built once by
+// make_robot_model (which checks it), then only read, like Pinocchio's Model; what changes per
+// posture lives in a RobotData, one per thread. Kinematics, the VJM chains and the posture kernel
+// (robot_kernel.hpp) are free functions of the model.
+//
+// Geometry is a product of exponentials (Brockett 1984): every joint is given by a point and axes
+// at the home posture, in base axes, and its coordinates are measured from there (home: all 0).
+// A leg's chain is, from the base: a translation to each joint's point, the joint's motions about
+// or along its home axes (in the frame moved by the joints before it), springs where they are
+// written, and at its end the translation to the tool point. The platform frame has base axes at home.
+//
+// SI units throughout: m, rad, N, N m; prismatic coordinates in m, revolute ones in rad.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "kinestat/core/status.hpp"
+#include "kinestat/core/types.hpp"
+#include "kinestat/vjm/chain.hpp"
+
+namespace kinestat::mechanisms {
+
+enum class RobotJointType : std::uint8_t {
+  kRevolute,       // 1 coordinate: rotation about axes[0]
+  kPrismatic,      // 1: translation along axes[0]
+  kUniversal,      // 2: rotation about axes[0], then about axes[1] (moved by the first)
+  kSpherical,      // 3: rotations about axes[0], axes[1], axes[2] (singular when the middle one is at +-90 deg)
+  kCylindrical,    // 2: rotation about axes[0], then translation along it
+  kParallelogram,  // 1 (Pa): the plate at `to` swings about axes[0] without turning: R(q) T(to - at) R(-q)
+};
+const char* to_string(RobotJointType t);
+int coordinate_count(RobotJointType t);
+
+// A 6x6 spring at the chain's current point (eq. (1) of Pashkevich et al. 2009: a virtual spring).
+struct RobotSpring {
+  std::string label;        // names it in messages: "leg 2 link 1"
+  Mat6 stiffness;           // dofs ux uy uz rx ry rz along `axes`: N/m, N/rad, N m/m, N m/rad
+  Mat3 axes = Mat3::Identity();  // columns: the spring's x, y, z in base axes at home (orthonormal)
+};
+
+struct RobotJoint {
+  std::string label;  // "leg 2 joint 3 (universal)"
+  RobotJointType type = RobotJointType::kRevolute;
+  Vec3 at = Vec3::Zero();  // a point of its axes at home (m)
+  std::array<Vec3, 3> axes{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};  // unit, at home
+  Vec3 to = Vec3::Zero();  // kParallelogram: the second hinge's point at home
+  bool actuated = false;   // the first coordinate is driven by a motor
+  // Actuator stiffness (N/m or N m/rad) when actuated; +infinity: a rigid actuator.
+  double actuator_stiffness = std::numeric_limits<double>::infinity();
+  // The joint's own compliance (its bearing), placed at `at` before its motion; its stiffness along
+  // the joint's free motion does not matter (the motion is passive) but must be positive.
+  std::optional<RobotSpring> spring;
+  // Per coordinate, measured from home; empty: no limits.
+  std::vector<std::pair<double, double>> limits;
+};
+
+// A link from the chain's current point to `to`. Its spring, if any, sits at `to` (the free end of
+// a cantilever clamped at the link's start): a beam of the link or a given 6x6.
+struct RobotLink {
+  std::string label;
+  Vec3 to = Vec3::Zero();  // m, at home
+  std::optional<RobotSpring> spring;
+};
+
+struct RobotLeg {
+  std::string name;  // "leg 2"
+  std::vector<std::variant<RobotJoint, RobotLink>> items;  // from the base to the platform
+};
+
+enum class TaskCoordinate : std::uint8_t { kX, kY, kZ, kRx, kRy, kRz };
+const char* to_string(TaskCoordinate c);
+
+// What a robot file describes, in SI, parameters already evaluated (io::read_robot_yaml).
+struct RobotDescription {
+  std::string name;    // "Delta (Clavel)"
+  std::string source;  // the file, for messages
+  std::vector<RobotLeg> legs;
+  Vec3 tool = Vec3::Zero();  // the tool point at home (m, base frame)
+  // All motion in the base x-y plane: loop closure and task in x, y, rz only; joints must keep to
+  // the plane (revolute axes along z, prismatic axes in the plane).
+  bool planar = false;
+  // The commanded components of the tool pose. The orientation is R = Rz(rz) Ry(ry) Rx(rx) (angles
+  // about the fixed base axes, applied x first), the platform's rotation from home.
+  std::vector<TaskCoordinate> task;
+  // The map region (m) when the command line gives none; lo == hi on an axis: a slice.
+  std::optional<std::array<std::pair<double, double>, 3>> workspace;
+  // Named parameters and their values in the file's units, for reports and design sweeps.
+  std::vector<std::pair<std::string, double>> params;
+};
+
+class RobotModel;
+
+// A solved posture: every joint coordinate (legs in order, each leg's joints in order) and the
+// tool pose.
+struct RobotPosture {
+  VecX q;
+  vjm::Transform tool = vjm::Transform::Identity();
+};
+
+// Per-thread scratch of the kinematics (sized once by make_robot_data).
+struct RobotData {
+  VecX x, residual, step;
+  MatX jacobian;
+  Eigen::PartialPivLU<MatX> lu;
+  std::vector<VecX> leg_q;
+};
+RobotData make_robot_data(const RobotModel& model);
+
+enum class KinematicsStatus : std::uint8_t {
+  kOk,
+  kUnreachable,   // no closure near the start on this branch (out of reach, or a joint limit)
+  kSingular,      // the closure equations lose rank (a Type 1 or Type 2 singularity)
+  kOtherBranch,   // closed, but on another working or assembly mode than home's
+};
+const char* to_string(KinematicsStatus s);
+
+struct KinematicsResult {
+  KinematicsStatus status = KinematicsStatus::kUnreachable;
+  int iterations = 0;
+  // sigma_min / sigma_max of the length-scaled Jacobians, the smaller of the inverse kinematics'
+  // (legs, Type 1) and the direct kinematics' (platform, Type 2); 0 at a singularity.
+  double singularity_measure = 0.0;
+  std::string message;  // why, when not kOk
+};
+
+class RobotModel {
+ public:
+  const RobotDescription& description() const { return d_; }
+  int num_legs() const { return static_cast<int>(d_.legs.size()); }
+  int num_coordinates() const { return num_q_; }
+  int leg_offset(int leg) const { return leg_offset_[leg]; }
+  int leg_coordinates(int leg) const { return leg_offset_[leg + 1] - leg_offset_[leg]; }
+  // Per coordinate (all legs in order): its leg, its joint's item index in the leg, and which of the
+  // joint's coordinates it is.
+  struct Coordinate {
+    int leg = 0, item = 0, index = 0;
+  };
+  const std::vector<Coordinate>& coordinates() const { return coords_; }
+  const RobotJoint& joint(const Coordinate& c) const { return std::get<RobotJoint>(d_.legs[c.leg].items[c.item]); }
+  bool actuated(const Coordinate& c) const { return c.index == 0 && joint(c).actuated; }
+  // "leg 2 joint 3 (universal) coordinate 2"
+  std::string coordinate_name(int k) const;
+  // Leg closure equations per leg (6, or 3 when planar) and platform unknowns (6 or 3).
+  int equations_per_leg() const { return d_.planar ? 3 : 6; }
+  // The largest distance from the base origin to a joint or the tool (m): the scale that makes m and
+  // rad comparable.
+  double length_scale() const { return length_scale_; }
+  // The home posture: all coordinates 0, the tool at `tool` with base axes.
+  const RobotPosture& home() const { return home_; }
+  VecX home_task() const;  // task coordinate values at home
+  // The kinematic chain of each leg: every joint coordinate a passive variable, no springs.
+  const vjm::Chain& kinematic_chain(int leg) const { return kinematic_[leg]; }
+  // Signs of det of the inverse and direct kinematics Jacobians at home: a posture with other signs
+  // is on another working (inverse) or assembly (direct) mode.
+  int home_inverse_sign() const { return inverse_sign_; }
+  int home_direct_sign() const { return direct_sign_; }
+
+ private:
+  friend StatusOr<RobotModel> make_robot_model(RobotDescription d);
+  RobotDescription d_;
+  int num_q_ = 0;
+  std::vector<int> leg_offset_;
+  std::vector<Coordinate> coords_;
+  std::vector<vjm::Chain> kinematic_;
+  double length_scale_ = 1.0;
+  RobotPosture home_;
+  int inverse_sign_ = 1, direct_sign_ = 1;
+};
+
+// Checks and builds: axes unit and non-zero, actuated joints as many as task coordinates, unknowns
+// as many as equations, the Jacobians of full rank at home (else the free or redundant motion is
+// named), a planar robot in its plane. kInvalidInput naming the description's source and item.
+StatusOr<RobotModel> make_robot_model(RobotDescription d);
+
+// Task coordinate values of a tool pose (m, rad).
+VecX task_values(const RobotModel& model, const vjm::Transform& tool);
+
+// Inverse kinematics by Newton on the loop closure (every leg's end at the tool pose) and the task
+// equations, from `posture` (a neighbour's solution, or home), which it overwrites with the
+// solution. With `continuation`, walks from the start's task values to `task` in steps, halving a
+// step whose Newton fails (evaluate from home); without, one Newton solve (a grid neighbour).
+KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotPosture& posture, RobotData& data,
+                               bool continuation = true);
+
+// The VJM chains (vjm/chain.hpp) of the legs at a solved posture: actuated joints as actuators
+// with their springs (rigid: locked), passive joints at their values, the springs in place; each
+// chain ends at the tool point with base axes.
+std::vector<vjm::Chain> robot_vjm_chains(const RobotModel& model, const RobotPosture& posture);
+
+}  // namespace kinestat::mechanisms

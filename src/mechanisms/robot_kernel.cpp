@@ -1,0 +1,125 @@
+#include "kinestat/mechanisms/robot_kernel.hpp"
+
+#include <fmt/format.h>
+
+#include "kinestat/vjm/equilibrium.hpp"
+#include "kinestat/vjm/stiffness.hpp"
+
+namespace kinestat::mechanisms {
+
+std::array<int, 3> default_map_axes(const RobotModel& model) {
+  std::array<int, 3> axes{-1, -1, -1};
+  const auto& task = model.description().task;
+  for (std::size_t t = 0; t < task.size(); ++t)
+    if (task[t] <= TaskCoordinate::kZ) axes[static_cast<int>(task[t])] = static_cast<int>(t);
+  return axes;
+}
+
+Status validate(const RobotKernelOptions& o) {
+  if (!o.model) return Status::Invalid("robot kernel: no model");
+  const int n = static_cast<int>(o.model->description().task.size());
+  if (o.task.size() != 0 && o.task.size() != n)
+    return Status::Invalid(fmt::format("robot kernel: {} task values for {} task coordinates", o.task.size(), n));
+  if (!o.task.allFinite()) return Status::Invalid("robot kernel: a task value is not finite");
+  if (o.map_axes) {
+    for (int a = 0; a < 3; ++a) {
+      const int t = (*o.map_axes)[a];
+      if (t < -1 || t >= n) return Status::Invalid(fmt::format("robot kernel: map axis {} names task coordinate {}, "
+                                                               "which does not exist", "xyz"[a], t));
+      for (int b = 0; b < a; ++b)
+        if (t >= 0 && (*o.map_axes)[b] == t)
+          return Status::Invalid(fmt::format("robot kernel: map axes {} and {} set the same task coordinate", "xyz"[b],
+                                             "xyz"[a]));
+    }
+  }
+  if (o.wrench && o.displacement) return Status::Invalid("robot kernel: give a wrench or a displacement, not both");
+  if ((o.wrench && !o.wrench->allFinite()) || (o.displacement && !o.displacement->allFinite()))
+    return Status::Invalid("robot kernel: the load is not finite");
+  return Status::Ok();
+}
+
+namespace {
+
+class RobotKernel final : public PostureKernel {
+ public:
+  explicit RobotKernel(const RobotKernelOptions& o)
+      : o_(o), axes_(o.map_axes ? *o.map_axes : default_map_axes(*o.model)), data_(make_robot_data(*o.model)) {
+    if (o_.task.size() == 0) o_.task = o_.model->home_task();
+  }
+
+  PostureResult evaluate(const Vec3& point) override {
+    posture_ = o_.model->home();
+    return finish(solve_posture(*o_.model, task_at(point), posture_, data_, true));
+  }
+
+  PostureResult evaluate_next(const Vec3& point) override {
+    if (!solved_) return evaluate(point);
+    RobotPosture start = posture_;
+    const KinematicsResult k = solve_posture(*o_.model, task_at(point), posture_, data_, false);
+    if (k.status == KinematicsStatus::kOk) return finish(k);
+    posture_ = start;
+    return evaluate(point);
+  }
+
+  std::unique_ptr<PostureKernel> clone() const override { return std::make_unique<RobotKernel>(o_); }
+
+  std::string description() const override {
+    const char* mode = o_.wrench ? "loaded under a wrench" : o_.displacement ? "loaded by a displacement" : "unloaded";
+    return fmt::format("{} (VJM, {})", o_.model->description().name, mode);
+  }
+
+ private:
+  VecX task_at(const Vec3& point) const {
+    VecX t = o_.task;
+    for (int a = 0; a < 3; ++a)
+      if (axes_[a] >= 0) t(axes_[a]) = point(a);
+    return t;
+  }
+
+  PostureResult finish(const KinematicsResult& k) {
+    PostureResult r;
+    solved_ = k.status == KinematicsStatus::kOk;
+    r.singularity_measure = k.singularity_measure;
+    if (k.status == KinematicsStatus::kUnreachable || k.status == KinematicsStatus::kOtherBranch) return r;
+    r.status = PostureStatus::kSingular;
+    if (k.status == KinematicsStatus::kSingular) return r;
+    const std::vector<vjm::Chain> chains = robot_vjm_chains(*o_.model, posture_);
+    StatusOr<CartesianStiffness> K = Status::Internal("not computed");
+    if (o_.wrench || o_.displacement) {
+      auto state = o_.wrench ? vjm::platform_equilibrium_under_wrench(chains, *o_.wrench)
+                             : vjm::platform_equilibrium(chains, *o_.displacement);
+      if (!state.ok()) {
+        r.status = state.status().code() == StatusCode::kSingular ? PostureStatus::kSingular : PostureStatus::kFailed;
+        return r;
+      }
+      r.deflection = state->displacement;
+      K = vjm::platform_loaded_stiffness(chains, *state);
+    } else {
+      K = vjm::platform_unloaded_stiffness(chains);
+    }
+    if (!K.ok()) {
+      if (K.status().code() != StatusCode::kSingular) r.status = PostureStatus::kFailed;
+      return r;
+    }
+    if (!K->compliance_defined) return r;  // a free direction; rigid ones are kept (header)
+    r.stiffness = K->stiffness;
+    r.compliance = K->compliance;
+    r.indices = cartesian_indices(r.stiffness);
+    r.status = PostureStatus::kOk;
+    return r;
+  }
+
+  RobotKernelOptions o_;
+  std::array<int, 3> axes_;
+  RobotData data_;
+  RobotPosture posture_;
+  bool solved_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<PostureKernel> make_robot_kernel(const RobotKernelOptions& options) {
+  return std::make_unique<RobotKernel>(options);
+}
+
+}  // namespace kinestat::mechanisms

@@ -1,0 +1,270 @@
+// The robot model: its checks (make_robot_model) and its chains (one builder for the kinematic
+// chains and the VJM chains, so the two cannot disagree on the geometry).
+#include "kinestat/mechanisms/robot_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "robot_equations.hpp"
+
+namespace kinestat::mechanisms {
+
+const char* to_string(RobotJointType t) {
+  switch (t) {
+    case RobotJointType::kRevolute: return "revolute";
+    case RobotJointType::kPrismatic: return "prismatic";
+    case RobotJointType::kUniversal: return "universal";
+    case RobotJointType::kSpherical: return "spherical";
+    case RobotJointType::kCylindrical: return "cylindrical";
+    case RobotJointType::kParallelogram: return "parallelogram";
+  }
+  return "?";
+}
+
+int coordinate_count(RobotJointType t) {
+  switch (t) {
+    case RobotJointType::kUniversal:
+    case RobotJointType::kCylindrical: return 2;
+    case RobotJointType::kSpherical: return 3;
+    default: return 1;
+  }
+}
+
+const char* to_string(TaskCoordinate c) {
+  static constexpr const char* kNames[] = {"x", "y", "z", "rx", "ry", "rz"};
+  return kNames[static_cast<int>(c)];
+}
+
+const char* to_string(KinematicsStatus s) {
+  switch (s) {
+    case KinematicsStatus::kOk: return "ok";
+    case KinematicsStatus::kUnreachable: return "unreachable";
+    case KinematicsStatus::kSingular: return "singular";
+    case KinematicsStatus::kOtherBranch: return "other branch";
+  }
+  return "?";
+}
+
+std::string RobotModel::coordinate_name(int k) const {
+  const Coordinate& c = coords_[k];
+  const RobotJoint& j = joint(c);
+  return coordinate_count(j.type) == 1 ? j.label : fmt::format("{} coordinate {}", j.label, c.index + 1);
+}
+
+VecX RobotModel::home_task() const { return task_values(*this, home_.tool); }
+
+namespace {
+
+using vjm::JointType;
+
+// A spring in `axes` (columns in the current frame): turn into its frame, spring, turn back.
+void add_spring(vjm::Chain& c, const RobotSpring& s) {
+  if (s.axes.isIdentity(0.0)) {
+    c.add_spring(s.stiffness, s.label);
+    return;
+  }
+  vjm::Transform R = vjm::Transform::Identity();
+  R.linear() = s.axes;
+  c.add_transform(R, s.label + " (its axes)");
+  c.add_spring(s.stiffness, s.label);
+  c.add_transform(R.inverse(), s.label + " (back to base axes)");
+}
+
+}  // namespace
+
+// Appends a leg to `chain`: with `q` (the leg's coordinates), `kinematic` makes every coordinate a
+// passive variable and leaves the springs out; otherwise actuated coordinates become actuators at
+// their values (rigid ones locked) and passive ones passive joints, springs in place.
+void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain& chain, const Vec3& tool) {
+  Vec3 at = Vec3::Zero();
+  auto move_to = [&](const Vec3& p, const std::string& label) {
+    if (p != at) chain.add_translation(p - at, label);
+    at = p;
+  };
+  int k = 0;
+  for (const auto& item : leg.items) {
+    if (const auto* link = std::get_if<RobotLink>(&item)) {
+      move_to(link->to, link->label);
+      if (!kinematic && link->spring) add_spring(chain, *link->spring);
+      continue;
+    }
+    const RobotJoint& j = std::get<RobotJoint>(item);
+    move_to(j.at, j.label + " (its point)");
+    if (!kinematic && j.spring) add_spring(chain, *j.spring);
+    // One elementary motion: the first coordinate of an actuated joint is its actuator.
+    auto motion = [&](JointType type, const Vec3& axis, int index, const std::string& label) {
+      const double value = q[k++];
+      if (!kinematic && j.actuated && index == 0) {
+        chain.add_actuator(type, axis, value, j.actuator_stiffness, label + " (actuator)");
+        return -1;
+      }
+      return chain.add_passive(type, axis, value, label);
+    };
+    switch (j.type) {
+      case RobotJointType::kRevolute: motion(JointType::kRevolute, j.axes[0], 0, j.label); break;
+      case RobotJointType::kPrismatic: motion(JointType::kPrismatic, j.axes[0], 0, j.label); break;
+      case RobotJointType::kUniversal:
+        motion(JointType::kRevolute, j.axes[0], 0, j.label + " axis 1");
+        motion(JointType::kRevolute, j.axes[1], 1, j.label + " axis 2");
+        break;
+      case RobotJointType::kSpherical:
+        for (int i = 0; i < 3; ++i) motion(JointType::kRevolute, j.axes[i], i, fmt::format("{} axis {}", j.label, i + 1));
+        break;
+      case RobotJointType::kCylindrical:
+        motion(JointType::kRevolute, j.axes[0], 0, j.label + " rotation");
+        motion(JointType::kPrismatic, j.axes[0], 1, j.label + " translation");
+        break;
+      case RobotJointType::kParallelogram: {
+        const int v = motion(JointType::kRevolute, j.axes[0], 0, j.label + " (proximal hinges)");
+        chain.add_translation(j.to - j.at, j.label + " (bars)");
+        chain.add_coupled(JointType::kRevolute, j.axes[0], v, -1.0, j.label + " (distal hinges, -q)");
+        at = j.to;
+        break;
+      }
+    }
+  }
+  move_to(tool, "to the tool point");
+}
+
+StatusOr<RobotModel> make_robot_model(RobotDescription d) {
+  const std::string& src = d.source;
+  auto invalid = [&](const std::string& what) { return Status::Invalid(fmt::format("{}: {}", src, what)); };
+  if (d.legs.empty()) return invalid("a robot needs legs; add `legs:`");
+  if (d.task.empty()) return invalid("`task:` names no coordinate; give e.g. [x, y, z]");
+  for (std::size_t i = 0; i < d.task.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (d.task[i] == d.task[k]) return invalid(fmt::format("task coordinate {} is named twice", to_string(d.task[i])));
+  RobotModel m;
+  double scale = d.tool.norm();
+  int actuated = 0;
+  m.leg_offset_.push_back(0);
+  for (std::size_t l = 0; l < d.legs.size(); ++l) {
+    RobotLeg& leg = d.legs[l];
+    int joints = 0;
+    for (std::size_t i = 0; i < leg.items.size(); ++i) {
+      if (auto* link = std::get_if<RobotLink>(&leg.items[i])) {
+        scale = std::max(scale, link->to.norm());
+        continue;
+      }
+      RobotJoint& j = std::get<RobotJoint>(leg.items[i]);
+      ++joints;
+      scale = std::max({scale, j.at.norm(), j.to.norm()});
+      const int n = coordinate_count(j.type);
+      const int axes = j.type == RobotJointType::kSpherical ? 3 : j.type == RobotJointType::kUniversal ? 2 : 1;
+      for (int a = 0; a < axes; ++a) {
+        if (!j.axes[a].allFinite() || j.axes[a].norm() == 0.0)
+          return invalid(fmt::format("{}: axis {} is zero or not finite; give a direction", j.label, a + 1));
+        j.axes[a].normalize();
+      }
+      if (axes == 2 && j.axes[0].cross(j.axes[1]).norm() < 1e-6)
+        return invalid(fmt::format("{}: its two axes are parallel; a universal joint's axes cross at an angle", j.label));
+      if (axes == 3 && std::abs(j.axes[0].dot(j.axes[1].cross(j.axes[2]))) < 1e-6)
+        return invalid(fmt::format("{}: its three axes are coplanar; give three independent axes", j.label));
+      if (j.type == RobotJointType::kParallelogram) {
+        if ((j.to - j.at).norm() < 1e-9 * std::max(1.0, scale))
+          return invalid(fmt::format("{}: `to` is at `at`; the parallelogram's bars need a length", j.label));
+        if (j.actuated) return invalid(fmt::format("{}: a parallelogram cannot be actuated here; actuate the joint "
+                                                   "before it", j.label));
+      }
+      if (j.actuated) {
+        ++actuated;
+        if (!(j.actuator_stiffness > 0.0))
+          return invalid(fmt::format("{}: actuator stiffness {:g} must be positive (omit it for a rigid actuator)",
+                                     j.label, j.actuator_stiffness));
+      }
+      if (!j.limits.empty() && static_cast<int>(j.limits.size()) != n)
+        return invalid(fmt::format("{}: {} limits for {} coordinates", j.label, j.limits.size(), n));
+      for (const auto& [lo, hi] : j.limits)
+        if (!(lo <= 0.0 && 0.0 <= hi))
+          return invalid(fmt::format("{}: limits [{:g}, {:g}] exclude the home posture (0: coordinates are measured "
+                                     "from the drawing)", j.label, lo, hi));
+      if (d.planar) {
+        const bool in_plane =
+            j.type == RobotJointType::kPrismatic ? std::abs(j.axes[0].z()) < 1e-9
+            : (j.type == RobotJointType::kRevolute || j.type == RobotJointType::kParallelogram)
+                ? j.axes[0].head<2>().norm() < 1e-9
+                : false;
+        if (!in_plane)
+          return invalid(fmt::format("{}: a planar robot has revolute joints about z and prismatic ones in the x-y "
+                                     "plane only ({} with axis ({:g}, {:g}, {:g}))",
+                                     j.label, to_string(j.type), j.axes[0].x(), j.axes[0].y(), j.axes[0].z()));
+      }
+      for (int c = 0; c < coordinate_count(j.type); ++c)
+        m.coords_.push_back({static_cast<int>(l), static_cast<int>(i), c});
+    }
+    if (joints == 0) return invalid(fmt::format("{} has no joint; a leg is a chain of joints", leg.name));
+    m.leg_offset_.push_back(static_cast<int>(m.coords_.size()));
+  }
+  if (d.planar)
+    for (TaskCoordinate c : d.task)
+      if (c != TaskCoordinate::kX && c != TaskCoordinate::kY && c != TaskCoordinate::kRz)
+        return invalid(fmt::format("task coordinate {}: a planar robot commands x, y and rz only", to_string(c)));
+  if (actuated != static_cast<int>(d.task.size()))
+    return invalid(fmt::format("{} actuated joint{} for {} task coordinate{}; a parallel robot has one actuator per "
+                               "commanded coordinate (mark joints `actuated: true`)",
+                               actuated, actuated == 1 ? "" : "s", d.task.size(), d.task.size() == 1 ? "" : "s"));
+  m.num_q_ = static_cast<int>(m.coords_.size());
+  const int e = d.planar ? 3 : 6;
+  const int unknowns = m.num_q_ + e, equations = static_cast<int>(d.legs.size()) * e + static_cast<int>(d.task.size());
+  if (unknowns != equations)
+    return invalid(fmt::format(
+        "the legs have {} joint coordinates and the platform {} pose components ({} unknowns), but the legs' closure "
+        "gives {} x {} equations and the task {} ({}): {}",
+        m.num_q_, e, unknowns, d.legs.size(), e, d.task.size(), equations,
+        unknowns > equations ? "the robot has idle motions (e.g. a leg with two spherical joints spins about itself); "
+                               "use a universal joint at one end"
+                             : "the legs over-constrain the platform; remove a constraint or add a joint"));
+  m.length_scale_ = scale > 0.0 ? scale : 1.0;
+  m.home_.q = VecX::Zero(m.num_q_);
+  m.home_.tool = vjm::Transform::Identity();
+  m.home_.tool.translation() = d.tool;
+  m.d_ = std::move(d);
+  for (int l = 0; l < m.num_legs(); ++l) {
+    vjm::Chain c(m.d_.legs[l].name);
+    append_leg(m.d_.legs[l], m.home_.q.data() + m.leg_offset(l), true, c, m.d_.tool);
+    m.kinematic_.push_back(std::move(c));
+  }
+  // The Jacobians at home: full rank, else the free motion or the redundant equation is named.
+  RobotData data = make_robot_data(m);
+  const RobotJacobians J = robot_jacobians(m, m.home_, data, m.home_task());
+  for (const auto& [name, A, columns] :
+       {std::tuple{"inverse kinematics (all joints and the platform, given the task)", &J.inverse, &J.inverse_columns},
+        std::tuple{"direct kinematics (passive joints and the platform, given the actuators)", &J.direct,
+                   &J.direct_columns}}) {
+    Eigen::JacobiSVD<MatX> svd(*A, Eigen::ComputeFullV);
+    const VecX& s = svd.singularValues();
+    if (s.size() == 0 || s(s.size() - 1) > 1e-9 * s(0)) continue;
+    const VecX v = svd.matrixV().col(s.size() - 1);
+    std::string moving;
+    for (int k = 0; k < v.size(); ++k)
+      if (std::abs(v(k)) > 0.1 * v.cwiseAbs().maxCoeff())
+        moving += (moving.empty() ? "" : ", ") + column_name(m, (*columns)[k]);
+    return invalid(fmt::format("the {} Jacobian loses rank at home (sigma_min / sigma_max = {:.2g}): the drawing is a "
+                               "singular posture, or a motion is free or constrained twice; the motion involves {}",
+                               name, s(s.size() - 1) / s(0), moving));
+  }
+  m.inverse_sign_ = J.inverse.partialPivLu().determinant() > 0 ? 1 : -1;
+  m.direct_sign_ = J.direct.partialPivLu().determinant() > 0 ? 1 : -1;
+  return m;
+}
+
+std::vector<vjm::Chain> robot_vjm_chains(const RobotModel& model, const RobotPosture& posture) {
+  std::vector<vjm::Chain> chains;
+  chains.reserve(model.num_legs());
+  const RobotDescription& d = model.description();
+  // Each chain ends at the tool point with base axes: its tool transform takes the leg's end
+  // (the platform frame at this posture) back to base axes.
+  for (int l = 0; l < model.num_legs(); ++l) {
+    vjm::Chain c(d.legs[l].name);
+    append_leg(d.legs[l], posture.q.data() + model.leg_offset(l), false, c, d.tool);
+    vjm::Transform back = vjm::Transform::Identity();
+    back.linear() = posture.tool.linear().transpose();
+    c.add_transform(back, "tool (base axes)");
+    chains.push_back(std::move(c));
+  }
+  return chains;
+}
+
+}  // namespace kinestat::mechanisms

@@ -1,0 +1,247 @@
+// The robot files of models/robots/ against independent routes (issue #19, item 7): the hexapod
+// against K = J^T diag(k) J (Gosselin 1990), the Delta against its closed-form loop closure, the
+// generic five-bar against the built-in kernel, home closure, and the checks of a robot file.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "kinestat/io/robot_yaml.hpp"
+#include "kinestat/mechanisms/five_bar_kernel.hpp"
+#include "kinestat/mechanisms/robot_kernel.hpp"
+#include "kinestat/vjm/stiffness.hpp"
+
+namespace kinestat {
+namespace {
+
+using namespace mechanisms;
+
+std::string robot_file(const std::string& name) { return std::string(KINESTAT_SOURCE_DIR) + "/models/robots/" + name; }
+
+RobotModel load(const std::string& name, const io::ParamOverrides& o = {}) {
+  auto m = io::read_robot_model(robot_file(name), o);
+  EXPECT_TRUE(m.ok()) << m.status().message();
+  return std::move(*m);
+}
+
+double param(const RobotModel& m, const std::string& name) {
+  for (const auto& [n, v] : m.description().params)
+    if (n == name) return v;
+  ADD_FAILURE() << "no parameter " << name;
+  return 0.0;
+}
+
+// Every bundled robot closes at home: each leg's chain ends at the tool pose to round-off.
+TEST(RobotFiles, HomeClosesEveryLeg) {
+  for (const char* name : {"hexapod.yaml", "delta.yaml", "five_bar.yaml", "planar_3rpr.yaml", "prs_head.yaml"}) {
+    SCOPED_TRACE(name);
+    const RobotModel m = load(name);
+    for (int l = 0; l < m.num_legs(); ++l) {
+      const vjm::Transform T = m.kinematic_chain(l).forward(VecX::Zero(m.leg_coordinates(l)), VecX());
+      EXPECT_LT((T.translation() - m.description().tool).norm(), 1e-12 * m.length_scale());
+      EXPECT_LT((T.linear() - Mat3::Identity()).norm(), 1e-12);
+    }
+  }
+}
+
+// The hexapod with axial leg springs only: K = J^T diag(k) J, J's rows (u_i, r_i x u_i) from the
+// unit leg directions u_i and the platform joints r_i relative to the tool point (Gosselin 1990).
+// The two routes share no code beyond the solved posture's joint positions, which are recomputed
+// here from the platform pose. Round-off of the VJM's SVD-based stiffness: ~1e-12; bound 1e-9.
+TEST(RobotFiles, HexapodMatchesGosselin) {
+  auto model = std::make_shared<const RobotModel>(load("hexapod.yaml"));
+  const double k = param(*model, "leg_stiffness") * 1e3;  // N/mm -> N/m
+  RobotData data = make_robot_data(*model);
+  for (const Vec6& pose : {Vec6((Vec6() << 0, 0, 0.8, 0, 0, 0).finished()),
+                           Vec6((Vec6() << 0.05, -0.08, 0.75, 0.1, -0.05, 0.2).finished()),
+                           Vec6((Vec6() << -0.1, 0.02, 0.86, -0.08, 0.12, -0.3).finished())}) {
+    RobotPosture p = model->home();
+    const KinematicsResult r = solve_posture(*model, pose, p, data);
+    ASSERT_EQ(r.status, KinematicsStatus::kOk) << r.message;
+    auto K = vjm::platform_unloaded_stiffness(robot_vjm_chains(*model, p));
+    ASSERT_TRUE(K.ok());
+    ASSERT_TRUE(K->status.ok()) << K->status.message();
+    // Base and platform joints: the legs' first and last joint points, the platform's moved.
+    MatX J(6, 6);
+    for (int l = 0; l < 6; ++l) {
+      const auto& items = model->description().legs[l].items;
+      const Vec3 b = std::get<RobotJoint>(items.front()).at;
+      const Vec3 s_home = std::get<RobotJoint>(items.back()).at;
+      const Vec3 r_i = p.tool.linear() * (s_home - model->description().tool);
+      const Vec3 s = p.tool.translation() + r_i;
+      const Vec3 u = (s - b).normalized();
+      J.row(l) << u.transpose(), r_i.cross(u).transpose();
+    }
+    const Mat6 expected = k * J.transpose() * J;
+    EXPECT_LT((K->stiffness - expected).norm(), 1e-9 * expected.norm());
+  }
+}
+
+// The Delta with rigid links and parallelograms and its motor springs: the translational stiffness
+// is k_a J^T J, J = d(theta)/dp from the closed-form loop closure |W_i - E_i(theta_i)| = forearm;
+// the rotations are rigid. The actuated angles of the generic kinematics equal the closed-form
+// roots on the home branch at every point of a grid walked as a map walks it (no branch jump).
+TEST(RobotFiles, DeltaMatchesClosedForm) {
+  // Rigid arms and forearms: the same file with stiff beams would still bend a little, so the
+  // check builds the chains without link springs (the model's joints and actuators only).
+  auto model = std::make_shared<const RobotModel>(load("delta.yaml"));
+  const double R = param(*model, "base_radius") / 1e3, a = param(*model, "arm") / 1e3,
+               b = param(*model, "forearm") / 1e3, r = param(*model, "platform_radius") / 1e3;
+  const double ka = param(*model, "motor_stiffness") * 1e-3;  // N mm/rad -> N m/rad
+  RobotDescription rigid = model->description();
+  for (RobotLeg& leg : rigid.legs)
+    for (auto& item : leg.items)
+      if (auto* link = std::get_if<RobotLink>(&item)) link->spring.reset();
+  auto rigid_model = make_robot_model(rigid);
+  ASSERT_TRUE(rigid_model.ok()) << rigid_model.status().message();
+  RobotData data = make_robot_data(*rigid_model);
+  RobotPosture p = rigid_model->home();
+  int compared = 0;
+  for (double z = -0.95; z <= -0.55; z += 0.1)
+    for (double x = -0.3; x <= 0.3001; x += 0.1)
+      for (double y = -0.3; y <= 0.3001; y += 0.1) {
+        const Vec3 point(x, y, z);
+        // Closed form per leg i (turned by 120 deg i): E = shoulder + a (cos t, 0, -sin t) in the
+        // leg's frame, W = p + r e_x; wx cos t - wz sin t = (|w|^2 + a^2 - b^2) / (2a), w = W - shoulder.
+        Mat3 dg_dp, dg_dt = Mat3::Zero();
+        Vec3 theta;
+        bool reachable = true;
+        for (int i = 0; i < 3; ++i) {
+          const Mat3 Rz = Eigen::AngleAxisd(2.0 * M_PI * i / 3.0, Vec3::UnitZ()).toRotationMatrix();
+          const Vec3 w = Rz.transpose() * point + Vec3(r - R, 0, 0);
+          const double c = (w.squaredNorm() + a * a - b * b) / (2 * a), A = w.x(), B = -w.z();
+          const double rho = std::hypot(A, B);
+          if (std::abs(c) > rho) {
+            reachable = false;
+            break;
+          }
+          theta(i) = std::atan2(B, A) - std::acos(c / rho);  // the root of the home drawing (0 at home)
+          const Vec3 E(a * std::cos(theta(i)), 0, -a * std::sin(theta(i)));
+          const Vec3 dE(-a * std::sin(theta(i)), 0, -a * std::cos(theta(i)));
+          dg_dp.row(i) = (Rz * (w - E)).transpose();  // d/dp of |w - E|^2 / 2
+          dg_dt(i, i) = -(w - E).dot(dE);
+        }
+        const KinematicsResult k = solve_posture(*rigid_model, point, p, data, compared > 0);
+        if (!reachable) continue;
+        if (std::abs(theta.maxCoeff()) > 80 * M_PI / 180 || std::abs(theta.minCoeff()) > 80 * M_PI / 180) continue;
+        ASSERT_EQ(k.status, KinematicsStatus::kOk) << k.message << " at " << point.transpose();
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(p.q(rigid_model->leg_offset(i)), theta(i), 1e-10);
+        const Mat3 J = -dg_dt.inverse() * dg_dp;  // dtheta/dp
+        const Mat3 expected = ka * J.transpose() * J;
+        auto K = vjm::platform_unloaded_stiffness(robot_vjm_chains(*rigid_model, p));
+        ASSERT_TRUE(K.ok());
+        EXPECT_EQ(K->rigid_directions.size(), 3u);
+        EXPECT_LT((K->stiffness.topLeftCorner<3, 3>() - expected).norm(), 1e-9 * expected.norm())
+            << "at " << point.transpose();
+        ++compared;
+      }
+  EXPECT_GT(compared, 100);
+}
+
+// The generic five-bar and the built-in kernel's VJM (working mode +-, assembly up: the file's home
+// drawing) at every point of a grid: the same status, and the same 6x6 to 1e-9 relative.
+TEST(RobotFiles, FiveBarEqualsBuiltInKernel) {
+  RobotKernelOptions o;
+  o.model = std::make_shared<const RobotModel>(load("five_bar.yaml"));
+  const auto generic = make_robot_kernel(o);
+  FiveBarKernelOptions f;
+  f.mode = WorkingMode{1, -1};
+  f.method = StiffnessMethod::kVjm;
+  const auto builtin = make_five_bar_kernel(f);
+  int ok = 0;
+  for (double x = -0.2; x <= 0.2001; x += 0.01)
+    for (double y = 0.0; y <= 0.2001; y += 0.01) {
+      const Vec3 point(x, y, 0);
+      const PostureResult g = generic->evaluate(point), e = builtin->evaluate(point);
+      if (e.status == PostureStatus::kOk && e.singularity_measure > 0.01) {
+        ASSERT_EQ(g.status, PostureStatus::kOk) << point.transpose();
+        EXPECT_LT((g.stiffness - e.stiffness).norm(), 1e-9 * e.stiffness.norm()) << point.transpose();
+        ++ok;
+      } else if (e.status == PostureStatus::kUnreachable) {
+        EXPECT_NE(g.status, PostureStatus::kOk) << point.transpose();
+      }
+    }
+  EXPECT_GT(ok, 50);
+}
+
+// Each check of a robot file fails with its message on a planted fault.
+std::string write_robot(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+const char* const kGoodPlanar = R"(robot: test 3-RPR
+units: mm-N-s
+params: {a: 300, px: 25, py: 43.3}
+planar: true
+task: [x, y, rz]
+tool: [0, 0, 0]
+legs:
+  - copies: 3
+    chain:
+      - revolute: {at: [a, 0, 0], axis: [0, 0, 1]}
+      - prismatic: {at: [a, 0, 0], axis: [px - a, py, 0], actuated: true, stiffness: 1e4}
+      - link: {to: [px, py, 0]}
+      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}
+)";
+
+TEST(RobotFiles, GoodPlanarFileReads) {
+  auto m = io::read_robot_model(write_robot("good.yaml", kGoodPlanar));
+  ASSERT_TRUE(m.ok()) << m.status().message();
+  EXPECT_EQ(m->num_coordinates(), 9);
+}
+
+TEST(RobotFiles, PlantedFaultsNamed) {
+  struct Case {
+    std::string from, to, message;
+  };
+  const Case cases[] = {
+      {"      - link: {to: [px, py, 0]}", "      - link: {to: [px, py, 0], length: 20}",
+       "between its ends in the drawing, `length` says 20 mm"},
+      {", actuated: true, stiffness: 1e4", "", "0 actuated joints for 3 task coordinates"},
+      {"actuated: true, ", "", "'stiffness' is the actuator's"},
+      {"axis: [0, 0, 1]}\n      - prismatic", "axis: [0, 0, 0]}\n      - prismatic", "the zero vector"},
+      {"params: {a: 300,", "params: {a: 300 +,", "cannot evaluate"},
+      {"task: [x, y, rz]", "task: [x, y]", "3 actuated joints for 2 task coordinates"},
+      {"      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}\n", "", "over-constrain"},
+      {"axis: [0, 0, 1]}\n      - prismatic", "axis: [1, 0, 0]}\n      - prismatic", "a planar robot has revolute"},
+      {"copies: 3", "copies: 2.5", "whole number"},
+      {"revolute: {at: [a, 0, 0]", "revolute: {at: [b, 0, 0]", "cannot evaluate"},
+  };
+  for (const Case& c : cases) {
+    std::string text = kGoodPlanar;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    auto m = io::read_robot_model(write_robot("bad.yaml", text));
+    ASSERT_FALSE(m.ok()) << c.message;
+    EXPECT_NE(m.status().message().find(c.message), std::string::npos) << m.status().message();
+    EXPECT_NE(m.status().message().find("bad.yaml"), std::string::npos) << m.status().message();
+  }
+  // A parameter set from outside must exist.
+  auto m = io::read_robot_model(write_robot("good.yaml", kGoodPlanar), {{"b", 1.0}});
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.status().message().find("no parameter 'b'"), std::string::npos) << m.status().message();
+}
+
+// A leg with two spherical joints spins about itself: the count check names the idle motion.
+TEST(RobotFiles, IdleMotionNamed) {
+  std::string text = kGoodPlanar;
+  auto m = io::read_robot_model(write_robot("idle.yaml", R"(robot: idle
+task: [x, y, z]
+tool: [0, 0, 1]
+legs:
+  - copies: 3
+    chain:
+      - revolute: {at: [1, 0, 0], axis: [0, 1, 0], actuated: true}
+      - spherical: {at: [2, 0, 0]}
+      - spherical: {at: [0.2, 0, 1]}
+)"));
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.status().message().find("idle motions"), std::string::npos) << m.status().message();
+}
+
+}  // namespace
+}  // namespace kinestat
