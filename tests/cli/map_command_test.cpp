@@ -210,3 +210,32 @@ TEST(MapCommand, EveryPointFailedIsAnErrorAndWritesNothing) {
 
 }  // namespace
 }  // namespace kinestat::cli
+
+namespace kinestat::cli {
+namespace {
+
+// A robot file maps with no option but the step (the region is its `workspace:`), and the JSON's
+// values are those of the library's kernel at the same point.
+TEST(MapCommand, RobotFileWithItsWorkspace) {
+  const std::string file = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/planar_3rpr.yaml";
+  const CliRun r = run_cli({"map", file, "--step", "50", "--json", "-"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j.dump().find("planar 3-RPR"), std::string::npos);
+  // --orientation on a robot without orientation in its task, --region on a robot: exit 2.
+  const std::string delta = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/delta.yaml";
+  CliRun bad = run_cli({"map", delta, "--step", "50", "--orientation", "0,0,5"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("commands no orientation"), std::string::npos) << bad.err;
+  bad = run_cli({"map", delta, "--step", "50", "--region", "0:1,0:1"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--region"), std::string::npos) << bad.err;
+  // A 3-PRS commands no x or y: a box that spans x is refused with the form to use.
+  bad = run_cli({"map", std::string(KINESTAT_SOURCE_DIR) + "/models/robots/prs_head.yaml", "--step", "5",
+                 "--box", "-10:10,0,300:400"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("commands no x"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace kinestat::cli
