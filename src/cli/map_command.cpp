@@ -41,7 +41,9 @@ struct MapArgs {
   std::string mode = "++", assembly = "up", method = "msa";
   std::vector<std::string> region, box;  // "lo:hi" per axis, mm
   std::optional<double> step;            // mm
-  std::vector<double> load, wrench, orientation;
+  std::vector<double> load, wrench, orientation, position;
+  std::vector<std::string> angles;        // "lo:hi" per rotation, deg
+  std::optional<double> angle_step;       // deg
   std::optional<double> min_stiffness;   // N/mm
   double near_singular = MapOptions{}.near_singular_threshold;
   std::size_t max_points = MapOptions{}.max_points;
@@ -50,13 +52,15 @@ struct MapArgs {
   bool quiet = false;
   // Options given on the command line, to refuse those that do not apply to the target.
   CLI::Option *mode_opt = nullptr, *assembly_opt = nullptr, *method_opt = nullptr, *region_opt = nullptr,
-              *box_opt = nullptr, *wrench_opt = nullptr, *orientation_opt = nullptr;
+              *box_opt = nullptr, *wrench_opt = nullptr, *orientation_opt = nullptr,
+              *angles_opt = nullptr, *position_opt = nullptr, *angle_step_opt = nullptr;
 };
 
 // What the target needs before the grid: the kernel, the ranges, the curves, words for messages.
 struct MapSetup {
   std::unique_ptr<PostureKernel> kernel;
-  std::array<MapRange, 3> ranges{};
+  std::array<MapRange, 3> ranges{};  // m, or rad for an orientation map
+  bool angular = false;              // an orientation map: axes rx, ry, rz, --angle-step in deg
   const char* range_option = "";
   bool with_load = false;
   std::vector<MapCurve> curves;
@@ -83,7 +87,8 @@ Status parse_load(const MapArgs& a, std::optional<Vec6>& displacement, std::opti
 }
 
 StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
-  for (const CLI::Option* o : {a.box_opt, a.wrench_opt, a.orientation_opt})
+  for (const CLI::Option* o : {a.box_opt, a.wrench_opt, a.orientation_opt, a.angles_opt, a.position_opt,
+                               a.angle_step_opt})
     if (Status s = refuse_if_given(o, "applies to model files; the five-bar takes --region x0:x1,y0:y1 (mm) and "
                                       "--load Fx,Fy,Fz,Mx,My,Mz (N, N mm)");
         !s.ok())
@@ -121,7 +126,8 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
 }
 
 StatusOr<MapSetup> model_setup(const MapArgs& a) {
-  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt, a.orientation_opt})
+  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt, a.orientation_opt,
+                               a.angles_opt, a.position_opt, a.angle_step_opt})
     if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a model file takes --box, --step, "
                                       "--load or --wrench");
         !s.ok())
@@ -153,15 +159,21 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   return s;
 }
 
+// "[z, rx, ry]"
+std::string task_text(const RobotDescription& d) {
+  std::string out;
+  for (TaskCoordinate c : d.task) out += fmt::format("{}{}", out.empty() ? "" : ", ", to_string(c));
+  return "[" + out + "]";
+}
+
 // A robot file (docs/robots.md): the box from --box or the file's `workspace:`, the orientation
 // task coordinates from --orientation.
 StatusOr<MapSetup> robot_setup(const MapArgs& a) {
   for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt})
     if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a robot file takes --box, --step, "
-                                      "--orientation, --load or --wrench");
+                                      "--orientation, --angles, --angle-step, --position, --load or --wrench");
         !s.ok())
       return s;
-  if (!a.step) return Status::Invalid("--step MM is required with a robot file");
   RobotKernelOptions o;
   if (Status st = parse_load(a, o.displacement, o.wrench); !st.ok()) return st;
   auto model = io::read_robot_model(a.target);
@@ -170,36 +182,65 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a) {
   const RobotDescription& d = shared->description();
   o.model = shared;
   o.task = shared->home_task();
-  if (!a.orientation.empty()) {
-    if (a.orientation.size() != 3) return Status::Invalid("--orientation takes three angles rx,ry,rz (deg)");
+  // Fixed task values: the orientation (deg) and the position (mm) of the coordinates not mapped.
+  auto set_fixed = [&](const std::vector<double>& values, int first, double scale, const char* option) -> Status {
+    if (values.empty()) return Status::Ok();
+    if (values.size() != 3) return Status::Invalid(fmt::format("{} takes three values", option));
     bool any = false;
-    for (std::size_t t = 0; t < d.task.size(); ++t)
-      if (d.task[t] >= TaskCoordinate::kRx) {
-        const double deg = a.orientation[static_cast<int>(d.task[t]) - 3];
-        if (!std::isfinite(deg)) return Status::Invalid("--orientation: an angle is not finite");
-        o.task(static_cast<int>(t)) = deg * M_PI / 180.0;
-        any = true;
-      }
-    if (!any) return Status::Invalid(fmt::format("--orientation: {} commands no orientation (its task has no rx, ry "
-                                                 "or rz)", d.name));
-  }
+    for (std::size_t t = 0; t < d.task.size(); ++t) {
+      const int c = static_cast<int>(d.task[t]) - first;
+      if (c < 0 || c > 2) continue;
+      if (!std::isfinite(values[c])) return Status::Invalid(fmt::format("{}: a value is not finite", option));
+      o.task(static_cast<int>(t)) = values[c] * scale;
+      any = true;
+    }
+    if (!any)
+      return Status::Invalid(fmt::format("{}: {} commands no {} (its task is {})", option, d.name,
+                                         first == 3 ? "orientation" : "position", task_text(d)));
+    return Status::Ok();
+  };
+  if (Status st = set_fixed(a.orientation, 3, M_PI / 180.0, "--orientation"); !st.ok()) return st;
+  if (Status st = set_fixed(a.position, 0, kMm, "--position"); !st.ok()) return st;
   MapSetup s;
-  s.range_option = "--box";
+  s.angular = !a.angles.empty() || (a.box.empty() && d.workspace && d.workspace_angular);
+  if (s.angular && !a.orientation.empty())
+    return Status::Invalid("--orientation fixes the angles a map over orientation (--angles) varies; give one");
+  if (!s.angular && !a.position.empty())
+    return Status::Invalid("--position fixes the position of a map over orientation (--angles); a position map "
+                           "takes --box");
+  if (s.angular ? !a.angle_step : !a.step)
+    return Status::Invalid(s.angular ? "--angle-step DEG is required for a map over orientation"
+                                     : "--step MM is required with a robot file");
+  if (s.angular && a.step) return Status::Invalid("--step (mm) is for position maps; give --angle-step (deg)");
+  s.range_option = s.angular ? "--angles" : "--box";
+  if (!a.box.empty() && !a.angles.empty()) return Status::Invalid("give --box (a position map) or --angles, not both");
   if (!a.box.empty()) {
     auto r = parse_ranges_mm(a.box, 3, "--box", "x0:x1,y0:y1,z0:z1");
     if (!r.ok()) return r.status();
     s.ranges = {(*r)[0], (*r)[1], (*r)[2]};
-  } else if (d.workspace) {
+  } else if (!a.angles.empty()) {
+    // The same lo:hi syntax as --box, in degrees.
+    auto r = parse_ranges_mm(a.angles, 3, "--angles", "rx0:rx1,ry0:ry1,rz0:rz1 (deg)");
+    if (!r.ok()) return r.status();
+    for (int i = 0; i < 3; ++i) s.ranges[i] = {(*r)[i].lo / kMm * M_PI / 180.0, (*r)[i].hi / kMm * M_PI / 180.0};
+  } else if (d.workspace && d.workspace_angular == s.angular) {
     for (int i = 0; i < 3; ++i) s.ranges[i] = {(*d.workspace)[i].first, (*d.workspace)[i].second};
   } else {
-    return Status::Invalid(fmt::format("{}: no `workspace:` in the file; give --box x0:x1,y0:y1,z0:z1 (mm)", a.target));
+    return Status::Invalid(fmt::format("{}: no `workspace:` in the file for this map; give {}", a.target,
+                                       s.angular ? "--angles rx0:rx1,ry0:ry1,rz0:rz1 (deg)"
+                                                 : "--box x0:x1,y0:y1,z0:z1 (mm)"));
   }
-  // An axis that sets no task coordinate must be flat (a planar robot's z).
-  const std::array<int, 3> axes = default_map_axes(*shared);
+  // The grid's axes set the task's x, y, z (or rx, ry, rz); an axis that sets none must be flat.
+  std::array<int, 3> axes{-1, -1, -1};
+  for (std::size_t t = 0; t < d.task.size(); ++t) {
+    const int c = static_cast<int>(d.task[t]) - (s.angular ? 3 : 0);
+    if (c >= 0 && c < 3) axes[c] = static_cast<int>(t);
+  }
+  o.map_axes = axes;
   for (int i = 0; i < 3; ++i)
     if (axes[i] < 0 && s.ranges[i].lo != s.ranges[i].hi)
-      return Status::Invalid(fmt::format("{} commands no {}: give a single value for it in --box (e.g. {}0)", d.name,
-                                         "xyz"[i], i == 0 ? "" : i == 1 ? "x0:x1," : "x0:x1,y0:y1,"));
+      return Status::Invalid(fmt::format("{} commands no {}{} (its task is {}): give a single value for it in {}",
+                                         d.name, s.angular ? "r" : "", "xyz"[i], task_text(d), s.range_option));
   s.with_load = o.displacement || o.wrench;
   s.workspace_hint = fmt::format("no posture of {} closes there on the home posture's branch", d.name);
   if (Status st = validate(o); !st.ok()) return st;
@@ -207,42 +248,54 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a) {
   return s;
 }
 
-// "x -100:100 mm, y 0:50 mm, z = 0 mm"
-std::string ranges_text(const std::array<MapRange, 3>& ranges) {
+// "x -100:100 mm, y 0:50 mm, z = 0 mm" (or "rx -10:10 deg, ..." on a grid of angles)
+std::string ranges_text(const std::array<MapRange, 3>& ranges, const MapGrid& axes) {
   std::string out;
   for (int i = 0; i < 3; ++i) {
     const MapRange& r = ranges[i];
-    out += r.lo == r.hi ? fmt::format("{}{} = {:g} mm", i ? ", " : "", "xyz"[i], r.lo / kMm)
-                        : fmt::format("{}{} {:g}:{:g} mm", i ? ", " : "", "xyz"[i], r.lo / kMm, r.hi / kMm);
+    const UnitDisplay u = axis_display(axes, i);
+    out += r.lo == r.hi ? fmt::format("{}{} = {:g} {}", i ? ", " : "", axes.names[i], r.lo * u.scale, u.unit)
+                        : fmt::format("{}{} {:g}:{:g} {}", i ? ", " : "", axes.names[i], r.lo * u.scale,
+                                      r.hi * u.scale, u.unit);
   }
   return out;
 }
 
-std::string summary_text(const WorkspaceMap& map, double step_mm) {
+// The axes' kind and names of a setup's grid.
+MapGrid grid_axes(bool angular) {
+  MapGrid g;
+  if (angular) {
+    g.angular = {true, true, true};
+    g.names = {"rx", "ry", "rz"};
+  }
+  return g;
+}
+
+std::string summary_text(const WorkspaceMap& map, const std::string& step) {
   const MapGrid& g = map.grid;
   std::array<MapRange, 3> extent;
   for (int i = 0; i < 3; ++i) extent[i] = {g.origin(i), g.origin(i) + (g.dimensions[i] - 1) * g.spacing(i)};
-  std::string out = fmt::format("{}\n  grid {} x {} x {} = {} points, step {:g} mm: {}\n", map.description,
-                                g.dimensions[0], g.dimensions[1], g.dimensions[2], g.num_points(), step_mm,
-                                ranges_text(extent));
+  std::string out = fmt::format("{}\n  grid {} x {} x {} = {} points, step {}: {}\n", map.description,
+                                g.dimensions[0], g.dimensions[1], g.dimensions[2], g.num_points(), step,
+                                ranges_text(extent, g));
   out += "  points:";
   for (int s = 0; s < kNumMapPointStatuses; ++s)
     out += fmt::format("{} {} {}", s ? "," : "", map.status_counts[s], to_string(static_cast<MapPointStatus>(s)));
   out += fmt::format(" (near-singular: singularity measure < {:g})\n", map.near_singular_threshold);
   const bool volume = g.num_varying_axes() == 3;
-  const double unit = volume ? 1e-9 : 1e-6;  // m^3 or m^2 per mm^3 or mm^2
-  const char* unit_name = volume ? "mm^3" : "mm^2";
-  out += fmt::format("  reachable {} {:.6g} {}", volume ? "volume" : "area", map.reachable_measure / unit, unit_name);
+  const UnitDisplay m = measure_display(g);
+  out += fmt::format("  reachable {} {:.6g} {}", volume ? "volume" : "area", map.reachable_measure * m.scale, m.unit);
   if (map.min_stiffness)
     out += fmt::format("; k_t_min >= {:g} N/mm on {:.6g} {} ({:.1f}% of the reachable)", *map.min_stiffness * kMm,
-                       map.stiff_measure / unit, unit_name,
+                       map.stiff_measure * m.scale, m.unit,
                        map.reachable_measure > 0 ? 100.0 * map.stiff_measure / map.reachable_measure : 0.0);
+  const UnitDisplay u = axis_display(g, 0);  // the three axes share their kind
   out += fmt::format("\n  {:<20} {:<20} {:>12} {:>12} {:>12}  {}\n", "field", "unit", "min", "max", "mean",
-                     "min at (mm)");
+                     fmt::format("min at ({})", u.unit));
   for (const FieldValues& f : map.fields) {
     const io::MapFieldDisplay d = io::map_field_display(f.field);
     const FieldSummary& s = f.summary;
-    const Vec3 at = s.argmin / kMm;
+    const Vec3 at = s.argmin * u.scale;
     out += fmt::format("  {:<20} {:<20} {:>12.5g} {:>12.5g} {:>12.5g}  ({:g}, {:g}, {:g})\n", field_info(f.field).name,
                        d.unit, s.min * d.scale, s.max * d.scale, s.mean * d.scale, at.x(), at.y(), at.z());
   }
@@ -255,6 +308,8 @@ int run_map(MapArgs& a, Context& ctx) {
   if (five_bar && !a.step) a.step = 5.0;
   if (a.step && !(*a.step > 0.0 && std::isfinite(*a.step)))
     return fail(Status::Invalid(fmt::format("--step {:g} mm: the grid step must be positive", *a.step)));
+  if (a.angle_step && !(*a.angle_step > 0.0 && std::isfinite(*a.angle_step)))
+    return fail(Status::Invalid(fmt::format("--angle-step {:g} deg: the grid step must be positive", *a.angle_step)));
   if (a.min_stiffness && !(*a.min_stiffness >= 0.0 && std::isfinite(*a.min_stiffness)))
     return fail(Status::Invalid(fmt::format("--min-stiffness {:g} N/mm: give a stiffness >= 0", *a.min_stiffness)));
   if (!(a.near_singular >= 0.0 && a.near_singular <= 1.0))
@@ -280,25 +335,32 @@ int run_map(MapArgs& a, Context& ctx) {
   if (*field == MapField::kNewtonIterations && !loaded_mode)
     return fail(Status::Invalid(fmt::format("--field {} needs the loaded mode of a model (--load or --wrench)", a.field)));
 
+  // The grid's step in SI and as the user gave it.
+  const double step = setup->angular ? *a.angle_step * M_PI / 180.0 : *a.step * kMm;
+  const std::string step_text = setup->angular ? fmt::format("{:g} deg", *a.angle_step) : fmt::format("{:g} mm", *a.step);
+  const char* step_option = setup->angular ? "--angle-step" : "--step";
   // The point count is estimated before anything is allocated.
   double points = 1.0;
-  for (const MapRange& r : setup->ranges) points *= map_axis_points(r, *a.step * kMm);
-  const std::string region = ranges_text(setup->ranges);
+  for (const MapRange& r : setup->ranges) points *= map_axis_points(r, step);
+  const std::string region = ranges_text(setup->ranges, grid_axes(setup->angular));
   if (points > static_cast<double>(a.max_points)) {
     // The time it would take, at the sweep kernels' rates per thread (benchmarks/README.md: about
     // 2e5 postures/s unloaded, 1e4 loaded), so that the limit reads as a cost, not a rule.
     const int threads = a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const double minutes = points / ((setup->with_load ? 1e4 : 2e5) * threads) / 60.0;
-    return fail(Status::Invalid(fmt::format("--step {:g} mm over {} gives {:.3g} points (about {:.2g} min on {} "
-                                            "thread{}), more than --max-points {}; use a larger --step or a smaller "
+    return fail(Status::Invalid(fmt::format("{} {} over {} gives {:.3g} points (about {:.2g} min on {} "
+                                            "thread{}), more than --max-points {}; use a larger {} or a smaller "
                                             "{}, or raise --max-points",
-                                            *a.step, region, points, minutes, threads, threads > 1 ? "s" : "",
-                                            a.max_points, setup->range_option)));
+                                            step_option, step_text, region, points, minutes, threads,
+                                            threads > 1 ? "s" : "", a.max_points, step_option, setup->range_option)));
   }
-  auto grid = make_map_grid(setup->ranges, *a.step * kMm, a.max_points);
+  auto grid = make_map_grid(setup->ranges, step, a.max_points);
   if (!grid.ok())
-    return fail(Status::Invalid(fmt::format("{} with --step {:g} mm: {}", setup->range_option, *a.step,
+    return fail(Status::Invalid(fmt::format("{} with {} {}: {}", setup->range_option, step_option, step_text,
                                             grid.status().message())));
+  const MapGrid axes = grid_axes(setup->angular);
+  grid->angular = axes.angular;
+  grid->names = axes.names;
 
   MapOptions options;
   options.near_singular_threshold = a.near_singular;
@@ -354,7 +416,7 @@ int run_map(MapArgs& a, Context& ctx) {
     }
   }
   if (!a.quiet && !json_to_stdout) {
-    ctx.out << summary_text(*map, *a.step);
+    ctx.out << summary_text(*map, step_text);
     for (const std::string& w : written) ctx.out << "  wrote " << w << "\n";
   }
   return kExitOk;
@@ -380,6 +442,15 @@ void register_map_command(CLI::App& app, Context& ctx) {
                                "model: x0:x1,y0:y1,z0:z1 in mm (a single value for one axis: a 2D slice)")
                    ->delimiter(',');
   cmd->add_option("--step", a->step, "grid step in mm (fivebar default 5)");
+  a->angles_opt = cmd->add_option("--angles", a->angles,
+                                  "robot file: a map over the orientation rx0:rx1,ry0:ry1,rz0:rz1 in deg (a single "
+                                  "value: fixed), at --position")
+                      ->delimiter(',');
+  a->angle_step_opt = cmd->add_option("--angle-step", a->angle_step, "robot file: the --angles grid step in deg");
+  a->position_opt = cmd->add_option("--position", a->position,
+                                    "robot file: the tool position x,y,z in mm of a map over orientation (default: "
+                                    "home's)")
+                        ->delimiter(',');
   a->orientation_opt = cmd->add_option("--orientation", a->orientation,
                                        "robot file: the tool's orientation rx,ry,rz in deg (Rz Ry Rx, base axes) for "
                                        "the task's angles at every point (default: home's, 0)")

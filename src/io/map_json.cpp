@@ -20,7 +20,9 @@ json map_grid_to_json(const MapGrid& g) {
           {"spacing", vec3(g.spacing)},
           {"dimensions", g.dimensions},
           {"num_points", g.num_points()},
-          {"units", "m"},
+          {"units", g.angular[0] || g.angular[1] || g.angular[2] ? "per axis (axis_units)" : "m"},
+          {"axis_names", {g.names[0], g.names[1], g.names[2]}},
+          {"axis_units", {axis_unit(g, 0), axis_unit(g, 1), axis_unit(g, 2)}},
           {"order", "x fastest: point i + nx (j + ny k) is origin + (i dx, j dy, k dz)"}};
 }
 
@@ -55,16 +57,16 @@ json workspace_map_to_json(const WorkspaceMap& map) {
   j["status"] = std::move(status);
   j["status_codes"] = std::move(codes);
 
-  const char* measure_unit = g.num_varying_axes() == 3 ? "m^3" : "m^2";
+  const std::string measure = measure_unit(g);
   json summary = {{"fields", std::move(field_summary)},
                   {"status_counts", std::move(counts)},
                   {"near_singular_threshold", map.near_singular_threshold},
-                  {"reachable", {{"value", map.reachable_measure}, {"unit", measure_unit}}}};
+                  {"reachable", {{"value", map.reachable_measure}, {"unit", measure}}}};
   if (map.min_stiffness)
     summary["stiff"] = {{"min_stiffness", *map.min_stiffness},
                         {"min_stiffness_unit", "N/m"},
                         {"value", map.stiff_measure},
-                        {"unit", measure_unit},
+                        {"unit", measure},
                         {"meaning", "points with values and k_t_min >= min_stiffness"}};
   j["summary"] = std::move(summary);
 

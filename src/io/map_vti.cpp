@@ -53,6 +53,9 @@ Status write_map_vti(const std::string& path, const mechanisms::WorkspaceMap& ma
     if (f.field == mechanisms::MapField::kTranslationalMin) image->GetPointData()->SetActiveScalars(vti_array_name(f.field).c_str());
 
   add_vti_string(image, "length_unit", "m");
+  const mechanisms::MapGrid& grid = map.grid;
+  add_vti_string(image, "axis_names", fmt::format("{},{},{}", grid.names[0], grid.names[1], grid.names[2]));
+  add_vti_string(image, "axis_units", fmt::format("{},{},{}", mechanisms::axis_unit(grid, 0), mechanisms::axis_unit(grid, 1), mechanisms::axis_unit(grid, 2)));
   add_vti_string(image, "description", map.description);
   std::string codes;
   for (int s = 0; s < mechanisms::kNumMapPointStatuses; ++s)

@@ -55,13 +55,19 @@ class RobotReader : public YamlFields {
     }
     d.tool = point(require(root, "file", "tool"), "tool", "tool");
     if (const YAML::Node w = root["workspace"]; w.IsDefined()) {
-      check_map(w, "workspace", {"x", "y", "z"});
+      // {x, y, z} (lengths) or {rx, ry, rz} (deg: an orientation map at the home position).
+      d.workspace_angular = w.IsMap() && w["rx"].IsDefined();
+      if (d.workspace_angular) check_map(w, "workspace", {"rx", "ry", "rz"});
+      else check_map(w, "workspace", {"x", "y", "z"});
       std::array<std::pair<double, double>, 3> box;
       for (int a = 0; a < 3; ++a) {
-        const char* key = a == 0 ? "x" : a == 1 ? "y" : "z";
+        static constexpr const char* kKeys[2][3] = {{"x", "y", "z"}, {"rx", "ry", "rz"}};
+        const char* key = kKeys[d.workspace_angular ? 1 : 0][a];
         const YAML::Node r = require(w, "workspace", key);
         if (!r.IsSequence() || r.size() != 2) fail(r, "workspace", fmt::format("'{}' must be [low, high]", key));
-        box[a] = {length(r[0], "workspace", key), length(r[1], "workspace", key)};
+        box[a] = d.workspace_angular
+                     ? std::pair{expr(r[0], "workspace", key) * kDeg, expr(r[1], "workspace", key) * kDeg}
+                     : std::pair{length(r[0], "workspace", key), length(r[1], "workspace", key)};
         if (!(box[a].first <= box[a].second)) fail(r, "workspace", fmt::format("'{}': low above high", key));
       }
       d.workspace = box;
@@ -248,7 +254,7 @@ class RobotReader : public YamlFields {
     }
     if (n["beam"].IsDefined() && n["spring"].IsDefined()) fail(n, label, "give 'beam' or 'spring', not both");
     if (const YAML::Node b = n["beam"]; b.IsDefined()) {
-      check_map(b, label + " beam", {"material", "section", "theory", "roll", "length", "x"});
+      check_map(b, label + " beam", {"material", "section", "theory", "roll", "length", "x", "count"});
       const Material m = named(materials_, require(b, label, "material"), label, "material");
       const Section s = named(sections_, require(b, label, "section"), label, "section");
       BeamTheory theory = BeamTheory::kEulerBernoulli;
@@ -266,7 +272,13 @@ class RobotReader : public YamlFields {
       if (!(x.norm() > 0.0) || !(L > 0.0))
         fail(b, label, "the link has no length in the drawing; give the beam's `x` direction and `length`");
       const double roll = b["roll"].IsDefined() ? expr(b["roll"], label, "roll") * kDeg : 0.0;
-      l.spring = RobotSpring{l.label, vjm::cantilever_spring(m, s, L, theory), beam_axes(x, roll)};
+      // `count`: identical beams side by side (a parallelogram's bars as one leg): the stiffness times it.
+      double count = 1.0;
+      if (b["count"].IsDefined()) {
+        count = expr(b["count"], label, "count");
+        if (!(count >= 1 && count == std::floor(count))) fail(b["count"], label, "'count' is a whole number >= 1");
+      }
+      l.spring = RobotSpring{l.label, count * vjm::cantilever_spring(m, s, L, theory), beam_axes(x, roll)};
     } else if (const YAML::Node sp = n["spring"]; sp.IsDefined()) {
       const Vec3 x = dir.norm() > 0.0 ? dir : Vec3::UnitX();
       RobotSpring s = spring(sp, l.label, beam_axes(x, 0.0));
@@ -337,7 +349,7 @@ class RobotReader : public YamlFields {
 
   void parse_leg(const YAML::Node& n, int index, RobotDescription& d) {
     const std::string item = fmt::format("legs[{}]", index);
-    check_map(n, item, {"name", "copies", "turn", "chain"});
+    check_map(n, item, {"name", "copies", "turn", "turn_axis", "chain"});
     const bool named_leg = n["name"].IsDefined();
     const std::string name = named_leg ? text(n["name"], item, "name") : "leg";
     int copies = 1;
@@ -349,6 +361,7 @@ class RobotReader : public YamlFields {
     double turn = 0.0;
     if (const YAML::Node t = n["turn"]; t.IsDefined()) turn = expr(t, item, "turn") * kDeg;
     else if (copies > 1) turn = 2.0 * M_PI / copies;
+    const Vec3 turn_axis = n["turn_axis"].IsDefined() ? axis(n["turn_axis"], item, "turn_axis") : Vec3::UnitZ();
     const YAML::Node chain = require(n, item, "chain");
     if (!chain.IsSequence() || chain.size() == 0) fail(chain, item, "'chain' lists the leg's joints and links");
     for (int k = 0; k < copies; ++k) {
@@ -357,7 +370,7 @@ class RobotReader : public YamlFields {
       leg.name = !named_leg ? fmt::format("leg {}", d.legs.size() + 1)
                  : copies > 1 ? fmt::format("{} {}", name, k + 1)
                               : name;
-      const Mat3 R = Eigen::AngleAxisd(k * turn, Vec3::UnitZ()).toRotationMatrix();
+      const Mat3 R = Eigen::AngleAxisd(k * turn, turn_axis).toRotationMatrix();
       Vec3 at = Vec3::Zero();
       int joints = 0, links = 0;
       for (const YAML::Node& e : chain) {

@@ -19,10 +19,12 @@ constexpr double kMm = 1e-3;  // m per mm
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // breaks a plotted line
 
-// "x -100:100 mm" or "x = 0 mm" for axis i of a grid.
+// "x -100:100 mm", "x = 0 mm" or "rx -10:10 deg" for axis i of a grid.
 std::string axis_text(const MapGrid& g, int i) {
-  const double lo = g.origin(i) / kMm, hi = (g.origin(i) + (g.dimensions[i] - 1) * g.spacing(i)) / kMm;
-  return lo == hi ? fmt::format("{} = {:g} mm", "xyz"[i], lo) : fmt::format("{} {:g}:{:g} mm", "xyz"[i], lo, hi);
+  const UnitDisplay u = axis_display(g, i);
+  const double lo = g.origin(i) * u.scale, hi = (g.origin(i) + (g.dimensions[i] - 1) * g.spacing(i)) * u.scale;
+  return lo == hi ? fmt::format("{} = {:g} {}", g.names[i], lo, u.unit)
+                  : fmt::format("{} {:g}:{:g} {}", g.names[i], lo, hi, u.unit);
 }
 
 // The picture's plane: axes a (across) and b (up), the slicing axis c, and the slices drawn (at
@@ -85,15 +87,16 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
   const int nc = g.dimensions[c];
   const std::size_t stride[3] = {1, static_cast<std::size_t>(g.dimensions[0]),
                                  static_cast<std::size_t>(g.dimensions[0]) * g.dimensions[1]};
+  const UnitDisplay ua = axis_display(g, a), ub = axis_display(g, b), uc = axis_display(g, c);
   // Slice k of a field's values, in plot units.
   const auto slice = [&](const std::vector<double>& field_values, double scale, int k) {
     PlotField2D p;
     p.nx = g.dimensions[a];
     p.ny = g.dimensions[b];
-    p.x0 = g.origin(a) / kMm;
-    p.y0 = g.origin(b) / kMm;
-    p.dx = g.spacing(a) / kMm;
-    p.dy = g.spacing(b) / kMm;
+    p.x0 = g.origin(a) * ua.scale;
+    p.y0 = g.origin(b) * ub.scale;
+    p.dx = g.spacing(a) * ua.scale;
+    p.dy = g.spacing(b) * ub.scale;
     p.values.resize(static_cast<std::size_t>(p.nx) * p.ny);
     for (int j = 0; j < p.ny; ++j)
       for (int i = 0; i < p.nx; ++i)
@@ -108,15 +111,15 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
   std::vector<PlotField2D> panels;
   for (int k : slices) {
     PlotField2D p = slice(values, d.scale, k);
-    if (nc > 1) p.title = fmt::format("{} = {:g} mm", "xyz"[c], (g.origin(c) + k * g.spacing(c)) / kMm);
+    if (nc > 1) p.title = fmt::format("{} = {:g} {}", g.names[c], (g.origin(c) + k * g.spacing(c)) * uc.scale, uc.unit);
     if (contour) p.curves.push_back({contour_lines(slice(kt->values, 1.0, k), *map.min_stiffness), "", 1});
     panels.push_back(std::move(p));
   }
   PlotOptions o;
   const char* name = field_info(field).name;
   o.title = workspace_map_png_title(map, field);
-  o.x_label = fmt::format("{} (mm)", "xyz"[a]);
-  o.y_label = fmt::format("{} (mm)", "xyz"[b]);
+  o.x_label = fmt::format("{} ({})", g.names[a], ua.unit);
+  o.y_label = fmt::format("{} ({})", g.names[b], ub.unit);
   o.colorbar_label = fmt::format("{} ({})", name, d.unit);
   o.log_scale = field == MapField::kConditionNumber;
   for (std::size_t i = 0; i < map.curves.size(); ++i) {
@@ -125,7 +128,7 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
     curve.style = static_cast<int>(i % 3);
     for (const std::vector<Vec3>& line : map.curves[i].lines) {
       if (!curve.points.empty()) curve.points.push_back({kNaN, kNaN});
-      for (const Vec3& q : line) curve.points.push_back({q(a) / kMm, q(b) / kMm});
+      for (const Vec3& q : line) curve.points.push_back({q(a) * ua.scale, q(b) * ub.scale});
     }
     o.curves.push_back(std::move(curve));
   }

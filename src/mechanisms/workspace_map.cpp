@@ -75,6 +75,35 @@ std::size_t MapGrid::path_index(std::size_t k) const {
   return x + nx * (y + ny * z);
 }
 
+const char* axis_unit(const MapGrid& g, int axis) { return g.angular[axis] ? "rad" : "m"; }
+
+UnitDisplay axis_display(const MapGrid& g, int axis) {
+  return g.angular[axis] ? UnitDisplay{"deg", 180.0 / M_PI} : UnitDisplay{"mm", 1e3};
+}
+
+namespace {
+// "m^2 rad" from the varying axes' units.
+std::string product_unit(const MapGrid& g, const char* length, const char* angle) {
+  int lengths = 0, angles = 0;
+  for (int a = 0; a < 3; ++a)
+    if (g.dimensions[a] > 1) ++(g.angular[a] ? angles : lengths);
+  auto power = [](const char* u, int n) {
+    return n == 0 ? std::string() : n == 1 ? std::string(u) : fmt::format("{}^{}", u, n);
+  };
+  const std::string l = power(length, lengths), r = power(angle, angles);
+  return l.empty() ? r : r.empty() ? l : l + " " + r;
+}
+}  // namespace
+
+std::string measure_unit(const MapGrid& g) { return product_unit(g, "m", "rad"); }
+
+UnitDisplay measure_display(const MapGrid& g) {
+  double scale = 1.0;
+  for (int a = 0; a < 3; ++a)
+    if (g.dimensions[a] > 1) scale *= axis_display(g, a).scale;
+  return {product_unit(g, "mm", "deg"), scale};
+}
+
 double MapGrid::cell_measure() const {
   double m = 1.0;
   for (int a = 0; a < 3; ++a)

@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
+#include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/mechanisms/robot_kernel.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 #include "kinestat/mechanisms/five_bar_vjm.hpp"
 #include "kinestat/msa/static_analysis.hpp"
@@ -235,6 +237,38 @@ TEST(MapCommand, RobotFileWithItsWorkspace) {
                  "--box", "-10:10,0,300:400"});
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("commands no x"), std::string::npos) << bad.err;
+}
+
+// A map over orientation angles: the grid's axes are rx, ry (rad in JSON, deg on the command line)
+// and each point's k_t_min is the kernel's at the pose (--position, the point's angles).
+TEST(MapCommand, RobotOrientationMap) {
+  const std::string file = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/hexapod.yaml";
+  const CliRun r = run_cli({"map", file, "--angles", "-10:10,-10:10,5", "--angle-step", "10", "--position",
+                            "20,0,820", "--json", "-"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["grid"]["axis_names"][0], "rx");
+  EXPECT_EQ(j["grid"]["axis_units"][1], "rad");
+  EXPECT_EQ(j["summary"]["reachable"]["unit"], "rad^2");
+  auto model = io::read_robot_model(file);
+  ASSERT_TRUE(model.ok());
+  mechanisms::RobotKernelOptions o;
+  o.model = std::make_shared<const mechanisms::RobotModel>(std::move(*model));
+  const auto kernel = mechanisms::make_robot_kernel(o);
+  const double deg = M_PI / 180.0;
+  // Point (i, j) = (2, 0): rx = 10 deg, ry = -10 deg.
+  mechanisms::RobotKernelOptions at = o;
+  at.task = (VecX(6) << 0.02, 0.0, 0.82, 10 * deg, -10 * deg, 5 * deg).finished();
+  const mechanisms::PostureResult p = mechanisms::make_robot_kernel(at)->evaluate(Vec3(0.02, 0.0, 0.82));
+  ASSERT_EQ(p.status, mechanisms::PostureStatus::kOk);
+  // k_t_min = lambda_min(C_tt^-1) (docs/maps.md).
+  const double kt = Eigen::SelfAdjointEigenSolver<Mat3>(Mat3(p.compliance.topLeftCorner<3, 3>()).inverse())
+                        .eigenvalues()(0);
+  EXPECT_NEAR(j["fields"]["k_t_min"][2].get<double>(), kt, 1e-9 * kt);
+  // Without a workspace of angles in the file, --angle-step alone is refused; --step with --angles too.
+  CliRun bad = run_cli({"map", file, "--angles", "-10:10,-10:10,0", "--step", "5"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--angle-step"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -93,8 +93,10 @@ struct RobotDescription {
   // The commanded components of the tool pose. The orientation is R = Rz(rz) Ry(ry) Rx(rx) (angles
   // about the fixed base axes, applied x first), the platform's rotation from home.
   std::vector<TaskCoordinate> task;
-  // The map region (m) when the command line gives none; lo == hi on an axis: a slice.
+  // The map region (m) when the command line gives none; lo == hi on an axis: a slice. With
+  // workspace_angular, ranges of rx, ry, rz (rad) at the home position: an orientation map.
   std::optional<std::array<std::pair<double, double>, 3>> workspace;
+  bool workspace_angular = false;
   // Named parameters and their values in the file's units, for reports and design sweeps.
   std::vector<std::pair<std::string, double>> params;
 };
@@ -128,8 +130,9 @@ const char* to_string(KinematicsStatus s);
 struct KinematicsResult {
   KinematicsStatus status = KinematicsStatus::kUnreachable;
   int iterations = 0;
-  // sigma_min / sigma_max of the length-scaled Jacobians, the smaller of the inverse kinematics'
-  // (legs, Type 1) and the direct kinematics' (platform, Type 2); 0 at a singularity.
+  // The reciprocal condition number (1-norm estimate) of the length-scaled Jacobians, the smaller
+  // of the inverse kinematics' (legs, Type 1) and the direct kinematics' (platform, Type 2); 0 at a
+  // singularity.
   double singularity_measure = 0.0;
   std::string message;  // why, when not kOk
 };

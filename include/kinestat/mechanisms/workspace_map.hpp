@@ -21,9 +21,13 @@ namespace kinestat::mechanisms {
 // A regular grid, x fastest: point i + nx (j + ny k) is origin + (i dx, j dy, k dz). An axis with
 // one point is a slice (a 2D map of a 3D robot, or the five-bar's plane z = 0).
 struct MapGrid {
-  Vec3 origin = Vec3::Zero();                // m
-  Vec3 spacing = Vec3::Ones();               // m, positive
+  Vec3 origin = Vec3::Zero();                // m (rad on an angular axis)
+  Vec3 spacing = Vec3::Ones();               // m (rad), positive
   std::array<int, 3> dimensions{1, 1, 1};   // points per axis
+  // What the axes are: lengths (m) by default; a robot's orientation map has angles (rad) named
+  // rx, ry, rz. Writers label and scale each axis by axis_unit / axis_display (below).
+  std::array<bool, 3> angular{false, false, false};
+  std::array<const char*, 3> names{"x", "y", "z"};
   std::size_t num_points() const;
   int num_varying_axes() const;              // axes with more than one point: 2 (a plane) or 3 (a box)
   Vec3 point(std::size_t index) const;
@@ -34,6 +38,17 @@ struct MapGrid {
   // Area (2D, m^2) or volume (3D, m^3) one point stands for: the product of the varying axes' spacings.
   double cell_measure() const;
 };
+
+// An axis's SI unit ("m" or "rad") and the unit it is shown in with its factor from SI ("mm", 1e3;
+// "deg", 180/pi); the unit of cell_measure() ("m^2", "m rad", "rad^2", ...) and its display form.
+const char* axis_unit(const MapGrid& g, int axis);
+struct UnitDisplay {
+  std::string unit;
+  double scale = 1.0;  // displayed = SI value * scale
+};
+UnitDisplay axis_display(const MapGrid& g, int axis);
+std::string measure_unit(const MapGrid& g);
+UnitDisplay measure_display(const MapGrid& g);
 
 // A closed range of one coordinate (m); lo == hi: that single value.
 struct MapRange {
