@@ -6,6 +6,7 @@ import json
 import os
 import pathlib
 import subprocess
+import threading
 
 import numpy as np
 import pytest
@@ -153,6 +154,11 @@ class QuadraticKernel(mech.PostureKernel):
     def __init__(self):
         super().__init__()
         self.points = []
+        self.next_calls = 0
+
+    def evaluate_next(self, point):
+        self.next_calls += 1
+        return self.evaluate(point)
 
     def evaluate(self, point):
         self.points.append(np.array(point))
@@ -171,6 +177,11 @@ def test_python_kernel_maps():
     m = mech.compute_workspace_map(kernel, grid, options)
     assert m.description == "QuadraticKernel (Python)"
     assert len(kernel.points) == grid.num_points()
+    # One thread, in the map's order: a serpentine path (each point a grid neighbour of the one before,
+    # so evaluate_next after the first) within one chunk of 256 points.
+    assert kernel.next_calls == grid.num_points() - 1
+    steps = np.abs(np.diff(np.array(kernel.points), axis=0)).sum(axis=1)
+    np.testing.assert_allclose(steps, 0.05, rtol=1e-9)
     x = grid.axes[0]
     reach = np.abs(x) <= 0.1 + 1e-12
     assert m.status_counts["ok"] == reach.sum() * 3 and m.status_counts["unreachable"] == (~reach).sum() * 3
@@ -230,3 +241,32 @@ def test_python_kernel_errors_reach_the_caller():
         mech.evaluate_postures(ForgetsStiffness(), np.zeros((1, 3)))
     with pytest.raises(TypeError, match="__init__"):
         NoInit()
+
+
+def test_python_kernels_in_two_threads(delta):
+    """Each map takes the GIL per point of its Python kernel and releases it between: two threads each
+    mapping (one a Python kernel, one the C++ robot kernel) both finish, with the values of one alone."""
+    grid = mech.make_map_grid([(-0.2, 0.2), (0.0, 0.1), 0.0], 0.01)
+    alone = mech.compute_workspace_map(QuadraticKernel(), grid).field("k_t_min")
+    delta_grid = mech.make_map_grid([(-0.1, 0.1), (-0.1, 0.1), -0.8], 0.02)
+    delta_alone = mech.compute_workspace_map(delta.kernel(), delta_grid).field("k_t_min")
+    results, errors = {}, []
+
+    def run(name, kernel, g):
+        try:
+            results[name] = mech.compute_workspace_map(kernel, g).field("k_t_min")
+        except Exception as e:  # noqa: BLE001 (reported below)
+            errors.append(e)
+
+    threads = [threading.Thread(target=run, args=("python", QuadraticKernel(), grid)),
+               threading.Thread(target=run, args=("delta", delta.kernel(), delta_grid))]
+    for t in threads:
+        t.start()
+    run("python 2", QuadraticKernel(), grid)
+    for t in threads:
+        t.join(timeout=120)
+        assert not t.is_alive()
+    assert not errors
+    np.testing.assert_array_equal(results["python"], alone)
+    np.testing.assert_array_equal(results["python 2"], alone)
+    np.testing.assert_array_equal(results["delta"], delta_alone)
