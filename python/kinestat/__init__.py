@@ -9,6 +9,7 @@ The Python API mirrors the C++ API (docs/python.md): the C++ namespaces are subm
     kinestat.fea        meshes and the FEA link stiffness (with the result cache)
     kinestat.mechanisms five-bar, Orthoglide, posture kernels and evaluate_postures
     kinestat.io         structure/model files, JSON and VTK output
+    kinestat.robots     robots from files: robots.load(path) -> RobotModel (solve, kernel for maps)
 
 Units are SI (m, N, rad, Pa) in and out; vectors and matrices are NumPy arrays. Failures raise
 InputError (bad input, the CLI's "FILE:LINE: ..." message), SingularError (with .diagnosis) or
@@ -26,4 +27,4 @@ from ._kinestat import (KinestatError, InputError, SingularError, NotConvergedEr
 # The star import brought the extension's submodules; the package's own modules (which add the
 # pure-Python helpers) take their names.
 del solver, msa, vjm, fea, mechanisms, io  # noqa: F821
-from . import solver, msa, vjm, fea, mechanisms, io  # noqa: E402,F401
+from . import solver, msa, vjm, fea, mechanisms, io, robots  # noqa: E402,F401

@@ -20,6 +20,7 @@
 
 namespace kinestat::mechanisms {
 enum class MapField : int;
+class PostureKernel;
 }
 
 namespace kinestat::python {
@@ -37,6 +38,12 @@ void bind_mechanisms(py::module_& m);
 void bind_io(py::module_& m);
 // Workspace maps and the five-bar design sweep, into kinestat.mechanisms (workspace_map.cpp).
 void bind_workspace_maps(py::module_& mechanisms);
+// Robots from files: RobotModel and its kernel into kinestat.mechanisms, read_robot_model into
+// kinestat.io (robots.cpp).
+void bind_robots(py::module_& mechanisms, py::module_& io);
+// True for a posture kernel written in Python (a subclass of mechanisms.PostureKernel) or a clone
+// of one: its evaluate() needs the GIL, so sweeps run it on one thread (mechanisms.cpp).
+bool is_python_kernel(const mechanisms::PostureKernel& kernel);
 // A map field given as a MapField or by its name ("k_t_min"); InputError listing the names otherwise.
 using MapFieldArg = std::variant<mechanisms::MapField, std::string>;
 mechanisms::MapField map_field(const MapFieldArg& f);

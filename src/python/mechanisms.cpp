@@ -3,7 +3,11 @@
 // come back as NumPy arrays shaped like the grid of points (mechanisms/*.hpp).
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
+#include <string>
 
+#include <Eigen/LU>
 #include <fmt/format.h>
 #include <pybind11/operators.h>
 
@@ -397,13 +401,104 @@ PostureArrays posture_arrays(const std::vector<PostureResult>& r, const std::vec
   return a;
 }
 
+// A posture kernel written in Python: a subclass of mechanisms.PostureKernel whose evaluate(point)
+// returns a PostureResult (and optionally evaluate_next, description). Sweeps call it from C++ with
+// the GIL released, so every call into Python takes the GIL first. Its clones (one per sweep thread)
+// are PythonKernelClone: they share the one Python object, and evaluate_postures and
+// compute_workspace_map run such a kernel on one thread (is_python_kernel), so that it sees the
+// points in the sweep's order, as a C++ kernel's clone would.
+class PyPostureKernel : public PostureKernel {
+ public:
+  PostureResult evaluate(const Vec3& point) override {
+    py::gil_scoped_acquire gil;
+    PYBIND11_OVERRIDE_PURE(PostureResult, PostureKernel, evaluate, point);
+  }
+  PostureResult evaluate_next(const Vec3& point) override {
+    py::gil_scoped_acquire gil;
+    PYBIND11_OVERRIDE(PostureResult, PostureKernel, evaluate_next, point);
+  }
+  std::unique_ptr<PostureKernel> clone() const override;
+  std::string description() const override {
+    py::gil_scoped_acquire gil;
+    if (py::function f = py::get_override(static_cast<const PostureKernel*>(this), "description"))
+      return f().cast<std::string>();
+    const py::object self = py::cast(static_cast<const PostureKernel*>(this), py::return_value_policy::reference);
+    return fmt::format("{} (Python)", py::type::of(self).attr("__qualname__").cast<std::string>());
+  }
+};
+
+// A clone of a Python kernel: the same Python object, kept alive (references change under the GIL).
+class PythonKernelClone final : public PostureKernel {
+ public:
+  explicit PythonKernelClone(const PyPostureKernel* kernel) : kernel_(const_cast<PyPostureKernel*>(kernel)) {
+    py::gil_scoped_acquire gil;
+    self_ = py::cast(static_cast<const PostureKernel*>(kernel), py::return_value_policy::reference);
+  }
+  PythonKernelClone(const PythonKernelClone&) = delete;
+  PythonKernelClone& operator=(const PythonKernelClone&) = delete;
+  ~PythonKernelClone() override {
+    py::gil_scoped_acquire gil;
+    self_ = py::object();
+  }
+  PostureResult evaluate(const Vec3& point) override { return kernel_->evaluate(point); }
+  PostureResult evaluate_next(const Vec3& point) override { return kernel_->evaluate_next(point); }
+  std::unique_ptr<PostureKernel> clone() const override { return std::make_unique<PythonKernelClone>(kernel_); }
+  std::string description() const override { return kernel_->description(); }
+
+ private:
+  PyPostureKernel* kernel_;
+  py::object self_;
+};
+
+std::unique_ptr<PostureKernel> PyPostureKernel::clone() const { return std::make_unique<PythonKernelClone>(this); }
+
+// A PostureResult from Python (a Python kernel's answer): an OK result needs the stiffness; its
+// compliance (when not given) and indices are computed as the C++ kernels compute them.
+PostureResult make_posture_result(PostureStatus status, const std::optional<Mat6>& stiffness,
+                                  const std::optional<Mat6>& compliance, double singularity_measure,
+                                  const std::optional<Vec6>& deflection, int newton_iterations) {
+  PostureResult r;
+  r.status = status;
+  if (!std::isfinite(singularity_measure))
+    raise_status(Status::Invalid("PostureResult: singularity_measure is not finite"));
+  r.singularity_measure = singularity_measure;
+  r.newton_iterations = newton_iterations;
+  if (deflection) {
+    if (!deflection->allFinite()) raise_status(Status::Invalid("PostureResult: deflection is not finite"));
+    r.deflection = *deflection;
+  }
+  if (status == PostureStatus::kOk && !stiffness)
+    raise_status(Status::Invalid("PostureResult: status OK needs the stiffness (6x6, tool point, base axes, SI)"));
+  if (stiffness) {
+    if (!stiffness->allFinite()) raise_status(Status::Invalid("PostureResult: stiffness is not finite"));
+    r.stiffness = *stiffness;
+    r.indices = cartesian_indices(r.stiffness);
+  }
+  if (compliance) {
+    if (!compliance->allFinite()) raise_status(Status::Invalid("PostureResult: compliance is not finite"));
+    r.compliance = *compliance;
+  } else if (stiffness) {
+    const Eigen::FullPivLU<Mat6> lu(r.stiffness);
+    if (status == PostureStatus::kOk && !lu.isInvertible())
+      raise_status(Status::Invalid("PostureResult: the stiffness is singular; give the compliance, or status SINGULAR"));
+    if (lu.isInvertible()) r.compliance = lu.inverse();
+  }
+  return r;
+}
+
 void bind_posture_kernels(py::module_& m) {
   py::enum_<PostureStatus>(m, "PostureStatus")
       .value("OK", PostureStatus::kOk)
       .value("UNREACHABLE", PostureStatus::kUnreachable)
       .value("SINGULAR", PostureStatus::kSingular)
       .value("FAILED", PostureStatus::kFailed);
-  py::class_<PostureResult>(m, "PostureResult", "The stiffness at one posture (tool point, global axes, SI units).")
+  py::class_<PostureResult>(m, "PostureResult",
+                            "The stiffness at one posture (tool point, global axes, SI units). A Python kernel "
+                            "returns PostureResult(status, stiffness=K, singularity_measure=...): compliance (when "
+                            "not given) and indices are computed from K.")
+      .def(py::init(&make_posture_result), py::arg("status") = PostureStatus::kUnreachable,
+           py::arg("stiffness") = py::none(), py::arg("compliance") = py::none(), py::arg("singularity_measure") = 0.0,
+           py::arg("deflection") = py::none(), py::arg("newton_iterations") = 0)
       .def_readonly("status", &PostureResult::status)
       .def_readonly("stiffness", &PostureResult::stiffness)
       .def_readonly("compliance", &PostureResult::compliance)
@@ -412,9 +507,14 @@ void bind_posture_kernels(py::module_& m) {
       .def_readonly("deflection", &PostureResult::deflection, "under the kernel's load (m, rad)")
       .def_readonly("newton_iterations", &PostureResult::newton_iterations,
                     "loaded mode: the equilibrium's Newton steps, every chain's summed");
-  py::class_<PostureKernel>(m, "PostureKernel",
-                            "The stiffness of a mechanism's tool point at many postures (points in m, kinematics "
-                            "frame). Not thread-safe: clone() one per thread, or use evaluate_postures.")
+  py::class_<PostureKernel, PyPostureKernel>(
+      m, "PostureKernel",
+      "The stiffness of a mechanism's tool point at many postures (points in m, kinematics frame). Not "
+      "thread-safe: clone() one per thread, or use evaluate_postures. Subclass it in Python (call "
+      "super().__init__(), define evaluate(self, point) -> PostureResult, optionally evaluate_next and "
+      "description) to map your own kinematics: evaluate_postures and compute_workspace_map run a Python kernel on "
+      "one thread, taking the GIL for each call (docs/python.md).")
+      .def(py::init<>())
       .def(
           "evaluate",
           [](PostureKernel& k, const Vec3& point) {
@@ -422,8 +522,16 @@ void bind_posture_kernels(py::module_& m) {
             return without_gil([&] { return k.evaluate(point); });
           },
           py::arg("point"), "The stiffness at the point (m); InputError for a point not finite or out of range.")
-      .def("clone", &PostureKernel::clone)
-      .def("description", &PostureKernel::description);
+      .def(
+          "evaluate_next",
+          [](PostureKernel& k, const Vec3& point) {
+            check(check_entries(point, Quantity::kLength, "point"));
+            return without_gil([&] { return k.evaluate_next(point); });
+          },
+          py::arg("point"), "The stiffness at a grid neighbour of the last point evaluated (a kernel may start from "
+          "that point's solution); evaluate(point) unless the kernel says otherwise.")
+      .def("clone", [](const PostureKernel& k) { return without_gil([&] { return k.clone(); }); })
+      .def("description", [](const PostureKernel& k) { return without_gil([&] { return k.description(); }); });
 
   py::enum_<StiffnessMethod>(m, "StiffnessMethod").value("MSA", StiffnessMethod::kMsa).value("VJM", StiffnessMethod::kVjm);
   py::class_<FiveBarKernelOptions>(m, "FiveBarKernelOptions")
@@ -507,15 +615,21 @@ void bind_posture_kernels(py::module_& m) {
             check(check_entries(p[i], Quantity::kLength, fmt::format("points (row {})", i)));
         }
         std::vector<PostureResult> results;
+        if (is_python_kernel(kernel)) threads = 1;  // it takes the GIL for every point
         without_gil([&] { evaluate_postures(kernel, p, results, threads); });
         return posture_arrays(results, grid);
       },
       py::arg("kernel"), py::arg("points"), py::arg("threads") = 0,
-      "Evaluates the kernel at every point of an (..., 3) array (m) on `threads` threads (0: all cores), with the "
-      "GIL released; returns PostureResults shaped like the grid.");
+      "Evaluates the kernel at every point of an (..., 3) array (m) on `threads` threads (0: all cores; a Python "
+      "kernel: 1), with the GIL released; returns PostureResults shaped like the grid.");
 }
 
 }  // namespace
+
+bool is_python_kernel(const PostureKernel& kernel) {
+  return dynamic_cast<const PyPostureKernel*>(&kernel) != nullptr ||
+         dynamic_cast<const PythonKernelClone*>(&kernel) != nullptr;
+}
 
 void bind_mechanisms(py::module_& m) {
   bind_five_bar(m);

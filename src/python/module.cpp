@@ -1,6 +1,7 @@
 // The compiled part of the Python package `kinestat`: kinestat._kinestat with one submodule per C++
 // namespace (solver, msa, vjm, fea, mechanisms, io); core and elements (namespace kinestat) at the
-// top. The package's __init__.py re-exports them; docs/python.md describes the API.
+// top. The package's __init__.py re-exports them (and python/kinestat/robots.py gathers the robot
+// names of mechanisms and io); docs/python.md describes the API.
 #include <string>
 
 #include <fmt/format.h>
@@ -101,9 +102,11 @@ PYBIND11_MODULE(_kinestat, m) {
   auto fea = m.def_submodule("fea", "FEA link stiffness from tetrahedral meshes (C++ kinestat::fea).");
   kp::bind_fea(fea);
   auto mech = m.def_submodule("mechanisms", "Five-bar and Orthoglide: kinematics, design, stiffness models, "
-                                            "identification, posture kernels (C++ kinestat::mechanisms).");
+                                            "identification; robots from files (RobotModel); posture kernels "
+                                            "(C++ kinestat::mechanisms).");
   kp::bind_mechanisms(mech);
   kp::bind_workspace_maps(mech);
   auto io = m.def_submodule("io", "Structure and model files, JSON results, VTK and PNG output (C++ kinestat::io).");
   kp::bind_io(io);
+  kp::bind_robots(mech, io);
 }

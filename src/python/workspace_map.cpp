@@ -235,12 +235,13 @@ void bind_map(py::module_& m) {
       .def_readwrite("curves", &WorkspaceMap::curves, "curves drawn over the map in its JSON and PNG (MapCurve list)");
   m.def(
       "compute_workspace_map",
-      [](const PostureKernel& kernel, const MapGrid& grid, const MapOptions& options) {
+      [](const PostureKernel& kernel, const MapGrid& grid, MapOptions options) {
+        if (is_python_kernel(kernel)) options.threads = 1;  // it takes the GIL for every point
         return unwrap(without_gil([&] { return compute_workspace_map(kernel, grid, options); }));
       },
       py::arg("kernel"), py::arg("grid"), py::arg("options") = MapOptions{},
-      "The kernel at every grid point (on options.threads threads, the GIL released) and the fields, statuses and "
-      "summary. InputError when the grid is empty or above options.max_points.");
+      "The kernel at every grid point (on options.threads threads, a Python kernel on one; the GIL released) and "
+      "the fields, statuses and summary. InputError when the grid is empty or above options.max_points.");
 
   m.def(
       "five_bar_singular_loci",
