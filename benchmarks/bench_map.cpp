@@ -11,10 +11,11 @@
 // The loaded kernels: a table of their own, warm-started along the map's serpentine path against
 // the same kernel from scratch and the unloaded kernel, in the same run.
 // Run: ./build/benchmarks/bench_map [--min-time S] [--reference-points N] [--scratch-points N]
-//      [--loaded-only 1]
+//      [--loaded-only 1] [--robots-only 1]
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -25,8 +26,10 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
+#include "kinestat/mechanisms/robot_kernel.hpp"
 #include "kinestat/mechanisms/workspace_map.hpp"
 
 namespace kinestat::mechanisms {
@@ -39,6 +42,7 @@ struct Settings {
   int reference_points = 2000;  // subsample for the slow reference path
   int scratch_points = 4000;    // subsample for the loaded kernels from scratch
   bool loaded_only = false;     // only the loaded-mode table
+  bool robots_only = false;     // only the robot-file table
 };
 
 double seconds(const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; }
@@ -151,6 +155,7 @@ std::vector<Vec3> cube_grid(double lo, double hi, int n) {
 
 void unloaded_tables(const Settings& s);
 void loaded_table(const Settings& s);
+void robot_table(const Settings& s);
 
 int run(const Settings& s) {
   const auto t0 = Clock::now();
@@ -161,8 +166,9 @@ int run(const Settings& s) {
   fmt::print("{:<46} {:>6} {:>6} {:>5} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>8} {:>7} {:>7}\n", "kernel", "points",
              "ok", "sing.", "unrch.", "1 core/s", "1 cpu/s", "all/s", "ratio", "ref/s", "vs ref", "(cpu)");
 
-  if (!s.loaded_only) unloaded_tables(s);
-  loaded_table(s);
+  if (!s.loaded_only && !s.robots_only) unloaded_tables(s);
+  if (!s.loaded_only) robot_table(s);
+  if (!s.robots_only) loaded_table(s);
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -189,6 +195,58 @@ void unloaded_tables(const Settings& s) {
     o.architecture = a;
     report(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), cube, s);
   }
+}
+
+// The generic kernel of robot files (make_robot_kernel, models/robots/) along the map's serpentine
+// path: the five-bar and the Orthoglide 3-PUU beside their built-in kernels on the same grids (the
+// same model: tests/io/robot_test.cpp), the Delta and the hexapod over their files' workspaces.
+void robot_table(const Settings& s) {
+  fmt::print("\ngeneric robot kernel (robot files), unloaded, along the serpentine path: postures/s on 1 core (wall, "
+             "best sweep; per second of process CPU time), on all cores (wall), all/1; the built-in kernel on the "
+             "same grid and path (1 core wall; CPU) and generic/built-in (CPU)\n");
+  fmt::print("{:<46} {:>6} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>9} {:>9} {:>8}\n", "kernel", "points", "ok",
+             "1 core/s", "1 cpu/s", "all/s", "all/1", "built-in", "(cpu)", "gen/bi");
+  const auto grid_path = [](const Vec3& lo, const Vec3& hi, std::array<int, 3> n) {
+    MapGrid g;
+    g.origin = lo;
+    g.dimensions = n;
+    for (int a = 0; a < 3; ++a) g.spacing(a) = n[a] > 1 ? (hi(a) - lo(a)) / (n[a] - 1) : 1.0;
+    std::vector<Vec3> path(g.num_points());
+    for (std::size_t k = 0; k < path.size(); ++k) path[k] = g.point(g.path_index(k));
+    return path;
+  };
+  const auto row = [&](const std::string& file, const std::vector<Vec3>& path, const PostureKernel* builtin) {
+    auto model = io::read_robot_model(std::string(KINESTAT_SOURCE_DIR) + "/models/robots/" + file);
+    if (!model.ok()) {
+      fmt::print("{}: {}\n", file, model.status().message());
+      return;
+    }
+    RobotKernelOptions o;
+    o.model = std::make_shared<const RobotModel>(std::move(*model));
+    const auto kernel = make_robot_kernel(o);
+    std::vector<PostureResult> results;
+    evaluate_postures(*kernel, path, results, 1, {}, PointOrder::kPath);
+    const auto ok = std::count_if(results.begin(), results.end(),
+                                  [](const PostureResult& r) { return r.status == PostureStatus::kOk; });
+    const Rate one = rate(*kernel, path, 1, s.min_time, PointOrder::kPath);
+    const Rate all = rate(*kernel, path, 0, s.min_time, PointOrder::kPath);
+    Rate bi;
+    if (builtin) bi = rate(*builtin, path, 1, s.min_time, PointOrder::kPath);
+    fmt::print("{:<46} {:>6} {:>6} | {:>9.0f} {:>9.0f} {:>9.0f} {:>5.2f}x | {:>9.0f} {:>9.0f} {:>7.3f}x\n",
+               kernel->description(), path.size(), ok, one.wall, one.cpu, all.wall, all.wall / one.wall, bi.wall,
+               bi.cpu, builtin ? one.cpu / bi.cpu : 0.0);
+    std::fflush(stdout);
+  };
+  FiveBarKernelOptions fb;
+  fb.mode = WorkingMode{1, -1};
+  fb.method = StiffnessMethod::kVjm;
+  row("five_bar.yaml", grid_path(Vec3(-0.2, 0.0, 0.0), Vec3(0.2, 0.2, 0.0), {81, 41, 1}),
+      make_five_bar_kernel(fb).get());
+  OrthoglideKernelOptions og;
+  row("orthoglide_puu.yaml", grid_path(Vec3::Constant(-0.1), Vec3::Constant(0.1), {21, 21, 21}),
+      make_orthoglide_kernel(og).get());
+  row("delta.yaml", grid_path(Vec3(-0.4, -0.4, -1.0), Vec3(0.4, 0.4, -0.5), {33, 33, 21}), nullptr);
+  row("hexapod.yaml", grid_path(Vec3(-0.15, -0.15, 0.7), Vec3(0.15, 0.15, 0.9), {21, 21, 11}), nullptr);
 }
 
 void loaded_table(const Settings& s) {
@@ -235,6 +293,8 @@ int main(int argc, char** argv) {
       s.reference_points = std::atoi(argv[i + 1]);
     } else if (std::strcmp(argv[i], "--scratch-points") == 0) {
       s.scratch_points = std::atoi(argv[i + 1]);
+    } else if (std::strcmp(argv[i], "--robots-only") == 0) {
+      s.robots_only = std::atoi(argv[i + 1]) != 0;
     } else if (std::strcmp(argv[i], "--loaded-only") == 0) {
       s.loaded_only = std::atoi(argv[i + 1]) != 0;
     } else {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "kinestat/mechanisms/robot_model.hpp"
 #include "robot_equations.hpp"
@@ -18,7 +19,7 @@ constexpr double kTolerance = 1e-12;  // scaled residual (m / length scale, rad)
 constexpr int kMaxNewton = 25;
 constexpr double kMaxNewtonStep = 0.3;     // scaled: a larger step is shortened (damped Newton)
 constexpr double kContinuationStep = 0.05;  // scaled task distance per continuation step
-constexpr double kMinContinuationStep = 1e-4;
+constexpr double kMinContinuationStep = 1e-3;
 
 int platform_components(const RobotModel& m) { return m.description().planar ? 3 : 6; }
 int platform_component(const RobotModel& m, int i) { return m.description().planar ? kPlanarComponents[i] : i; }
@@ -110,18 +111,26 @@ void apply_step(const RobotModel& m, const VecX& dx, RobotPosture& p) {
 }
 
 // Damped Newton from `p` to the target; the inverse Jacobian's LU at the solution stays in data.lu.
+// A residual that does not at least halve after a full (undamped) step, from the third on, is not
+// converging (Newton from a good start converges quadratically): the caller shortens its step
+// instead of iterating on.
 bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& data, int& iterations) {
+  double previous = std::numeric_limits<double>::infinity();
+  bool damped = true;
   for (int it = 0; it < kMaxNewton; ++it) {
     evaluate(m, p, task, data);
     if (!data.residual.allFinite()) return false;
     const double r = scaled_norm(m, data.residual, true);
     data.lu.compute(data.jacobian);
     if (r < kTolerance) return true;
+    if (it >= 2 && !damped && r > 0.5 * previous) return false;
+    previous = r;
     ++iterations;
     data.step = -data.lu.solve(data.residual);
     if (!data.step.allFinite()) return false;
     const double s = scaled_norm(m, data.step, false);
-    if (s > kMaxNewtonStep) data.step *= kMaxNewtonStep / s;
+    damped = s > kMaxNewtonStep;
+    if (damped) data.step *= kMaxNewtonStep / s;
     apply_step(m, data.step, p);
   }
   return false;
