@@ -22,7 +22,7 @@ seed() {
   mkdir -p "$corpus" "$root/artifacts/$name"
   cp -n tests/fuzz/"$name"/* "$corpus"/ 2>/dev/null || true
   case $name in
-    *_yaml) cp -n models/*.yaml tests/io/data/*.yaml "$corpus"/ ;;
+    *_yaml) cp -n models/*.yaml models/robots/*.yaml tests/io/data/*.yaml "$corpus"/ ;;
     surface_mesh)
       for m in meshes/*.off; do
         [ -e "$corpus/mesh_$(basename "$m")" ] || { printf '\0'; cat "$m"; } > "$corpus/mesh_$(basename "$m")"
@@ -31,7 +31,7 @@ seed() {
 }
 
 status=0
-for name in structure_yaml vjm_yaml identification_yaml surface_mesh option_parsers frame3dd; do
+for name in structure_yaml vjm_yaml identification_yaml surface_mesh option_parsers frame3dd robot_yaml; do
   seed "$name"
   log=$root/$name.log
   echo "fuzz: $name for ${seconds} s"

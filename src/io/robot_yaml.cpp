@@ -407,11 +407,17 @@ class RobotReader : public YamlFields {
 
 }  // namespace
 
+StatusOr<RobotDescription> read_robot_description_string(const std::string& text, const std::string& display_name,
+                                                          const ParamOverrides& overrides) {
+  RobotReader reader(display_name, overrides);
+  return parse_yaml_text<RobotDescription>(text, display_name, kDoc,
+                                           [&](const YAML::Node& root) { return reader.parse(root); });
+}
+
 StatusOr<RobotDescription> read_robot_description(const std::string& path, const ParamOverrides& overrides) {
   StatusOr<std::string> text = read_text_file(path, "robot file");
   if (!text.ok()) return text.status();
-  RobotReader reader(path, overrides);
-  return parse_yaml_text<RobotDescription>(*text, path, kDoc, [&](const YAML::Node& root) { return reader.parse(root); });
+  return read_robot_description_string(*text, path, overrides);
 }
 
 StatusOr<RobotModel> read_robot_model(const std::string& path, const ParamOverrides& overrides) {

@@ -21,6 +21,10 @@ using ParamOverrides = std::vector<std::pair<std::string, double>>;
 // names no parameter of the file.
 StatusOr<mechanisms::RobotDescription> read_robot_description(const std::string& path,
                                                               const ParamOverrides& overrides = {});
+// The same from the file's text; `display_name` names it in messages.
+StatusOr<mechanisms::RobotDescription> read_robot_description_string(const std::string& text,
+                                                                     const std::string& display_name,
+                                                                     const ParamOverrides& overrides = {});
 // read_robot_description, then mechanisms::make_robot_model (its checks: closure rank, counts).
 StatusOr<mechanisms::RobotModel> read_robot_model(const std::string& path, const ParamOverrides& overrides = {});
 
