@@ -1,4 +1,4 @@
-// kinestat vjm MODEL [--point x,y,z] [--load dx,dy,dz,rx,ry,rz | --wrench Fx,Fy,Fz,Mx,My,Mz] [--json FILE|-]
+// kinestat vjm MODEL|ROBOT [--point x,y,z] [--orientation rx,ry,rz] [--load dx,dy,dz,rx,ry,rz | --wrench Fx,Fy,Fz,Mx,My,Mz] [--json FILE|-]
 // Virtual joint method stiffness (Pashkevich et al. 2009) of a platform read from a VJM model file
 // (docs/vjm.md): unloaded (eq. 9-10) and, with a load, loaded (eq. 11-21).
 #include <numbers>
@@ -11,7 +11,9 @@
 #include "cli/grid_options.hpp"
 #include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/io/vjm_results_json.hpp"
+#include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/mechanisms/robot_model.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
@@ -24,11 +26,58 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 struct VjmArgs {
   std::string model;
   std::vector<double> point;   // mm
+  std::vector<double> orientation;  // deg (robot files)
   std::vector<double> load;    // mm, deg
   std::vector<double> wrench;  // N, N mm
   int max_coordinates = vjm::kDefaultMaxChainCoordinates;
   OutputOptions out;
 };
+
+// A robot file's chains at the posture of --point (mm) and --orientation (deg): the task's
+// coordinates taken from them (home's where not given), the closed-loop kinematics solved from home
+// (docs/robots.md), and the joint values in words for the report.
+struct ModelChains {
+  std::vector<vjm::Chain> chains;
+  std::string title, posture;
+};
+
+StatusOr<ModelChains> robot_chains(const VjmArgs& a, const std::optional<Vec3>& point) {
+  auto model = io::read_robot_model(a.model);
+  if (!model.ok()) return model.status();
+  const mechanisms::RobotDescription& d = model->description();
+  VecX task = model->home_task();
+  if (!a.orientation.empty() && a.orientation.size() != 3)
+    return Status::Invalid("--orientation takes three angles rx,ry,rz (deg)");
+  for (std::size_t t = 0; t < d.task.size(); ++t) {
+    const int c = static_cast<int>(d.task[t]);
+    if (c < 3 && point) task(static_cast<int>(t)) = (*point)(c);
+    if (c >= 3 && !a.orientation.empty()) task(static_cast<int>(t)) = a.orientation[c - 3] * kDeg;
+  }
+  mechanisms::RobotData data = mechanisms::make_robot_data(*model);
+  mechanisms::RobotPosture posture = model->home();
+  const mechanisms::KinematicsResult k = mechanisms::solve_posture(*model, task, posture, data);
+  if (k.status == mechanisms::KinematicsStatus::kSingular)
+    return Status::Singular(fmt::format("{}: the posture is singular: {}", a.model, k.message));
+  if (k.status != mechanisms::KinematicsStatus::kOk)
+    return Status::Invalid(fmt::format("{}: the task values are not reached from home ({}): {}; choose a point "
+                                       "inside the workspace",
+                                       a.model, to_string(k.status), k.message));
+  ModelChains out;
+  out.title = d.name;
+  out.posture = fmt::format("  posture solved from home in {} Newton steps; singularity measure {:.4g}\n",
+                            k.iterations, k.singularity_measure);
+  for (int i = 0; i < model->num_coordinates(); ++i) {
+    const mechanisms::RobotModel::Coordinate& c = model->coordinates()[i];
+    const mechanisms::RobotJoint& j = model->joint(c);
+    const bool length = j.type == mechanisms::RobotJointType::kPrismatic ||
+                        (j.type == mechanisms::RobotJointType::kCylindrical && c.index == 1);
+    out.posture += fmt::format("    {:<60} {:>12.6f} {}{}\n", model->coordinate_name(i),
+                               length ? posture.q(i) / kMm : posture.q(i) / kDeg, length ? "mm" : "deg",
+                               model->actuated(c) ? "  (actuated)" : "");
+  }
+  out.chains = mechanisms::robot_vjm_chains(*model, posture);
+  return out;
+}
 
 // The stiffness, compliance, indices and lost directions of one VJM result.
 std::string stiffness_report(const CartesianStiffness& K, const std::string& what) {
@@ -55,17 +104,29 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
     if (!w.ok()) return bad(w.status());
     wrench = *w;
   }
-  StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(a.model);
+  StatusOr<bool> robot = io::is_robot_file(a.model);
+  if (!robot.ok()) return bad(robot.status());
+  if (!*robot && !a.orientation.empty())
+    return bad(Status::Invalid("--orientation applies to robot files (docs/robots.md)"));
+  StatusOr<ModelChains> model = Status::Ok();
+  if (*robot) {
+    model = robot_chains(a, point);
+  } else {
+    StatusOr<io::VjmModel> vjm_model = io::read_vjm_model_yaml(a.model);
+    if (!vjm_model.ok()) return bad(vjm_model.status());
+    // The model's `fea:` link springs: meshing and FEA (or their cache), with progress on stderr.
+    auto progress = [&ctx, &a](const std::string& stage) {
+      if (!a.out.quiet) ctx.err << "vjm: " << stage << " ...\n";
+    };
+    // Warnings even with --quiet: a cache entry was damaged and its result recomputed.
+    auto warning = [&ctx](const std::string& w) { ctx.err << "vjm: warning: " << w << "\n"; };
+    if (Status s = io::resolve_fea_springs(*vjm_model, progress, warning); !s.ok()) return bad(s);
+    StatusOr<std::vector<vjm::Chain>> c = io::vjm_model_chains(*vjm_model, point);
+    if (!c.ok()) return bad(c.status());
+    model = ModelChains{std::move(*c), vjm_model->title, ""};
+  }
   if (!model.ok()) return bad(model.status());
-  // The model's `fea:` link springs: meshing and FEA (or their cache), with progress on stderr.
-  auto progress = [&ctx, &a](const std::string& stage) {
-    if (!a.out.quiet) ctx.err << "vjm: " << stage << " ...\n";
-  };
-  // Warnings even with --quiet: a cache entry was damaged and its result recomputed.
-  auto warning = [&ctx](const std::string& w) { ctx.err << "vjm: warning: " << w << "\n"; };
-  if (Status s = io::resolve_fea_springs(*model, progress, warning); !s.ok()) return bad(s);
-  StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, point);
-  if (!chains.ok()) return bad(chains.status());
+  const std::vector<vjm::Chain>* chains = &model->chains;
   vjm::StiffnessOptions stiffness_options;
   stiffness_options.max_chain_coordinates = a.max_coordinates;
   vjm::EquilibriumOptions equilibrium_options;
@@ -82,8 +143,9 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
   Output out(ctx, a.out);
   out.report() << fmt::format("kinestat VJM report{}\n", model->title.empty() ? "" : ": " + model->title);
   const Vec3 tool = results.tool_point / kMm;
-  out.report() << fmt::format("  {} chains; tool point ({:.4f}, {:.4f}, {:.4f}) mm\n\n", chains->size(), tool.x(),
+  out.report() << fmt::format("  {} chains; tool point ({:.4f}, {:.4f}, {:.4f}) mm\n", chains->size(), tool.x(),
                               tool.y(), tool.z())
+               << model->posture << "\n"
                << stiffness_report(*K0, "unloaded, eq. 10");
   Status result = K0->status;
 
@@ -115,10 +177,15 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
 void register_vjm_command(CLI::App& app, Context& ctx) {
   auto args = std::make_shared<VjmArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "vjm", "virtual joint method stiffness of a VJM model file (docs/vjm.md; its numbers are in the file's "
-             "'units:'): unloaded, and loaded under --load or --wrench; stiffness printed in SI units");
-  cmd->add_option("model", args->model, "VJM model file (YAML)")->required();
-  cmd->add_option("--point", args->point, "tool point x,y,z in mm (Orthoglide models only; default Q0 = 0,0,0)")
+      "vjm", "virtual joint method stiffness of a VJM model file (docs/vjm.md) or a robot file (docs/robots.md) "
+             "at one posture (their numbers are in the file's 'units:'): unloaded, and loaded under --load or "
+             "--wrench; stiffness printed in SI units");
+  cmd->add_option("model", args->model, "VJM model file or robot file (YAML)")->required();
+  cmd->add_option("--point", args->point,
+                  "tool point x,y,z in mm (Orthoglide models, default Q0 = 0,0,0; robot files, default home)")
+      ->delimiter(',');
+  cmd->add_option("--orientation", args->orientation,
+                  "robot files: the tool's orientation rx,ry,rz in deg for the task's angles (default home's, 0)")
       ->delimiter(',');
   CLI::Option* load = cmd->add_option("--load", args->load,
                                       "prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg): loaded mode")

@@ -1,6 +1,8 @@
 // kinestat vjm: printed stiffness against closed forms at the Orthoglide's Q0, loaded mode, exit codes.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -9,6 +11,8 @@
 #include "kinestat/cli/app.hpp"
 #include "cli_run.hpp"
 #include "kinestat/core/types.hpp"
+#include "kinestat/io/robot_yaml.hpp"
+#include "kinestat/mechanisms/robot_kernel.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -149,6 +153,38 @@ TEST(VjmCommand, BadInputExitsWith2) {
   EXPECT_NE(r.err.find("five_bar.yaml:"), std::string::npos) << r.err;
   r = run_cli({"vjm", "/nonexistent.yaml"});
   EXPECT_EQ(r.code, kExitBadInput);
+}
+
+}  // namespace
+}  // namespace kinestat::cli
+
+namespace kinestat::cli {
+namespace {
+
+// A robot file at one posture: the joint values solved from home, the same 6x6 as the robot kernel
+// (the map's) at that point, and a point out of reach refused with exit 2.
+TEST(VjmCommand, RobotFileAtAPoint) {
+  const std::string file = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/hexapod.yaml";
+  const CliRun r = run_cli({"vjm", file, "--point", "20,-10,790", "--orientation", "3,-2,5", "--json", "-"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  auto model = io::read_robot_model(file);
+  ASSERT_TRUE(model.ok());
+  mechanisms::RobotKernelOptions o;
+  o.model = std::make_shared<const mechanisms::RobotModel>(std::move(*model));
+  const double deg = M_PI / 180.0;
+  o.task = (VecX(6) << 0.02, -0.01, 0.79, 3 * deg, -2 * deg, 5 * deg).finished();
+  const mechanisms::PostureResult p = mechanisms::make_robot_kernel(o)->evaluate(Vec3(0.02, -0.01, 0.79));
+  ASSERT_EQ(p.status, mechanisms::PostureStatus::kOk);
+  const auto& K = j["unloaded"]["stiffness"];
+  for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 6; ++k)
+      EXPECT_NEAR(K[i][k].get<double>(), p.stiffness(i, k), 1e-9 * p.stiffness.norm());
+  const CliRun text = run_cli({"vjm", file, "--point", "20,-10,790"});
+  EXPECT_NE(text.out.find("(actuated)"), std::string::npos) << text.out;
+  const CliRun far = run_cli({"vjm", file, "--point", "2000,0,790"});
+  EXPECT_EQ(far.code, 2);
+  EXPECT_NE(far.err.find("not reached from home"), std::string::npos) << far.err;
 }
 
 }  // namespace
