@@ -23,13 +23,14 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
   if (!report.ok()) return report_failure(ctx, command, report.status());
   Output out(ctx, o.out);
   out.report() << *report;
+  // The stations, for the JSON and the VTK diagrams.
+  std::vector<std::vector<msa::BeamStations>> stations;
+  if (o.stations > 0 && !sol.cases.empty()) {
+    auto st = msa::all_beam_stations(s, sol, o.stations);
+    if (!st.ok()) return report_failure(ctx, command, st.status());
+    stations = std::move(*st);
+  }
   if (out.json_wanted()) {
-    std::vector<std::vector<msa::BeamStations>> stations;
-    if (o.stations > 0 && !sol.cases.empty()) {
-      auto st = msa::all_beam_stations(s, sol, o.stations);
-      if (!st.ok()) return report_failure(ctx, command, st.status());
-      stations = std::move(*st);
-    }
     StatusOr<nlohmann::json> j = io::solution_to_json(s, sol, o.stations > 0 ? &stations : nullptr);
     if (!j.ok()) return report_failure(ctx, command, j.status());
     j->update(extra);
@@ -40,6 +41,9 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
     std::vector<std::string> written;
     if (Status st = io::write_vtk(s, sol, o.vtk_dir, o.basename, &written); !st.ok())
       return report_failure(ctx, command, st);
+    if (!stations.empty())
+      if (Status st = io::write_beam_diagrams_vtk(s, sol, stations, o.vtk_dir, o.basename, &written); !st.ok())
+        return report_failure(ctx, command, st);
     for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
   }
   return out.finish(command, sol.status);

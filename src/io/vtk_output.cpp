@@ -188,6 +188,71 @@ Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::s
   return files.finish(basename);
 }
 
+Status write_beam_diagrams_vtk(const msa::Structure& s, const msa::Solution& sol,
+                               const std::vector<std::vector<msa::BeamStations>>& stations, const std::string& dir,
+                               const std::string& basename, std::vector<std::string>* written) {
+  if (Status st = msa::check_solution_matches(s, sol); !st.ok()) return st;
+  if (stations.size() != sol.cases.size())
+    return Status::Internal(fmt::format("beam diagrams: stations of {} load cases for {}", stations.size(),
+                                        sol.cases.size()));
+  Collection files(dir, written);
+  if (Status st = files.create(); !st.ok()) return st;
+  static constexpr const char* kForces[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
+  for (std::size_t c = 0; c < sol.cases.size(); ++c) {
+    if (stations[c].size() != s.beams().size())
+      return Status::Internal(fmt::format("beam diagrams: stations of {} beams for {}", stations[c].size(),
+                                          s.beams().size()));
+    vtkIdType count = 0;
+    for (const msa::BeamStations& b : stations[c]) count += static_cast<vtkIdType>(b.x.size());
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    std::vector<vtkSmartPointer<vtkDoubleArray>> forces;
+    for (const char* name : kForces) forces.push_back(double_array(name, 1, count));
+    auto displacement = double_array("displacement", 3, count);
+    auto mz = double_array("Mz_diagram", 3, count), my = double_array("My_diagram", 3, count);
+    auto beam_id = int_array("element_id", static_cast<vtkIdType>(s.beams().size()));
+    double max_moment = 0.0;
+    vtkIdType k = 0;
+    for (std::size_t b = 0; b < s.beams().size(); ++b) {
+      const msa::Beam& beam = s.beams()[b];
+      const Mat3 axes = s.beam_axes(beam);  // columns: local x, y, z in global
+      const Vec3& p1 = s.nodes()[beam.node1].position;
+      const msa::BeamStations& st = stations[c][b];
+      std::vector<vtkIdType> ids;
+      for (std::size_t i = 0; i < st.x.size(); ++i, ++k) {
+        const Vec3 p = p1 + st.x[i] * axes.col(0);
+        points->InsertNextPoint(p.data());
+        for (int f = 0; f < 6; ++f) forces[f]->SetValue(k, st.forces[i](f));
+        const Vec3 u = axes * st.displacement[i].head<3>();
+        const Vec3 vy = st.forces[i](5) * axes.col(1), vz = st.forces[i](4) * axes.col(2);
+        displacement->SetTuple(k, u.data());
+        mz->SetTuple(k, vy.data());
+        my->SetTuple(k, vz.data());
+        max_moment = std::max({max_moment, std::abs(st.forces[i](4)), std::abs(st.forces[i](5))});
+        ids.push_back(k);
+      }
+      grid->InsertNextCell(VTK_POLY_LINE, static_cast<vtkIdType>(ids.size()), ids.data());
+      beam_id->SetValue(static_cast<vtkIdType>(b), static_cast<int>(b));
+    }
+    grid->SetPoints(points);
+    for (auto& f : forces) grid->GetPointData()->AddArray(f);
+    grid->GetPointData()->AddArray(displacement);
+    grid->GetPointData()->AddArray(mz);
+    grid->GetPointData()->AddArray(my);
+    grid->GetPointData()->SetActiveVectors("Mz_diagram");
+    grid->GetCellData()->AddArray(beam_id);
+    add_units(*grid, {{"coordinates", "m"}, {"N", "N"}, {"Vy", "N"}, {"Vz", "N"}, {"T", "N m"}, {"My", "N m"},
+                      {"Mz", "N m"}, {"displacement", "m"}, {"Mz_diagram", "N m (along local y)"},
+                      {"My_diagram", "N m (along local z)"}});
+    add_display_hints(*grid, sol.cases[c].name, s.length_scale(), max_moment);
+    if (Status st = files.emit(grid, fmt::format("{}_diagram_case{}.vtu", basename, c + 1), sol.cases[c].name);
+        !st.ok())
+      return st;
+  }
+  return files.finish(basename + "_diagram");
+}
+
 Status write_mode_shapes_vtk(const msa::Structure& s, const std::vector<VtkModeShape>& modes, const std::string& dir,
                              const std::string& basename, const std::string& shape_unit,
                              std::vector<std::string>* written) {

@@ -217,3 +217,43 @@ TEST_F(VtkOutput, ReleasedChainFreeMotionReadsBack) {
 
 }  // namespace
 }  // namespace kinestat::io
+
+namespace kinestat::io {
+namespace {
+
+// The cantilever's internal-force diagrams: 5 stations on one polyline; under the tip load P along
+// y the moment on the +x face of [0, x] is that of the load about the cut, (L - x) e_x x P e_y:
+// Mz(x) = P (L - x) (statics, exact), and the diagram vector is Mz e_y, e_y the local y axis
+// (global y here).
+TEST(VtkDiagrams, CantileverMomentDiagramReadsBack) {
+  const std::string dir = ::testing::TempDir() + "kinestat_vtk_diagrams";
+  std::filesystem::remove_all(dir);
+  auto s = read_structure_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/cantilever.yaml");
+  ASSERT_TRUE(s.ok());
+  const msa::Solution sol = msa::solve(*s);
+  ASSERT_TRUE(sol.status.ok());
+  auto stations = msa::all_beam_stations(*s, sol, 5);
+  ASSERT_TRUE(stations.ok());
+  std::vector<std::string> written;
+  ASSERT_TRUE(write_beam_diagrams_vtk(*s, sol, *stations, dir, "cantilever", &written).ok());
+  ASSERT_EQ(written.size(), sol.cases.size() + 1);
+  EXPECT_EQ(written.back(), dir + "/cantilever_diagram.pvd");
+  auto grid = read_vtu(written[1]);  // tip_sideways: 500 N along y at x = L = 1 m
+  ASSERT_EQ(grid->GetNumberOfPoints(), 5);
+  ASSERT_EQ(grid->GetNumberOfCells(), 1);
+  vtkDataArray* mz = grid->GetPointData()->GetArray("Mz");
+  vtkDataArray* diagram = grid->GetPointData()->GetArray("Mz_diagram");
+  ASSERT_NE(mz, nullptr);
+  ASSERT_NE(diagram, nullptr);
+  for (int i = 0; i < 5; ++i) {
+    const double x = grid->GetPoint(i)[0];
+    EXPECT_NEAR(x, 0.25 * i, 1e-15);
+    EXPECT_NEAR(mz->GetTuple1(i), 500.0 * (1.0 - x), 1e-9);
+    EXPECT_NEAR(diagram->GetComponent(i, 1), mz->GetTuple1(i), 1e-12);
+    EXPECT_EQ(diagram->GetComponent(i, 0), 0.0);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace kinestat::io

@@ -26,6 +26,18 @@ inline constexpr int kVtkRigidLink = 3;
 Status write_vtk(const msa::Structure& s, const msa::Solution& sol, const std::string& dir, const std::string& basename,
                  std::vector<std::string>* written);
 
+// Internal-force diagrams (`kinestat solve --stations N --vtk DIR`): DIR/BASENAME_diagram_caseN.vtu
+// per load case and DIR/BASENAME_diagram.pvd. Each beam is a polyline through its stations on the
+// undeformed axis; point arrays: the scalars N, Vy, Vz, T, My, Mz (N, N m, beam-local, as
+// msa::BeamStations), "displacement" (m, global), and the vectors "Mz_diagram" = Mz e_y and
+// "My_diagram" = My e_z (N m along the local axis the moment bends towards): Warp By Vector with a
+// small scale factor draws the bending-moment diagram beside each beam (field data "warp_factor":
+// the largest moment drawn as a tenth of the model's size). `stations` is [case][beam] of
+// msa::all_beam_stations for this solution.
+Status write_beam_diagrams_vtk(const msa::Structure& s, const msa::Solution& sol,
+                               const std::vector<std::vector<msa::BeamStations>>& stations, const std::string& dir,
+                               const std::string& basename, std::vector<std::string>* written);
+
 // A mode shape to draw (a buckling mode, a vibration mode): per node, global, translations and
 // rotations; `name` is shown by ParaView (e.g. "mode 1: lambda = 2.47").
 struct VtkModeShape {
