@@ -542,9 +542,18 @@ TEST(Frame3ddReader, BadInputNamesTheLine) {
   // A non-number.
   m = error_of(replace_line(kCantilever, 4, "2  1OOO 0 0  0"));
   expect_contains(m, "bad.3dd:4: node 2 x: '1OOO' is not a number");
-  // Geometric stiffness is refused, not ignored.
-  m = error_of(replace_line(kCantilever, 10, "1"));
-  expect_contains(m, "bad.3dd:10: geometric stiffness flag: 1 asks for a second-order");
+  // Geometric stiffness is read (for the caller: kinestat solve runs the second order), not ignored.
+  {
+    Frame3ddAnalysis analysis;
+    const auto s = read_frame3dd_string(replace_line(kCantilever, 10, "1"), "g.3dd", units("N-mm"), nullptr, &analysis);
+    ASSERT_TRUE(s.ok()) << s.status().message();
+    EXPECT_TRUE(analysis.geometric_stiffness);
+    EXPECT_EQ(analysis.geometric_stiffness_source, "g.3dd:10");
+    ASSERT_TRUE(read_frame3dd_string(kCantilever, "g.3dd", units("N-mm"), nullptr, &analysis).ok());
+    EXPECT_FALSE(analysis.geometric_stiffness);
+  }
+  m = error_of(replace_line(kCantilever, 10, "2"));
+  expect_contains(m, "bad.3dd:10: geometric stiffness flag: 2 is not a flag");
   // A settlement of a free dof.
   m = error_of(replace_line(replace_line(kCantilever, 6, "1  1 1 1 1 1 0"), 28, "1\n1  0 0 0 0 0 0.01"));
   expect_contains(m, "bad.3dd:29: load case 1: prescribed displacement of node 1 Dzz");
