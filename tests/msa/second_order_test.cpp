@@ -208,25 +208,7 @@ TEST(SecondOrder, AxialForcesAreIterated) {
 
 TEST(SecondOrder, ReleasesAndRegularizationAreRefused) {
   Structure s = cantilever(2, -1000.0);
-  Structure hinged;
-  {
-    const int m = hinged.add_material(kSteel);
-    const int c = hinged.add_section(rectangle_section(0.02, 0.03));
-    hinged.add_node("a", Vec3(0, 0, 0));
-    hinged.add_node("b", Vec3(1, 0, 0));
-    Beam b;
-    b.id = "hinged";
-    b.node1 = 0;
-    b.node2 = 1;
-    b.material = m;
-    b.section = c;
-    b.releases[11] = true;
-    hinged.add_beam(b);
-    hinged.add_support({0, kAllDofs, Mat3::Identity()});
-    LoadCase lc{.name = "axial"};
-    lc.loads.push_back({1, Vec6::Unit(0) * -1000.0});
-    hinged.add_load_case(lc);
-  }
+  const Structure hinged = hinged_beam(rectangle_section(0.02, 0.03));
   const Solution r = solve_second_order(hinged);
   EXPECT_EQ(r.status.code(), StatusCode::kInvalidInput);
   EXPECT_NE(r.status.message().find("beam 'hinged' has end releases, which a second-order analysis does not support"),
