@@ -347,8 +347,10 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
       if (Status st = chol.Factorize(Ktr, nullptr); !st.ok()) {
         if (st.code() != StatusCode::kSingular) return fail(st);
         // K + K_G of a stable structure is positive definite below the first critical load factor
-        // (Sylvester's inertia along K + lambda K_G), so a failed Cholesky means the loads reach it.
-        return fail(Status::Singular(at_source(
+        // (Sylvester's inertia along K + lambda K_G), so a failed Cholesky means the loads reach it:
+        // a load with no equilibrium, a property of the input as in the loaded VJM (exit 2), not a
+        // mechanism (K itself passed the singularity checks of the linear solve).
+        return fail(Status::NotConverged(at_source(
             lc.source.empty() ? s.source() : lc.source,
             fmt::format("load case '{}': the loads reach or exceed the critical (buckling) load: the tangent "
                         "stiffness K + K_G(N) is not positive definite at second-order iteration {} ({}); no "

@@ -349,7 +349,8 @@ void bind_solution(py::module_& m) {
       py::arg("structure"), py::arg("second_order") = py::none(), py::arg("options") = py::none(),
       "Second-order (P-Delta) analysis: (K + K_G(N)) u = F iterated on the beams' axial forces "
       "(docs/stability-and-modes.md); .second_order says how it went. Raises InputError (bad model, end releases), "
-      "SingularError for a singular structure or loads at or above the critical load, NotConvergedError. Releases "
+      "SingularError for a singular structure, NotConvergedError for loads at or above the critical load or no "
+      "convergence. Releases "
       "the GIL.");
   m.def(
       "cartesian_stiffness",

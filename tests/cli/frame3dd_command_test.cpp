@@ -155,11 +155,11 @@ TEST(SolveFrame3dd, GeometricStiffnessFlagGivesTheSecondOrderSolve) {
 
 TEST(SolveFrame3dd, SecondOrderRefusals) {
   const std::string plain = write_temp("pdelta_refuse.3dd", with_flag(0));
-  // Above Euler's load (3000 N > 2591 N): exit 3, with what to do.
+  // Above Euler's load (3000 N > 2591 N): a load with no equilibrium, exit 2, with what to do.
   std::string heavy = with_flag(1);
   heavy.replace(heavy.find("-2000"), 5, "-3000");
   CliRun r = run_cli({"solve", write_temp("pdelta_heavy.3dd", heavy), "--units", "N-mm"});
-  EXPECT_EQ(r.code, kExitSingular);
+  EXPECT_EQ(r.code, kExitBadInput);
   expect_contains(r.out + r.err, "the loads reach or exceed the critical (buckling) load");
   // The iteration options need --second-order; --stations and --regularize do not go with it.
   r = run_cli({"solve", plain, "--units", "N-mm", "--max-iterations", "3"});
