@@ -283,10 +283,9 @@ class Reader {
     shear_ = flag(sh.tokens[0], sh.number, "shear deformation flag") == 1;
     shear_line_ = sh.number;
     const Line& g = next("geometric stiffness flag", 1, "0 or 1, the geometric stiffness flag", {});
-    if (flag(g.tokens[0], g.number, "geometric stiffness flag") == 1)
-      fail(g.number, "geometric stiffness flag",
-           "1 asks for a second-order (P-Delta) analysis, which kinestat solve does not do yet; write 0 for a "
-           "linear analysis");
+    // 1 asks for a second-order analysis: recorded for the caller (kinestat solve honours it).
+    analysis_.geometric_stiffness = flag(g.tokens[0], g.number, "geometric stiffness flag") == 1;
+    analysis_.geometric_stiffness_source = fmt::format("{}:{}", file_, g.number);
     for (const char* item : {"exaggeration of deformations", "zoom scale", "x increment for internal forces (dx)"}) {
       const Line& l = next(item, 1, std::string("one number, the ") + item, kSettingsHint);
       real(l.tokens[0], l.number, item);
@@ -521,14 +520,20 @@ class Reader {
   bool shear_ = false;
   int shear_line_ = 0;
   msa::Structure s_;
+
+ public:
+  io::Frame3ddAnalysis analysis_;
 };
 
 }  // namespace
 
 StatusOr<msa::Structure> read_frame3dd_string(const std::string& text, const std::string& display_name,
-                                              const FileUnits& units, std::vector<std::string>* notes) {
+                                              const FileUnits& units, std::vector<std::string>* notes,
+                                              Frame3ddAnalysis* analysis) {
   try {
-    msa::Structure s = Reader(display_name, units).parse(text, notes);
+    Reader reader(display_name, units);
+    msa::Structure s = reader.parse(text, notes);
+    if (analysis) *analysis = reader.analysis_;
     // Its messages start with the item's "FILE:LINE".
     if (const Status st = s.validate(); !st.ok()) return st;
     return s;
@@ -538,10 +543,10 @@ StatusOr<msa::Structure> read_frame3dd_string(const std::string& text, const std
 }
 
 StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units,
-                                       std::vector<std::string>* notes) {
+                                       std::vector<std::string>* notes, Frame3ddAnalysis* analysis) {
   StatusOr<std::string> text = read_text_file(path, "Frame3DD file");
   if (!text.ok()) return text.status();
-  return read_frame3dd_string(*text, path, units, notes);
+  return read_frame3dd_string(*text, path, units, notes, analysis);
 }
 
 }  // namespace kinestat::io

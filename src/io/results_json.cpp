@@ -183,6 +183,13 @@ StatusOr<json> solution_to_json(const msa::Structure& s, const msa::Solution& so
                 {"report_node", node_id(s, s.report_node().value_or(-1))}};
   j["status"] = status_json(sol.status);
   j["regularized"] = sol.regularized;
+  if (sol.second_order)
+    j["analysis"] = {{"order", "second"},
+                     {"method", "P-Delta: (K + K_G(N)) u = F iterated on the beams' axial forces N"},
+                     {"tolerance", sol.second_order->tolerance},
+                     {"max_iterations", sol.second_order->max_iterations}};
+  else
+    j["analysis"] = {{"order", "first"}, {"method", "linear: K u = F"}};
 
   const auto& f = sol.factorization;
   j["solver"] = {{"backend", sol.backend},
@@ -207,6 +214,15 @@ StatusOr<json> solution_to_json(const msa::Structure& s, const msa::Solution& so
   j["load_cases"] = json::array();
   for (std::size_t c = 0; c < sol.cases.size(); ++c) {
     json lc = load_case_json(s, sol.cases[c]);
+    if (sol.second_order) {
+      const msa::SecondOrderReport& so = *sol.second_order;
+      json N = json::array();
+      for (std::size_t b = 0; b < s.beams().size(); ++b)
+        N.push_back({{"beam", id_of(s.beams(), b)}, {"N", so.axial_force[c][b]}});
+      lc["second_order"] = {{"iterations", so.iterations[c]},
+                            {"relative_change", so.relative_change[c]},
+                            {"axial_force", std::move(N)}};
+    }
     if (stations && c < stations->size()) {
       lc["beam_stations"] = json::array();
       for (std::size_t b = 0; b < (*stations)[c].size(); ++b)

@@ -1,8 +1,11 @@
 #include "msa/assembly.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/joint_element.hpp"
 
 namespace kinestat::msa {
@@ -36,6 +39,50 @@ StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s) {
   solver::SparseMatrix K(s.num_dofs(), s.num_dofs());
   K.setFromTriplets(trip.begin(), trip.end());
   return K;
+}
+
+GeometricStiffness assemble_geometric_stiffness(const Structure& s, const std::vector<double>& axial_force,
+                                                bool torsion_term) {
+  GeometricStiffness g;
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(144 * s.beams().size());
+  for (size_t i = 0; i < s.beams().size(); ++i) {
+    const Beam& b = s.beams()[i];
+    const Section& sec = s.sections()[b.section];
+    const double r2 = torsion_term ? (sec.Iy + sec.Iz) / sec.A : 0.0;
+    g.local.push_back(beam_local_geometric_stiffness(axial_force[i], s.beam_length(b), r2));
+    const Mat12 T = beam_transformation(s.beam_axes(b));
+    const Mat12 kg = T.transpose() * g.local.back() * T;
+    const int base[2] = {6 * b.node1, 6 * b.node2};
+    for (int a = 0; a < 2; ++a)
+      for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 6; ++k)
+          for (int l = 0; l < 6; ++l) trip.emplace_back(base[a] + k, base[c] + l, kg(6 * a + k, 6 * c + l));
+  }
+  g.global = solver::SparseMatrix(s.num_dofs(), s.num_dofs());
+  g.global.setFromTriplets(trip.begin(), trip.end());
+  return g;
+}
+
+std::vector<double> beam_axial_forces(const std::vector<Vec12>& end_forces) {
+  std::vector<double> N;
+  N.reserve(end_forces.size());
+  // End forces act on the beam: tension is +N2 and -N1; their mean is the axial force at midspan.
+  for (const Vec12& f : end_forces) N.push_back(0.5 * (f(6) - f(0)));
+  return N;
+}
+
+Status check_no_end_releases(const Structure& s, const std::string& analysis) {
+  // The released dofs of K_G would have to be condensed with the elastic K_rr (an approximation:
+  // K_G changes the released dofs' stiffness too); rather than give approximate numbers, refuse.
+  for (const Beam& b : s.beams())
+    if (std::any_of(b.releases.begin(), b.releases.end(), [](bool r) { return r; }))
+      return Status::Invalid(at_source(
+          b.source, fmt::format("beam '{}' has end releases, which {} does not support (its geometric stiffness "
+                                "is not condensed); model the hinge with a joint of zero stiffness in the released "
+                                "direction instead",
+                                b.id, analysis)));
+  return Status::Ok();
 }
 
 StatusOr<std::vector<Vec12>> fixed_end_forces(const Structure& s, const LoadCase& lc) {

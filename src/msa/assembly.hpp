@@ -2,6 +2,7 @@
 // (Gonçalves et al. 2010, eq. (4)-(5)), as a sparse 6N x 6N matrix with no supports applied.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "kinestat/msa/structure.hpp"
@@ -19,6 +20,26 @@ StatusOr<BeamMatrices> beam_matrices(const Structure& s, const Beam& b);
 
 // Assembles K (6N x 6N, both triangles). Fails only for invalid end releases (item named).
 StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s);
+
+// The geometric stiffness of the beams' axial forces (buckling and the second-order solve): each
+// beam's local K_G (elements/beam_element.hpp) for its axial force `axial_force[i]` (N, tension
+// positive), and their sum rotated to global axes (6N x 6N, every beam's 12 x 12 blocks kept as
+// structural entries, so K + K_G has one sparsity pattern whatever the forces). `torsion_term`: the
+// Wagner term N (Iy + Iz) / (A L) (BucklingOptions::torsion_term says why).
+struct GeometricStiffness {
+  std::vector<Mat12> local;     // per beam, local axes
+  solver::SparseMatrix global;  // 6N x 6N, global axes, no supports applied
+};
+GeometricStiffness assemble_geometric_stiffness(const Structure& s, const std::vector<double>& axial_force,
+                                                bool torsion_term);
+
+// Each beam's axial force (N, tension positive) from its end forces (forces on the beam): the mean
+// (N2 - N1) / 2, the force at midspan under a uniform axial load or self-weight along the beam.
+std::vector<double> beam_axial_forces(const std::vector<Vec12>& end_forces);
+
+// kInvalidInput naming the first beam with end releases: the geometric stiffness of released dofs
+// would need its own condensation, so `analysis` ("buckling", "second-order analysis") refuses them.
+Status check_no_end_releases(const Structure& s, const std::string& analysis);
 
 // Fixed-end forces of a load case's member loads and self-weight: one per beam, local axes, end
 // releases condensed (elements/member_loads.hpp). Empty when the case has neither.

@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
-#include "kinestat/elements/beam_element.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
@@ -32,17 +31,10 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   }
   const LoadCase& lc = s.load_cases()[opt.load_case];
   res.load_case_name = lc.name;
-  // The released dofs of K_G would have to be condensed with the elastic K_rr (an approximation:
-  // K_G changes the released dofs' stiffness too); rather than give approximate factors, refuse.
-  for (const Beam& b : s.beams())
-    if (std::any_of(b.releases.begin(), b.releases.end(), [](bool r) { return r; })) {
-      res.status = Status::Invalid(at_source(
-          b.source, fmt::format("beam '{}' has end releases, which buckling does not support (its geometric stiffness "
-                                "is not condensed); model the hinge with a joint of zero stiffness in the released "
-                                "direction instead",
-                                b.id)));
-      return res;
-    }
+  if (Status st = check_no_end_releases(s, "buckling"); !st.ok()) {
+    res.status = st;
+    return res;
+  }
 
   res.linear = solve(s, opt.solve);
   if (!res.linear.status.ok()) {
@@ -51,11 +43,10 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   }
   const LoadCaseResult& r = res.linear.cases[opt.load_case];
   double max_abs = 0.0, max_compression = 0.0;
-  for (const Vec12& f : r.beam_end_forces) {
-    // End forces act on the beam: tension is +N2 and -N1; their mean is the axial force at midspan.
-    res.axial_force.push_back(0.5 * (f(6) - f(0)));
-    max_abs = std::max(max_abs, std::abs(res.axial_force.back()));
-    max_compression = std::max(max_compression, -res.axial_force.back());
+  res.axial_force = beam_axial_forces(r.beam_end_forces);
+  for (double N : res.axial_force) {
+    max_abs = std::max(max_abs, std::abs(N));
+    max_compression = std::max(max_compression, -N);
   }
   // Compression below round-off of the largest axial force (1e-12) is no compression.
   if (!(max_compression > 1e-12 * max_abs) || max_abs == 0.0) {
@@ -73,22 +64,7 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
     res.status = Status::Internal("buckling: the assembly failed after the static solve succeeded");
     return res;
   }
-  std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(144 * s.beams().size());
-  for (size_t i = 0; i < s.beams().size(); ++i) {
-    const Beam& b = s.beams()[i];
-    const Section& sec = s.sections()[b.section];
-    const double r2 = opt.torsion_term ? (sec.Iy + sec.Iz) / sec.A : 0.0;
-    const Mat12 T = beam_transformation(s.beam_axes(b));
-    const Mat12 kg = T.transpose() * beam_local_geometric_stiffness(res.axial_force[i], s.beam_length(b), r2) * T;
-    const int base[2] = {6 * b.node1, 6 * b.node2};
-    for (int a = 0; a < 2; ++a)
-      for (int c = 0; c < 2; ++c)
-        for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < 6; ++l) trip.emplace_back(base[a] + k, base[c] + l, kg(6 * a + k, 6 * c + l));
-  }
-  solver::SparseMatrix KG(s.num_dofs(), s.num_dofs());
-  KG.setFromTriplets(trip.begin(), trip.end());
+  const solver::SparseMatrix KG = assemble_geometric_stiffness(s, res.axial_force, opt.torsion_term).global;
   const solver::SparseMatrix& C = map->C;
   const solver::SparseMatrix Kr = C.transpose() * *K * C;
   const solver::SparseMatrix KGr = C.transpose() * KG * C;

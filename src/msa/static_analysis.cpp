@@ -95,13 +95,18 @@ VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& re
 }
 
 // `f` includes the equivalent nodal loads of the member loads, whose fixed-end forces `fef` (per
-// beam, local; empty: none) are added to k T u to give the members' true end forces.
+// beam, local; empty: none) are added to k T u to give the members' true end forces. With `g` (the
+// second-order solve), the stiffness is K + K_G: the residual, the end forces and the free-dof
+// residual use it, and the resultant adds the P-Delta forces -K_G u to the loads, because K_G u has
+// a moment (the axial forces on the rotated chords) which K u, self-balanced, has not.
 LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCase& lc, const VecX& u, const VecX& f,
-                            const VecX& u0, const std::vector<Vec12>& fef) {
+                            const VecX& u0, const std::vector<Vec12>& fef, const GeometricStiffness* g = nullptr) {
   LoadCaseResult r;
   r.name = lc.name;
   const int nn = static_cast<int>(s.nodes().size());
-  const VecX residual = sys.K * u - f;  // reactions at supports, constraint forces at tied nodes
+  const VecX pdelta = g ? VecX(g->global * u) : VecX::Zero(u.size());   // K_G u
+  const VecX applied = f - pdelta;
+  const VecX residual = sys.K * u + pdelta - f;  // reactions at supports, constraint forces at tied nodes
   const VecX support_residual = carry_ties_to_masters(s, sys.map, residual);
   r.displacement.resize(nn);
   r.reaction.assign(nn, Vec6::Zero());
@@ -121,7 +126,7 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
     }
     // Resultant of loads + reactions about the origin: zero for a structure in equilibrium.
     const Vec3& x = s.nodes()[n].position;
-    for (const Vec6& w : {Vec6(f.segment<6>(6 * n)), r.reaction[n]}) {
+    for (const Vec6& w : {Vec6(applied.segment<6>(6 * n)), r.reaction[n]}) {
       r.resultant.head<3>() += w.head<3>();
       r.resultant.tail<3>() += w.tail<3>() + x.cross(w.head<3>());
       scale += w.tail<3>().norm() + (size + x.norm()) * w.head<3>().norm();
@@ -130,7 +135,8 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   const double unbalance = size * r.resultant.head<3>().norm() + r.resultant.tail<3>().norm();
   r.equilibrium_error = scale > 0 ? unbalance / scale : 0.0;
   const VecX rr = sys.map.C.transpose() * residual;
-  const double fn = (sys.map.C.transpose() * (f - sys.K * u0)).norm();  // the reduced right-hand side
+  const VecX Kt_u0 = sys.K * u0 + (g ? VecX(g->global * u0) : VecX::Zero(u0.size()));
+  const double fn = (sys.map.C.transpose() * (f - Kt_u0)).norm();  // the reduced right-hand side
   r.free_dof_residual = fn > 0 ? rr.norm() / fn : rr.norm();
 
   for (size_t i = 0; i < s.beams().size(); ++i) {
@@ -138,7 +144,9 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
     const auto m = beam_matrices(s, b);  // cannot fail: assembly already succeeded
     Vec12 ue;
     ue << u.segment<6>(6 * b.node1), u.segment<6>(6 * b.node2);
-    r.beam_end_forces.push_back(m->local * (m->transform * ue));
+    const Vec12 local_u = m->transform * ue;
+    r.beam_end_forces.push_back(m->local * local_u);
+    if (g) r.beam_end_forces.back() += g->local[i] * local_u;
     if (!fef.empty()) r.beam_end_forces.back() += fef[i];
   }
   for (size_t j = 0; j < s.joints().size(); ++j) {
@@ -158,6 +166,22 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
     r.joint_forces.push_back(force);
   }
   return r;
+}
+
+// One load case's right-hand side: nodal loads plus the member loads' equivalent nodal loads (F),
+// prescribed displacements (U0) and the fixed-end forces per beam.
+struct CaseLoads {
+  VecX F, U0;
+  std::vector<Vec12> fef;
+};
+StatusOr<CaseLoads> case_loads(const Structure& s, const LoadCase& lc) {
+  auto fef = fixed_end_forces(s, lc);
+  if (!fef.ok()) return fef.status();
+  CaseLoads c;
+  c.F = nodal_loads(s, lc) + equivalent_nodal_loads(s, *fef);
+  c.U0 = prescribed_displacements(s, lc);
+  c.fef = std::move(*fef);
+  return c;
 }
 
 // Loads and reactions that do not balance mean a wrong answer (a lost reaction, a factor that
@@ -226,14 +250,14 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   MatX F(s.num_dofs(), nc), U0(s.num_dofs(), nc);
   std::vector<std::vector<Vec12>> fef(nc);  // per case: member loads' fixed-end forces per beam
   for (int c = 0; c < nc; ++c) {
-    auto fc = fixed_end_forces(s, s.load_cases()[c]);
-    if (!fc.ok()) {
-      sol.status = fc.status();
+    auto loads = case_loads(s, s.load_cases()[c]);
+    if (!loads.ok()) {
+      sol.status = loads.status();
       return sol;
     }
-    fef[c] = std::move(*fc);
-    F.col(c) = nodal_loads(s, s.load_cases()[c]) + equivalent_nodal_loads(s, fef[c]);
-    U0.col(c) = prescribed_displacements(s, s.load_cases()[c]);
+    fef[c] = std::move(loads->fef);
+    F.col(c) = loads->F;
+    U0.col(c) = loads->U0;
   }
   MatX Q;
   if (nc > 0) {
@@ -262,6 +286,105 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   if (sol.regularized)
     sol.status = Status::Singular("REGULARIZED answer of a singular structure (K + eps D): the numbers along the "
                                   "free motions are arbitrary. " + sol.singularity.message);
+  return sol;
+}
+
+Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, const SolveOptions& opt) {
+  Solution sol;
+  auto fail = [&sol](Status st) {
+    sol.status = std::move(st);
+    sol.cases.clear();
+    return sol;
+  };
+  if (opt.regularize)
+    return fail(Status::Invalid("a second-order analysis of a singular structure cannot be regularized: its "
+                                "free motions carry no axial force to iterate on; solve it linearly"));
+  if (!(so.tolerance > 0.0 && so.tolerance < 1.0))
+    return fail(Status::Invalid(
+        fmt::format("second-order tolerance {:g}: give a relative change between 0 and 1 (e.g. 1e-9)", so.tolerance)));
+  if (so.max_iterations < 1)
+    return fail(Status::Invalid(
+        fmt::format("second-order iteration limit {}: give at least 1 (e.g. 50)", so.max_iterations)));
+  if (Status st = s.validate(); !st.ok()) return fail(st);
+  if (Status st = check_no_end_releases(s, "a second-order analysis"); !st.ok()) return fail(st);
+
+  // The linear solve: the first axial forces, the diagnosis of a singular K, the report node's
+  // (elastic) Cartesian stiffness and the indices, all kept.
+  Workspace ws(opt.cholesky);
+  sol = solve(s, ws, opt);
+  if (!sol.status.ok()) return sol;
+  auto sys = build_system(s);
+  if (!sys.ok()) return fail(sys.status());
+  const auto t1 = Clock::now();
+  SecondOrderReport rep;
+  rep.tolerance = so.tolerance;
+  rep.max_iterations = so.max_iterations;
+  const double size = s.length_scale();
+  // Translations in m and rotations times the model's size, so that one norm weighs both as lengths.
+  auto as_lengths = [size](const VecX& u) {
+    VecX v = u;
+    for (Eigen::Index i = 0; i < v.size(); ++i)
+      if (i % 6 >= 3) v(i) *= size;
+    return v;
+  };
+  solver::SparseCholesky& chol = ws.cholesky();
+  const int nc = static_cast<int>(s.load_cases().size());
+  for (int c = 0; c < nc; ++c) {
+    const LoadCase& lc = s.load_cases()[c];
+    auto loads = case_loads(s, lc);
+    if (!loads.ok()) return fail(loads.status());
+    VecX u_prev(s.num_dofs());
+    for (int n = 0; n < static_cast<int>(s.nodes().size()); ++n) u_prev.segment<6>(6 * n) = sol.cases[c].displacement[n];
+    std::vector<double> N = beam_axial_forces(sol.cases[c].beam_end_forces);
+    double change = 0.0;
+    bool converged = false;
+    int k = 0;
+    LoadCaseResult r;
+    while (!converged && k < so.max_iterations) {
+      ++k;
+      const GeometricStiffness g = assemble_geometric_stiffness(s, N, so.torsion_term);
+      const solver::SparseMatrix Ktr = sys->map.C.transpose() * (sys->K + g.global) * sys->map.C;
+      if (Status st = chol.Factorize(Ktr, nullptr); !st.ok()) {
+        if (st.code() != StatusCode::kSingular) return fail(st);
+        // K + K_G of a stable structure is positive definite below the first critical load factor
+        // (Sylvester's inertia along K + lambda K_G), so a failed Cholesky means the loads reach it:
+        // a load with no equilibrium, a property of the input as in the loaded VJM (exit 2), not a
+        // mechanism (K itself passed the singularity checks of the linear solve).
+        return fail(Status::NotConverged(at_source(
+            lc.source.empty() ? s.source() : lc.source,
+            fmt::format("load case '{}': the loads reach or exceed the critical (buckling) load: the tangent "
+                        "stiffness K + K_G(N) is not positive definite at second-order iteration {} ({}); no "
+                        "second-order equilibrium below buckling exists. Reduce the loads; `kinestat buckling` "
+                        "gives the critical load factor of the case",
+                        lc.name, k, st.message()))));
+      }
+      MatX Q;
+      const VecX Kt_u0 = sys->K * loads->U0 + g.global * loads->U0;
+      if (Status st = chol.Solve(sys->map.C.transpose() * (loads->F - Kt_u0), &Q); !st.ok()) return fail(st);
+      const VecX u = sys->map.C * Q.col(0) + loads->U0;
+      const double un = as_lengths(u).norm();
+      change = un > 0.0 ? as_lengths(u - u_prev).norm() / un : 0.0;
+      if (!std::isfinite(change)) break;
+      r = post_process(s, *sys, lc, u, loads->F, loads->U0, loads->fef, &g);
+      N = beam_axial_forces(r.beam_end_forces);
+      u_prev = u;
+      converged = change <= so.tolerance;
+    }
+    if (!converged)
+      return fail(Status::NotConverged(at_source(
+          lc.source.empty() ? s.source() : lc.source,
+          fmt::format("load case '{}': the second-order (P-Delta) iteration did not converge in {} iterations (relative "
+                      "change of the displacements {:.3g}, tolerance {:.3g}); near the critical load the axial forces "
+                      "keep changing: allow more iterations, or check the loads against `kinestat buckling`",
+                      lc.name, k, change, so.tolerance))));
+    sol.cases[c] = std::move(r);
+    rep.iterations.push_back(k);
+    rep.relative_change.push_back(change);
+    rep.axial_force.push_back(std::move(N));
+  }
+  if (Status st = check_equilibrium(s, sol.cases, opt.max_equilibrium_error); !st.ok()) return fail(st);
+  sol.solve_seconds += seconds_since(t1);
+  sol.second_order = std::move(rep);
   return sol;
 }
 
@@ -302,6 +425,14 @@ Status check_solution_matches(const Structure& s, const Solution& sol) {
     if (r.max_translation_node >= here.nodes)
       return mismatch(
           fmt::format("load case '{}': its largest translation at node {}", r.name, r.max_translation_node));
+  }
+  if (sol.second_order) {
+    const SecondOrderReport& so = *sol.second_order;
+    if (so.iterations.size() != sol.cases.size() || so.relative_change.size() != sol.cases.size() ||
+        so.axial_force.size() != sol.cases.size())
+      return mismatch(fmt::format("its second-order report of {} load cases", so.iterations.size()));
+    for (const auto& N : so.axial_force)
+      if (N.size() != s.beams().size()) return mismatch(fmt::format("second-order axial forces of {} beams", N.size()));
   }
   for (const FreeMotion& m : sol.singularity.modes)
     if (m.node_motion.size() != s.nodes().size())

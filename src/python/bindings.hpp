@@ -51,6 +51,10 @@ mechanisms::MapField map_field(const MapFieldArg& f);
 // library is about to merge them into one core type: only that file changes then.
 void bind_msa_cartesian_stiffness(py::module_& msa);
 void bind_vjm_cartesian_stiffness(py::module_& vjm);
+// Linear buckling (msa/buckling.hpp, buckling.cpp) and vibration modes (msa/modes.hpp, modes.cpp),
+// into kinestat.msa: one binding file per header.
+void bind_msa_buckling(py::module_& msa);
+void bind_msa_modes(py::module_& msa);
 
 // The exception classes, created in module.cpp: KinestatError and its subclasses InputError,
 // SingularError, NotConvergedError.

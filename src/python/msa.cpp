@@ -214,6 +214,21 @@ void bind_solution(py::module_& m) {
       .def_readwrite("regularization", &SolveOptions::regularization)
       .def_readwrite("max_dofs_for_global_indices", &SolveOptions::max_dofs_for_global_indices);
 
+  py::class_<SecondOrderOptions>(m, "SecondOrderOptions")
+      .def(py::init<>())
+      .def_readwrite("tolerance", &SecondOrderOptions::tolerance,
+                     "relative change of the displacements that ends the iterations (default 1e-9)")
+      .def_readwrite("max_iterations", &SecondOrderOptions::max_iterations, "most solves of K + K_G(N) per case")
+      .def_readwrite("torsion_term", &SecondOrderOptions::torsion_term, "the Wagner term of K_G");
+
+  py::class_<SecondOrderReport>(m, "SecondOrderReport", "How a second-order (P-Delta) solve went.")
+      .def_readonly("tolerance", &SecondOrderReport::tolerance)
+      .def_readonly("max_iterations", &SecondOrderReport::max_iterations)
+      .def_readonly("iterations", &SecondOrderReport::iterations, "per load case")
+      .def_readonly("relative_change", &SecondOrderReport::relative_change, "per load case: the last change")
+      .def_readonly("axial_force", &SecondOrderReport::axial_force,
+                    "[case][beam], N (tension positive): the converged axial forces");
+
   py::class_<FreeMotion>(m, "FreeMotion", "One free motion (null-space mode) of a singular structure.")
       .def_property_readonly(
           "node_motion", [](const FreeMotion& f) { return rows(f.node_motion); },
@@ -275,6 +290,8 @@ void bind_solution(py::module_& m) {
       .def_readonly("global_indices", &Solution::global_indices, "indices of the reduced global matrix, or None")
       .def_readonly("assembly_seconds", &Solution::assembly_seconds)
       .def_readonly("solve_seconds", &Solution::solve_seconds)
+      .def_readonly("second_order", &Solution::second_order,
+                    "SecondOrderReport of solve_second_order, None for a linear solve")
       .def_property_readonly(
           "structure",
           [](const Solution& s) -> py::object {
@@ -319,6 +336,23 @@ void bind_solution(py::module_& m) {
       "an invalid structure and SingularError (with .diagnosis, an msa.SingularityDiagnosis) for a singular one, "
       "unless options.regularize or raise_on_singular=False. Releases the GIL.");
   m.def(
+      "solve_second_order",
+      [](const Structure& s, const std::optional<SecondOrderOptions>& second,
+         const std::optional<SolveOptions>& options) {
+        const SecondOrderOptions so = second.value_or(SecondOrderOptions{});
+        const SolveOptions o = options.value_or(SolveOptions{});
+        Solution sol = without_gil([&] { return msa::solve_second_order(s, so, o); });
+        if (!sol.status.ok())
+          raise_status(sol.status, sol.status.code() == StatusCode::kSingular ? py::cast(sol.singularity) : py::none());
+        return sol;
+      },
+      py::arg("structure"), py::arg("second_order") = py::none(), py::arg("options") = py::none(),
+      "Second-order (P-Delta) analysis: (K + K_G(N)) u = F iterated on the beams' axial forces "
+      "(docs/stability-and-modes.md); .second_order says how it went. Raises InputError (bad model, end releases), "
+      "SingularError for a singular structure, NotConvergedError for loads at or above the critical load or no "
+      "convergence. Releases "
+      "the GIL.");
+  m.def(
       "cartesian_stiffness",
       [](const Structure& s, int node, Workspace* ws, const std::optional<SolveOptions>& options) {
         const SolveOptions o = options.value_or(SolveOptions{});
@@ -340,6 +374,8 @@ void bind_solution(py::module_& m) {
 void bind_msa(py::module_& m) {
   bind_model(m);
   bind_solution(m);
+  bind_msa_buckling(m);
+  bind_msa_modes(m);
 }
 
 }  // namespace kinestat::python

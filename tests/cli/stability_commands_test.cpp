@@ -73,6 +73,26 @@ TEST(BucklingCommand, CaseSelectionAndRefusals) {
 // (Timoshenko, Vibration Problems in Engineering, rotary-inertia correction) = 11.72617 Hz; 8 beams
 // are 1.64e-5 above the closed form (tests/msa/modes_test.cpp, measured 1.6e-5 here too): asserted
 // within twice that. The first mode carries 8/pi^2 = 81.06 % of the mass.
+TEST(SolveSecondOrder, YamlColumnReportAndJson) {
+  // The column carries its 1 kN whatever it deflects (statically determinate): the second solve
+  // repeats the first, 2 iterations, and every beam's converged axial force is -1000 N.
+  const CliRun r = run_cli({"solve", kModels + "euler_column.yaml", "--second-order", "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("analysis: second-order (P-Delta)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("second-order (P-Delta), 2 iterations"), std::string::npos) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("analysis").at("order"), "second");
+  EXPECT_EQ(j.at("analysis").at("tolerance").get<double>(), 1e-9);
+  const nlohmann::json& so = j.at("load_cases")[0].at("second_order");
+  EXPECT_EQ(so.at("iterations"), 2);
+  ASSERT_EQ(so.at("axial_force").size(), 8u);
+  for (const auto& b : so.at("axial_force")) EXPECT_NEAR(b.at("N").get<double>(), -1000.0, 1e-9);
+  // --tolerance reaches the iteration: a tolerance of 1 is refused (a relative change below 1).
+  const CliRun bad = run_cli({"solve", kModels + "euler_column.yaml", "--second-order", "--tolerance", "1"});
+  EXPECT_EQ(bad.code, kExitBadInput);
+  EXPECT_NE(bad.err.find("second-order tolerance 1"), std::string::npos) << bad.err;
+}
+
 TEST(ModesCommand, ColumnFrequencyJsonAndVtk) {
   const auto dir = std::filesystem::path(KINESTAT_BINARY_DIR) / "test_modes_out";
   std::filesystem::remove_all(dir);

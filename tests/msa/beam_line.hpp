@@ -32,4 +32,23 @@ inline Structure straight(double L, int n, const Section& sec, BeamTheory th = B
   return s;
 }
 
+// One 1 m beam 'hinged' clamped at node 0, its second end released about local z, pushed by 1 kN
+// along its axis: the end releases that buckling and the second-order solve refuse.
+inline Structure hinged_beam(const Section& sec) {
+  Structure s;
+  Beam b;
+  b.id = "hinged";
+  b.material = s.add_material(kSteel);
+  b.section = s.add_section(sec);
+  b.node1 = s.add_node("a", Vec3(0, 0, 0));
+  b.node2 = s.add_node("b", Vec3(1, 0, 0));
+  b.releases[11] = true;
+  s.add_beam(b);
+  s.add_support({0, kAllDofs, Mat3::Identity()});
+  LoadCase lc{.name = "axial"};
+  lc.loads.push_back({1, Vec6::Unit(0) * -1000.0});
+  s.add_load_case(lc);
+  return s;
+}
+
 }  // namespace kinestat::msa

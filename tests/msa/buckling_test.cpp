@@ -164,23 +164,7 @@ TEST(Buckling, NoCompressionIsRefused) {
 }
 
 TEST(Buckling, ReleasesAreRefused) {
-  Structure s;
-  const int m = s.add_material(kSteel);
-  const int c = s.add_section(rectangle_section(0.02, 0.03));
-  s.add_node("a", Vec3(0, 0, 0));
-  s.add_node("b", Vec3(1, 0, 0));
-  Beam b;
-  b.id = "hinged";
-  b.node1 = 0;
-  b.node2 = 1;
-  b.material = m;
-  b.section = c;
-  b.releases[11] = true;
-  s.add_beam(b);
-  s.add_support({0, kAllDofs, Mat3::Identity()});
-  LoadCase lc{.name = "axial"};
-  lc.loads.push_back({1, Vec6::Unit(0) * -1000.0});
-  s.add_load_case(lc);
+  const Structure s = hinged_beam(rectangle_section(0.02, 0.03));
   const BucklingResult r = buckling(s);
   EXPECT_EQ(r.status.code(), StatusCode::kInvalidInput);
   EXPECT_NE(r.status.message().find("beam 'hinged' has end releases"), std::string::npos) << r.status.message();

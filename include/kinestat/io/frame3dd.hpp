@@ -13,17 +13,28 @@
 
 namespace kinestat::io {
 
+// What a .3dd file asks of the analysis beyond the structure itself.
+struct Frame3ddAnalysis {
+  // The geometric stiffness flag is 1: Frame3DD's second-order analysis, which `kinestat solve`
+  // honours with msa::solve_second_order (docs/structure-format.md, "Frame3DD files").
+  bool geometric_stiffness = false;
+  std::string geometric_stiffness_source;  // "FILE:LINE" of the flag
+};
+
 // Parses and validates a .3dd file whose numbers are in `units` (force and length; time in s, so
 // densities in force s^2/length^4 and gravity in length/s^2; angles in degrees; temperatures and
 // the expansion coefficient in the file's own degrees). Any problem, or anything kinestat cannot
-// solve as written (geometric stiffness, node radii), gives kInvalidInput "FILE:LINE: ITEM: what is
+// solve as written (node radii), gives kInvalidInput "FILE:LINE: ITEM: what is
 // wrong; what to do". `notes` (when given) receives "FILE:LINE: ..." remarks on what was read but is
-// not used by a static solve (dynamic modes).
+// not used by a static solve (dynamic modes); `analysis` (when given) what the file asks of the
+// analysis (the geometric stiffness flag).
 StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units,
-                                       std::vector<std::string>* notes = nullptr);
+                                       std::vector<std::string>* notes = nullptr,
+                                       Frame3ddAnalysis* analysis = nullptr);
 
 // The same from text in memory; `display_name` stands for the file name in messages.
 StatusOr<msa::Structure> read_frame3dd_string(const std::string& text, const std::string& display_name,
-                                              const FileUnits& units, std::vector<std::string>* notes = nullptr);
+                                              const FileUnits& units, std::vector<std::string>* notes = nullptr,
+                                              Frame3ddAnalysis* analysis = nullptr);
 
 }  // namespace kinestat::io

@@ -36,13 +36,34 @@ struct SolveOptions {
   int max_dofs_for_global_indices = 2000;
 };
 
+// Second-order (P-Delta) analysis: how it went (Solution::second_order; docs/stability-and-modes.md).
+struct SecondOrderOptions {
+  // Iterations stop when the relative change of the displacements between two iterations,
+  // ||u_k - u_k-1|| / ||u_k|| (rotations times the structure's size, so that both are lengths), is
+  // below `tolerance`; kNotConverged after `max_iterations` solves of K + K_G(N) without that.
+  double tolerance = 1e-9;
+  int max_iterations = 50;
+  bool torsion_term = true;  // the Wagner term of K_G, as BucklingOptions::torsion_term
+};
+
+struct SecondOrderReport {
+  double tolerance = 0.0;
+  int max_iterations = 0;
+  std::vector<int> iterations;          // per load case: solves of K + K_G(N) until converged
+  std::vector<double> relative_change;  // per load case: the last ||u_k - u_k-1|| / ||u_k||
+  std::vector<std::vector<double>> axial_force;  // [case][beam], N, tension positive: the converged N
+};
+
 struct LoadCaseResult {
   std::string name;
   std::vector<Vec6> displacement;    // per node, global: ux uy uz (m), rx ry rz (rad)
   std::vector<Vec6> reaction;        // per node, global: forces (N) and moments (N m); zero off supports
-  std::vector<Vec12> beam_end_forces;  // per beam, local axes: N1 Vy1 Vz1 T1 My1 Mz1 N2 ... (force on the beam)
+  // per beam, local axes: N1 Vy1 Vz1 T1 My1 Mz1 N2 ... (force on the beam); second order: (k + k_G(N)) T u + FEF
+  std::vector<Vec12> beam_end_forces;
   std::vector<Vec6> joint_forces;    // per joint, joint frame: spring force/moment acting on node2
-  Vec6 resultant = Vec6::Zero();     // sum of loads and reactions (force, moment about origin): ~0
+  // Sum of loads and reactions (force, moment about origin): ~0. Second order: of loads, reactions and
+  // the P-Delta forces -K_G u (their moment is that of the axial forces on the deflected members).
+  Vec6 resultant = Vec6::Zero();
   double equilibrium_error = 0.0;    // |resultant| / (|loads| + |reactions|), forces times the model size
   double free_dof_residual = 0.0;    // ||C'(K u - f)|| / ||C' f||
   double max_translation = 0.0;
@@ -71,6 +92,9 @@ struct Solution {
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;
   std::optional<SolvedStructure> structure;  // set by solve(); unset in a Solution built by hand
+  // Set by solve_second_order: the cases are the P-Delta equilibria (the Cartesian stiffness and the
+  // indices stay those of the elastic K).
+  std::optional<SecondOrderReport> second_order;
 };
 
 // Mutable workspace reused across solves of structures with the same topology (a posture sweep):
@@ -88,6 +112,17 @@ class Workspace {
 // Solves every load case. Validates the structure first (kInvalidInput with the message).
 Solution solve(const Structure& s, Workspace& ws, const SolveOptions& options = {});
 Solution solve(const Structure& s, const SolveOptions& options = {});
+
+// Second-order (P-Delta) static analysis of every load case: a linear solve gives each beam's axial
+// force N; then (K + K_G(N)) u = F is solved (K_G: elements/beam_element.hpp, as buckling uses it),
+// N recomputed from the new end forces, and so on until the displacements change by less than
+// options.tolerance. Joints and rigid links carry no K_G. Fails as solve() does (kInvalidInput,
+// kSingular with the diagnosis of the elastic K), and with kInvalidInput for beams with end
+// releases, and kNotConverged when a case's loads reach its critical (buckling) load (K + K_G not
+// positive definite: the iteration would find an unstable equilibrium) or after
+// options.max_iterations without convergence. Not with SolveOptions::regularize (kInvalidInput).
+Solution solve_second_order(const Structure& s, const SecondOrderOptions& options = {},
+                            const SolveOptions& solve_options = {});
 
 // Compliance/stiffness of one node (static condensation onto its 6 dofs) without load cases; the
 // point is the node's position, the axes global.
