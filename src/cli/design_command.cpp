@@ -431,26 +431,22 @@ std::string measure_text(double m, bool volume) {
   return fmt::format("{:.6g}", m / (volume ? 1e-9 : 1e-6));
 }
 
-int run_robot_design(RobotDesignArgs a, Context& ctx) {
+// What the sweep needs, from the options and the file as written: every --param must name one of its
+// parameters; the region is --box or its `workspace:`.
+struct RobotDesignSetup {
+  mechanisms::RobotDesignSweepOptions options;
+  std::string units;  // of the parameters, for the report and the files
+  mechanisms::RobotDescription description;
+};
+
+StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
   using namespace mechanisms;
-  // Under mpirun every rank runs this; rank 0 alone writes and says why a run failed (a failure of
-  // one rank is every rank's through solver::agree_on_status in the sweep).
-  int rank = 0;
-  auto fail = [&ctx, &rank](const Status& s) {
-    ctx.failure = "kinestat design: " + s.message();
-    return rank == 0 ? report_failure(ctx, kRobotDesignCommand, s) : exit_code_for(s);
-  };
-  if (under_mpi_launcher()) {
-    auto group = solver::start_parallel();
-    if (!group.ok()) return fail(group.status());
-    rank = group->rank;
-    if (rank != 0) a.json.clear(), a.vti.clear(), a.quiet = true;
-    if (Status s = solver::same_on_every_rank("the command line", ctx.command_line); !s.ok()) return fail(s);
-  }
+  const auto fail = [](Status s) { return s; };
+  RobotDesignSetup setup;
+  RobotDesignSweepOptions& o = setup.options;
   if (a.target.empty())
     return fail(Status::Invalid("give a robot file (kinestat design ROBOT.yaml --param NAME=LO:HI ...) or a "
                                 "subcommand: fivebar, orthoglide"));
-  RobotDesignSweepOptions o;
   if (a.params.empty())
     return fail(Status::Invalid("--param NAME=LO:HI is required (at least one parameter of the file to sweep)"));
   for (const std::string& text : a.params) {
@@ -545,8 +541,36 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
     return fail(Status::Invalid(fmt::format("{} with --step {:g} mm: {}", a.box.empty() ? "the file's workspace" : "--box",
                                             *a.step, region.status().message())));
   o.region = *region;
+  setup.units = units;
+  setup.description = d;
+  return setup;
+}
 
-  const std::string path = a.target;
+int run_robot_design(RobotDesignArgs a, Context& ctx) {
+  using namespace mechanisms;
+  // Under mpirun every rank runs this; rank 0 alone writes and says why a run failed (a failure of
+  // one rank is every rank's through solver::agree_on_status in the sweep).
+  int rank = 0;
+  auto fail = [&ctx, &rank](const Status& s) {
+    ctx.failure = "kinestat design: " + s.message();
+    return rank == 0 ? report_failure(ctx, kRobotDesignCommand, s) : exit_code_for(s);
+  };
+  if (under_mpi_launcher()) {
+    auto group = solver::start_parallel();
+    if (!group.ok()) return fail(group.status());
+    rank = group->rank;
+    if (rank != 0) a.json.clear(), a.vti.clear(), a.quiet = true;
+    if (Status s = solver::same_on_every_rank("the command line", ctx.command_line); !s.ok()) return fail(s);
+  }
+  // A file one rank cannot read stops every rank (the others would wait for it in the sweep).
+  StatusOr<RobotDesignSetup> setup = robot_design_setup(a);
+  if (Status s = solver::agree_on_status(setup.status()); !s.ok()) return fail(s);
+  RobotDesignSweepOptions& o = setup->options;
+  const std::string& units = setup->units;
+  const RobotDescription& d = setup->description;
+  const MapGrid* region = &o.region;
+  const std::string& path = a.target;
+
   const RobotDesignFactory factory = [&path](const std::vector<std::pair<std::string, double>>& values) {
     return io::read_robot_model(path, values);
   };
