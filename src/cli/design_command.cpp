@@ -406,6 +406,14 @@ bool under_mpi_launcher() {
   return false;
 }
 
+// The rank the launcher gave this process (0 when it gave none): without MPI built in, the process
+// of rank 0 runs the whole sweep and the others stand aside instead of repeating it.
+int launcher_rank() {
+  for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (const char* value = std::getenv(v)) return std::atoi(value);
+  return 0;
+}
+
 // "arm=250:350" or "arm=300", in the file's units (which may be negative: no mm conversion here).
 StatusOr<mechanisms::DesignParameter> parse_param(const std::string& text) {
   const std::size_t eq = text.find('=');
@@ -548,8 +556,8 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
 
 int run_robot_design(RobotDesignArgs a, Context& ctx) {
   using namespace mechanisms;
-  // Under mpirun every rank runs this; rank 0 alone writes and says why a run failed (a failure of
-  // one rank is every rank's through solver::agree_on_status in the sweep).
+  // Under mpirun every rank runs this; rank 0 alone writes and says why a run failed (the ranks
+  // agree on the setup's outcome here and on the sweep's in robot_design_sweep).
   int rank = 0;
   auto fail = [&ctx, &rank](const Status& s) {
     ctx.failure = "kinestat design: " + s.message();
@@ -558,6 +566,7 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
   if (under_mpi_launcher()) {
     auto group = solver::start_parallel();
     if (!group.ok()) return fail(group.status());
+    if (!solver::parallel_running() && launcher_rank() != 0) return kExitOk;  // no MPI: rank 0 runs it all
     rank = group->rank;
     if (rank != 0) a.json.clear(), a.vti.clear(), a.quiet = true;
     if (Status s = solver::same_on_every_rank("the command line", ctx.command_line); !s.ok()) return fail(s);
