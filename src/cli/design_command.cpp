@@ -8,7 +8,7 @@
 // Design sweep of the five-bar (mechanisms/five_bar_design_sweep.hpp): the share of a region that
 // each design (r1, r2) reaches singularity-free and stiffer than K; the best design; VTI, PNG, JSON.
 //
-// kinestat design ROBOT.yaml --param NAME=LO:HI ... --steps N [--box X0:X1,Y0:Y1,Z0:Z1] --step MM
+// kinestat design ROBOT.yaml --param NAME=LO:HI ... --steps N [--box X0:X1,Y0:Y1,Z0:Z1] --step MM [--load D | --wrench W]
 //                            --min-stiffness K [--json FILE|-] [--vti FILE] [--quiet]
 // Design sweep of a robot file (mechanisms/robot_design_sweep.hpp): every design of the grid of the
 // named parameters (the file re-read with their values, io::read_robot_model), its map of one
@@ -388,6 +388,7 @@ struct RobotDesignArgs {
   std::optional<double> step;       // mm
   std::optional<double> min_stiffness;  // N/mm
   std::vector<double> orientation;  // deg
+  std::vector<double> load, wrench;  // loaded mode: mm, deg / N, N mm
   double near_singular = mechanisms::MapOptions{}.near_singular_threshold;
   int threads = 0;
   double max_postures = mechanisms::kDefaultMaxRobotDesignPostures;
@@ -521,6 +522,15 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
       return fail(Status::Invalid(fmt::format("{} commands no {}: give a single value for it in --box (e.g. {}0)",
                                               d.name, "xyz"[i], i == 0 ? "" : i == 1 ? "x0:x1," : "x0:x1,y0:y1,")));
   }
+  if (!a.load.empty()) {
+    auto load = parse_displacement_option(a.load, "--load");
+    if (!load.ok()) return fail(load.status());
+    o.kernel.displacement = *load;
+  } else if (!a.wrench.empty()) {
+    auto wrench = parse_wrench_option(a.wrench, "--wrench");
+    if (!wrench.ok()) return fail(wrench.status());
+    o.kernel.wrench = *wrench;
+  }
   if (!a.orientation.empty()) {
     if (a.orientation.size() != 3) return fail(Status::Invalid("--orientation takes three angles rx,ry,rz (deg)"));
     o.kernel.task = VecX::Zero(static_cast<int>(d.task.size()));  // positions: the grid's; angles: these
@@ -625,7 +635,8 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
   for (std::size_t p = 0; p < s.parameters.size(); ++p)
     swept += fmt::format("{}{} {:g}:{:g} ({})", p ? ", " : "", s.parameters[p].name, s.parameters[p].lo,
                          s.parameters[p].hi, s.dimensions[p]);
-  out << fmt::format("{}: design sweep of {} designs: {}\n", d.name, s.results.size(), swept);
+  out << fmt::format("{}: design sweep of {} designs: {}\n", s.description.empty() ? d.name : s.description,
+                     s.results.size(), swept);
   out << fmt::format("  parameters in {}\n", units);
   const MapGrid& g = s.region;
   out << fmt::format("  region x {:g}:{:g}, y {:g}:{:g}, z {:g}:{:g} mm, step {:g} mm: {} x {} x {} = {} points per "
@@ -707,6 +718,13 @@ void register_design_command(CLI::App& app, Context& ctx) {
   design->add_option("--orientation", robot->orientation,
                      "the tool's orientation rx,ry,rz in deg for the task's angles (default: home's, 0)")
       ->delimiter(',');
+  CLI::Option* load = design->add_option("--load", robot->load,
+                                         "prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg): the loaded mode")
+                          ->delimiter(',');
+  design->add_option("--wrench", robot->wrench,
+                     "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N mm) at the tool point: the loaded mode")
+      ->delimiter(',')
+      ->excludes(load);
   design->add_option("--near-singular", robot->near_singular,
                      "points whose singularity measure (0..1) is below this are near-singular (default 0.01)");
   design->add_option("--threads", robot->threads, "threads per process (default 0: all cores)");

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,18 +37,24 @@ std::vector<std::string> delta_design(const std::vector<std::string>& params, co
   return args;
 }
 
-// The map of one design as `kinestat map` builds it, with the same region and threshold.
-mechanisms::WorkspaceMap direct_map(const io::ParamOverrides& params) {
+// The map of one design as `kinestat map` builds it, with the same region and threshold (and,
+// for the loaded mode, a wrench in N, N m).
+mechanisms::WorkspaceMap direct_map(const io::ParamOverrides& params, std::optional<Vec6> wrench = std::nullopt,
+                                    const std::array<mechanisms::MapRange, 3>& box = {mechanisms::MapRange{-0.3, 0.3},
+                                                                                     {-0.3, 0.3}, {-0.95, -0.65}},
+                                    double step = 0.15) {
   using namespace mechanisms;
   auto model = io::read_robot_model(kDelta, params);
   EXPECT_TRUE(model.ok()) << model.status().message();
   RobotKernelOptions o;
   o.model = std::make_shared<const RobotModel>(std::move(*model));
   o.task = o.model->home_task();
-  auto grid = make_map_grid({MapRange{-0.3, 0.3}, MapRange{-0.3, 0.3}, MapRange{-0.95, -0.65}}, 0.15, 1000000);
+  o.wrench = wrench;
+  auto grid = make_map_grid(box, step, 1000000);
   EXPECT_TRUE(grid.ok()) << grid.status().message();
   MapOptions options;
   options.min_stiffness = 3e3;  // N/m
+  options.with_deflection = options.with_iterations = wrench.has_value();
   auto map = compute_workspace_map(*make_robot_kernel(o), *grid, options);
   EXPECT_TRUE(map.ok()) << map.status().message();
   return std::move(*map);
@@ -83,6 +91,25 @@ TEST(DesignRobotCommand, BestDesignEqualsItsDirectMap) {
   }
   // The designs differ: the criterion chose.
   EXPECT_NE(table[0]["stiff_measure"], table[3]["stiff_measure"]);
+}
+
+// The loaded mode (--wrench): each design's stiff volume is that of its loaded map.
+TEST(DesignRobotCommand, LoadedModeEqualsItsDirectMap) {
+  const CliRun r = run_cli({"design", kDelta, "--param", "arm=250:350", "--steps", "2",
+                            "--box=-100:100,-100:100,-750:-650", "--step", "100", "--min-stiffness", "3", "--wrench",
+                            "0,0,-200,0,0,5000", "--json", "-", "--quiet"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["description"].get<std::string>().find("loaded under a wrench"), std::string::npos) << j["description"];
+  Vec6 wrench;
+  wrench << 0, 0, -200, 0, 0, 5;  // N, N m
+  for (const auto& design : j["designs_table"]) {
+    ASSERT_EQ(design["status"], "ok") << design;
+    const mechanisms::WorkspaceMap map = direct_map({{"arm", design["values"][0].get<double>()}}, wrench,
+                                                    {mechanisms::MapRange{-0.1, 0.1}, {-0.1, 0.1}, {-0.75, -0.65}}, 0.1);
+    ASSERT_GT(map.stiff_measure, 0.0);
+    EXPECT_NEAR(design["stiff_measure"].get<double>(), map.stiff_measure, 1e-12 * map.stiff_measure);
+  }
 }
 
 TEST(DesignRobotCommand, TableNamesTheBestAndTheUnits) {
