@@ -583,7 +583,9 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
   }
   // A file one rank cannot read stops every rank (the others would wait for it in the sweep).
   StatusOr<RobotDesignSetup> setup = robot_design_setup(a);
-  if (Status s = solver::agree_on_status(setup.status()); !s.ok()) return fail(s);
+  Status mine = setup.status();
+  if (!mine.ok() && rank != 0) mine = Status(mine.code(), fmt::format("MPI rank {}: {}", rank, mine.message()));
+  if (Status s = solver::agree_on_status(mine); !s.ok()) return fail(s);
   RobotDesignSweepOptions& o = setup->options;
   const std::string& units = setup->units;
   const RobotDescription& d = setup->description;

@@ -5,13 +5,17 @@ documents name the same best design and hold the same measures for every design 
 relative: each design's map is computed the same way on any rank), that only rank 0 wrote (one
 JSON document on stdout) and that the second run says it ran on 2 ranks. One design of the sweep
 cannot be built (forearm 500 from arm 600): its failure, found on rank 1, reaches rank 0's table.
+Then a job whose rank 1 runs in a folder without the robot file ends on both ranks, in seconds, with
+rank 1's reason (the setup's outcome is agreed before the sweep).
 
 usage: compare_robot_design.py KINESTAT MPIEXEC ROBOT [design options...]
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 
 
 def run(command):
@@ -45,6 +49,18 @@ def main():
     if failed != 1:
         sys.exit(f"{failed} failed designs, expected 1 (arm 600, forearm 500)")
     best = two["best"]
+    with tempfile.TemporaryDirectory() as top:
+        a, b = os.path.join(top, "a"), os.path.join(top, "b")
+        os.makedirs(a), os.makedirs(b)
+        shutil.copy(robot, os.path.join(a, "robot.yaml"))  # rank 1's folder has none
+        args = [kinestat, "design", "robot.yaml", *options, "--quiet"]
+        try:
+            done = subprocess.run([mpiexec, "-np", "1", "-wdir", a, *args, ":", "-np", "1", "-wdir", b, *args],
+                                  capture_output=True, text=True, timeout=60)
+        except subprocess.TimeoutExpired:
+            sys.exit("robot file on rank 0 only: still running after 60 s (a hang)")
+        if done.returncode == 0 or "MPI rank 1: robot.yaml" not in done.stderr:
+            sys.exit(f"robot file on rank 0 only: exit {done.returncode}, stderr:\n{done.stderr}")
     print(f"{len(two['designs_table'])} designs on 1 and 2 ranks agree; best {best['parameters']}, "
           f"stiff {best['stiff_measure']:.6g} m^3; the failed design's message came through")
 
