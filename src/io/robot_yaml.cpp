@@ -442,6 +442,7 @@ StatusOr<RobotParams> read_robot_params(const std::string& path) {
     RobotParams p;
     const FileUnits u = YamlFields(path, kDoc).units(root["units"]);
     p.length_unit = u.length_name;
+    p.force_unit = u.force_name;
     p.length_scale = u.length;
     p.values = d->params;
     return p;

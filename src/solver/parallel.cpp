@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
+#include <utility>
 #include <thread>
 
 #include <fmt/format.h>
@@ -38,6 +40,33 @@ Status broadcast_vector(std::vector<T>& values, MPI_Datatype type, int root) {
     if (MPI_Bcast(values.data() + first, piece, type, root, PETSC_COMM_WORLD) != MPI_SUCCESS)
       return Status::Internal("MPI_Bcast of shared data failed");
   }
+  return Status::Ok();
+}
+
+// Every rank's vector to rank 0, concatenated in rank order (counts in MPI's int: the pieces a
+// split job gathers are small).
+template <class T>
+Status gather_vector(std::vector<T>& values, MPI_Datatype type) {
+  const ProcessGroup group = process_group();
+  if (group.size == 1) return Status::Ok();
+  if (values.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    return Status::Internal("MPI gather: a rank's data is larger than MPI's int counts");
+  int mine = static_cast<int>(values.size());
+  std::vector<int> counts(group.rank == 0 ? group.size : 0), offsets;
+  if (MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, PETSC_COMM_WORLD) != MPI_SUCCESS)
+    return Status::Internal("MPI_Gather of the lengths failed");
+  std::vector<T> all;
+  if (group.rank == 0) {
+    long long total = 0;
+    for (int c : counts) offsets.push_back(static_cast<int>(total)), total += c;
+    if (total > std::numeric_limits<int>::max())
+      return Status::Internal("MPI gather: the ranks' data is larger than MPI's int counts");
+    all.resize(static_cast<std::size_t>(total));
+  }
+  if (MPI_Gatherv(values.data(), mine, type, all.data(), counts.data(), offsets.data(), type, 0,
+                  PETSC_COMM_WORLD) != MPI_SUCCESS)
+    return Status::Internal("MPI_Gatherv of the ranks' data failed");
+  if (group.rank == 0) values = std::move(all);
   return Status::Ok();
 }
 
@@ -81,6 +110,8 @@ void finish_parallel() {
 
 Status broadcast_from_root(std::vector<double>& values) { return broadcast_vector(values, MPI_DOUBLE, 0); }
 Status broadcast_from_root(std::vector<int>& values) { return broadcast_vector(values, MPI_INT, 0); }
+Status gather_to_root(std::vector<double>& values) { return gather_vector(values, MPI_DOUBLE); }
+Status gather_to_root(std::vector<char>& values) { return gather_vector(values, MPI_CHAR); }
 
 Status agree_on_status(const Status& mine) {
   const ProcessGroup group = process_group();
@@ -144,6 +175,8 @@ bool parallel_running() { return false; }
 void finish_parallel() {}
 Status broadcast_from_root(std::vector<double>&) { return Status::Ok(); }
 Status broadcast_from_root(std::vector<int>&) { return Status::Ok(); }
+Status gather_to_root(std::vector<double>&) { return Status::Ok(); }
+Status gather_to_root(std::vector<char>&) { return Status::Ok(); }
 Status agree_on_status(const Status& mine) { return mine; }
 Status same_on_every_rank(const std::string&, const std::string&) { return Status::Ok(); }
 int finish_job(int exit_code, const std::string&, double) { return exit_code; }

@@ -33,10 +33,10 @@ StatusOr<mechanisms::RobotModel> read_robot_model(const std::string& path, const
 StatusOr<bool> is_robot_file(const std::string& path);
 
 // The names and values (in the file's units, after evaluation) of a file's `params:` and the name
-// of its length unit ("mm"), for design sweeps and reports.
+// of its length and force units ("mm", "N"), for design sweeps and reports.
 struct RobotParams {
   std::vector<std::pair<std::string, double>> values;
-  std::string length_unit;
+  std::string length_unit, force_unit;
   double length_scale = 1.0;  // m per file length unit
 };
 StatusOr<RobotParams> read_robot_params(const std::string& path);

@@ -32,6 +32,12 @@ void finish_parallel();
 // (resized on the others).
 Status broadcast_from_root(std::vector<double>& values);
 Status broadcast_from_root(std::vector<int>& values);
+// Collecting what every rank computed of a split job (e.g. a design sweep's designs, round-robin).
+// Collective: on return rank 0's `values` holds every rank's, one after another in rank order (its
+// own first); the other ranks' are unchanged. Without PETSc, before start_parallel or on one rank
+// they do nothing.
+Status gather_to_root(std::vector<double>& values);
+Status gather_to_root(std::vector<char>& values);
 // Every rank's outcome of a step that may fail on some ranks only (rank 0's meshing, a rank's own
 // elements): returns to every rank the failure of the lowest failing rank (code and message), or Ok.
 // Call it before the next collective step, so that a failure stops every rank instead of leaving the
