@@ -267,6 +267,7 @@ class RobotReader : public YamlFields {
         fail(b, label, "the link has no length in the drawing; give the beam's `x` direction and `length`");
       const double roll = b["roll"].IsDefined() ? expr(b["roll"], label, "roll") * kDeg : 0.0;
       l.spring = RobotSpring{l.label, vjm::cantilever_spring(m, s, L, theory), beam_axes(x, roll)};
+      l.beam = RobotBeam{m, s, L, theory};
     } else if (const YAML::Node sp = n["spring"]; sp.IsDefined()) {
       const Vec3 x = dir.norm() > 0.0 ? dir : Vec3::UnitX();
       RobotSpring s = spring(sp, l.label, beam_axes(x, 0.0));
