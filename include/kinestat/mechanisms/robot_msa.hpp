@@ -21,6 +21,8 @@ namespace kinestat::mechanisms {
 //   in a frame that splits its motion: the free components released (0), an actuated coordinate
 //   its actuator's stiffness (through the frame: k / sin^2 of the angle between a universal
 //   joint's axes), every other component rigid; a locked joint (rigid actuator) joins its bodies;
+//   a joint's spring and the joint are one element when both are diagonal in the spring's axes
+//   (components in series: the built-in five-bar's joints), else two about a node between them;
 // - the platform node at the tool point, the report node (Structure::report_node()).
 // Rigid components are exact: the structure's ties (master-slave elimination), which must form
 // trees, so every closed loop base - legs - platform must pass through an element (a beam or a
