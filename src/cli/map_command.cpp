@@ -1,5 +1,6 @@
 // kinestat map fivebar [--mode ++] [--assembly up] [--method msa] [--region x0:x1,y0:y1] [--step MM] [--load W]
 // kinestat map MODEL.yaml --box x0:x1,y0:y1,z0:z1 --step MM [--load D | --wrench W]
+// kinestat map ROBOT.yaml --step MM [--box ..] [--orientation rx,ry,rz] [--method vjm|msa] [--load D | --wrench W]
 // A workspace stiffness map (mechanisms/workspace_map.hpp; docs/maps.md): every point of a grid,
 // written as VTI (ParaView), JSON and PNG, with a short summary on stdout.
 #include <algorithm>
@@ -169,12 +170,18 @@ std::string task_text(const RobotDescription& d) {
 // A robot file (docs/robots.md): the box from --box or the file's `workspace:`, the orientation
 // task coordinates from --orientation.
 StatusOr<MapSetup> robot_setup(const MapArgs& a) {
-  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt})
+  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.region_opt})
     if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a robot file takes --box, --step, "
-                                      "--orientation, --angles, --angle-step, --position, --load or --wrench");
+                                      "--orientation, --angles, --angle-step, --position, --method, --load or "
+                                      "--wrench");
         !s.ok())
       return s;
   RobotKernelOptions o;
+  if (a.method_opt && a.method_opt->count() > 0) {  // a robot file's default is the VJM
+    if (a.method != "msa" && a.method != "vjm")
+      return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", a.method));
+    o.method = a.method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
+  }
   if (Status st = parse_load(a, o.displacement, o.wrench); !st.ok()) return st;
   auto model = io::read_robot_model(a.target);
   if (!model.ok()) return model.status();
@@ -434,7 +441,9 @@ void register_map_command(CLI::App& app, Context& ctx) {
   cmd->add_option("target", a->target, "`fivebar`, a VJM model file (YAML, mechanism: orthoglide) or a robot file (YAML, robot:)")->required();
   a->mode_opt = cmd->add_option("--mode", a->mode, "fivebar: working mode ++ (default), +-, -+ or --");
   a->assembly_opt = cmd->add_option("--assembly", a->assembly, "fivebar: assembly mode up (default) or down");
-  a->method_opt = cmd->add_option("--method", a->method, "fivebar: stiffness by msa (default) or vjm");
+  a->method_opt = cmd->add_option("--method", a->method,
+                                  "stiffness by msa or vjm (fivebar: msa by default; a robot file: vjm by default, msa "
+                                  "unloaded only)");
   a->region_opt = cmd->add_option("--region", a->region,
                                   "fivebar: x0:x1,y0:y1 in mm (default: the bounding box of the mode's workspace)")
                       ->delimiter(',');

@@ -272,13 +272,16 @@ class RobotReader : public YamlFields {
       if (!(x.norm() > 0.0) || !(L > 0.0))
         fail(b, label, "the link has no length in the drawing; give the beam's `x` direction and `length`");
       const double roll = b["roll"].IsDefined() ? expr(b["roll"], label, "roll") * kDeg : 0.0;
-      // `count`: identical beams side by side (a parallelogram's bars as one leg): the stiffness times it.
-      double count = 1.0;
+      // `count`: identical beams side by side (a parallelogram's bars as one leg): every section
+      // property times it, which multiplies the cantilever's stiffness (linear in A, I, J, As).
+      Section bars = s;
       if (b["count"].IsDefined()) {
-        count = expr(b["count"], label, "count");
+        const double count = expr(b["count"], label, "count");
         if (!(count >= 1 && count == std::floor(count))) fail(b["count"], label, "'count' is a whole number >= 1");
+        for (double* p : {&bars.A, &bars.Asy, &bars.Asz, &bars.Iy, &bars.Iz, &bars.J}) *p *= count;
       }
-      l.spring = RobotSpring{l.label, count * vjm::cantilever_spring(m, s, L, theory), beam_axes(x, roll)};
+      l.spring = RobotSpring{l.label, vjm::cantilever_spring(m, bars, L, theory), beam_axes(x, roll)};
+      l.beam = RobotBeam{m, bars, L, theory};
     } else if (const YAML::Node sp = n["spring"]; sp.IsDefined()) {
       const Vec3 x = dir.norm() > 0.0 ? dir : Vec3::UnitX();
       RobotSpring s = spring(sp, l.label, beam_axes(x, 0.0));

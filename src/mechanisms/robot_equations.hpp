@@ -24,7 +24,15 @@ RobotJacobians robot_jacobians(const RobotModel& model, const RobotPosture& post
 // "leg 2 joint 3 (universal) coordinate 2" or "the platform's rz", for an unknown index.
 std::string column_name(const RobotModel& model, int unknown);
 
-// Appends the leg's factors to `chain` (robot_model.cpp).
-void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain& chain, const Vec3& tool);
+// Where each of a leg's items starts in the chain's factors: `begin` before its move to its point,
+// `first` after it (and after a joint's spring), `end` after the item.
+struct LegItemFactors {
+  int begin = 0, first = 0, end = 0;
+};
+
+// Appends the leg's factors to `chain` (robot_model.cpp); with `items`, records where each item's
+// factors are.
+void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain& chain, const Vec3& tool,
+                std::vector<LegItemFactors>* items = nullptr);
 
 }  // namespace kinestat::mechanisms

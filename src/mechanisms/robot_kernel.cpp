@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/mechanisms/robot_msa.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
@@ -35,10 +37,28 @@ Status validate(const RobotKernelOptions& o) {
   if (o.wrench && o.displacement) return Status::Invalid("robot kernel: give a wrench or a displacement, not both");
   if ((o.wrench && !o.wrench->allFinite()) || (o.displacement && !o.displacement->allFinite()))
     return Status::Invalid("robot kernel: the load is not finite");
+  if (o.method == StiffnessMethod::kMsa) {
+    if (o.wrench || o.displacement)
+      return Status::Invalid("robot kernel: the loaded mode (a wrench or a displacement) is computed by the VJM only; "
+                             "use the VJM method (--method vjm), or drop the load for MSA");
+    // The structure at home: a model MSA cannot express is refused here, not point by point.
+    if (auto s = robot_msa_structure(*o.model, o.model->home()); !s.ok()) return s.status();
+  }
   return Status::Ok();
 }
 
 namespace {
+
+// The inverse of a symmetric compliance on its range (eigenvalues above 1e-13 of the largest, as
+// cartesian_from_compliance finds rigid directions).
+Mat6 pseudo_inverse(const Mat6& C) {
+  const Eigen::SelfAdjointEigenSolver<Mat6> eig(C);
+  const double cmax = eig.eigenvalues().cwiseAbs().maxCoeff();
+  Vec6 inv = Vec6::Zero();
+  for (int i = 0; i < 6; ++i)
+    if (eig.eigenvalues()(i) > 1e-13 * cmax) inv(i) = 1.0 / eig.eigenvalues()(i);
+  return eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
+}
 
 class RobotKernel final : public PostureKernel {
  public:
@@ -65,7 +85,7 @@ class RobotKernel final : public PostureKernel {
 
   std::string description() const override {
     const char* mode = o_.wrench ? "loaded under a wrench" : o_.displacement ? "loaded by a displacement" : "unloaded";
-    return fmt::format("{} (VJM, {})", o_.model->description().name, mode);
+    return fmt::format("{} ({}, {})", o_.model->description().name, to_string(o_.method), mode);
   }
 
  private:
@@ -83,9 +103,21 @@ class RobotKernel final : public PostureKernel {
     if (k.status == KinematicsStatus::kUnreachable || k.status == KinematicsStatus::kOtherBranch) return r;
     r.status = PostureStatus::kSingular;
     if (k.status == KinematicsStatus::kSingular) return r;
-    const std::vector<vjm::Chain> chains = robot_vjm_chains(*o_.model, posture_);
     StatusOr<CartesianStiffness> K = Status::Internal("not computed");
-    if (o_.wrench || o_.displacement) {
+    const std::vector<vjm::Chain> chains =
+        o_.method == StiffnessMethod::kVjm ? robot_vjm_chains(*o_.model, posture_) : std::vector<vjm::Chain>();
+    if (o_.method == StiffnessMethod::kMsa) {
+      const StatusOr<msa::Structure> s = robot_msa_structure(*o_.model, posture_);
+      if (!s.ok()) {
+        r.status = PostureStatus::kFailed;
+        return r;
+      }
+      K = msa::cartesian_stiffness(*s, workspace_, *s->report_node());
+      // Rigid directions (exact ties): MSA gives the compliance only; the finite part is its
+      // pseudo-inverse, zero along them (the VJM's sum of the legs' finite parts may differ along
+      // them, the same on the complement).
+      if (K.ok() && K->compliance_defined && !K->stiffness_defined) K->stiffness = pseudo_inverse(K->compliance);
+    } else if (o_.wrench || o_.displacement) {
       auto state = o_.wrench ? vjm::platform_equilibrium_under_wrench(chains, *o_.wrench)
                              : vjm::platform_equilibrium(chains, *o_.displacement);
       if (!state.ok()) {
@@ -114,6 +146,7 @@ class RobotKernel final : public PostureKernel {
   RobotData data_;
   RobotPosture posture_;
   bool solved_ = false;
+  msa::Workspace workspace_;  // MSA: the factorization's symbolic analysis, kept across postures
 };
 
 }  // namespace

@@ -77,22 +77,27 @@ void add_spring(vjm::Chain& c, const RobotSpring& s) {
 // Appends a leg to `chain`: with `q` (the leg's coordinates), `kinematic` makes every coordinate a
 // passive variable and leaves the springs out; otherwise actuated coordinates become actuators at
 // their values (rigid ones locked) and passive ones passive joints, springs in place.
-void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain& chain, const Vec3& tool) {
+void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain& chain, const Vec3& tool,
+                std::vector<LegItemFactors>* items) {
   Vec3 at = Vec3::Zero();
   auto move_to = [&](const Vec3& p, const std::string& label) {
     if (p != at) chain.add_translation(p - at, label);
     at = p;
   };
+  auto count = [&] { return static_cast<int>(chain.factors().size()); };
   int k = 0;
   for (const auto& item : leg.items) {
+    if (items) items->push_back({count(), count(), count()});
     if (const auto* link = std::get_if<RobotLink>(&item)) {
       move_to(link->to, link->label);
       if (!kinematic && link->spring) add_spring(chain, *link->spring);
+      if (items) items->back().end = count();
       continue;
     }
     const RobotJoint& j = std::get<RobotJoint>(item);
     move_to(j.at, j.label + " (its point)");
     if (!kinematic && j.spring) add_spring(chain, *j.spring);
+    if (items) items->back().first = count();
     // One elementary motion: the first coordinate of an actuated joint is its actuator.
     auto motion = [&](JointType type, const Vec3& axis, int index, const std::string& label) {
       const double value = q[k++];
@@ -124,8 +129,30 @@ void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain
         break;
       }
     }
+    if (items) items->back().end = count();
   }
   move_to(tool, "to the tool point");
+}
+
+std::vector<RobotItemFrames> robot_leg_frames(const RobotModel& model, int leg, const RobotPosture& posture) {
+  const RobotLeg& l = model.description().legs[leg];
+  const double* q = posture.q.data() + model.leg_offset(leg);
+  vjm::Chain chain(l.name);
+  std::vector<LegItemFactors> marks;
+  append_leg(l, q, true, chain, model.description().tool, &marks);
+  const std::vector<vjm::Transform> poses =
+      vjm::factor_poses(chain, Eigen::Map<const VecX>(q, model.leg_coordinates(leg)), VecX());
+  std::vector<RobotItemFrames> frames(l.items.size());
+  for (std::size_t i = 0; i < l.items.size(); ++i) {
+    const LegItemFactors& m = marks[i];
+    RobotItemFrames& f = frames[i];
+    const bool link = std::holds_alternative<RobotLink>(l.items[i]);
+    f.at = poses[link ? m.begin : m.first];
+    f.after = poses[m.end];
+    if (!link)
+      for (int k = m.first; k < m.end; ++k) f.motions.push_back(poses[k]);
+  }
+  return frames;
 }
 
 StatusOr<RobotModel> make_robot_model(RobotDescription d) {

@@ -172,9 +172,11 @@ struct FactorTwist {
 
 // Walks the product (1); returns the tool pose and fills the twists of the moving factors in
 // product order (a twist depends only on the factors before it).
-Transform walk(const Chain& chain, const VecX& q, const VecX& theta, std::vector<FactorTwist>* twists) {
+Transform walk(const Chain& chain, const VecX& q, const VecX& theta, std::vector<FactorTwist>* twists,
+               std::vector<Transform>* poses = nullptr) {
   Transform T = Transform::Identity();
   for (const Factor& f : chain.factors()) {
+    if (poses) poses->push_back(T);
     if (!f.is_motion) {
       T = T * f.transform;
       continue;
@@ -195,6 +197,14 @@ Transform walk(const Chain& chain, const VecX& q, const VecX& theta, std::vector
 }  // namespace
 
 Transform Chain::forward(const VecX& q, const VecX& theta) const { return walk(*this, q, theta, nullptr); }
+
+std::vector<Transform> factor_poses(const Chain& chain, const VecX& q, const VecX& theta) {
+  std::vector<Transform> poses;
+  poses.reserve(chain.factors().size() + 1);
+  const Transform tool = walk(chain, q, theta, nullptr, &poses);
+  poses.push_back(tool);
+  return poses;
+}
 
 ChainJacobians jacobians(const Chain& chain, const VecX& q, const VecX& theta) {
   std::vector<FactorTwist> tw;

@@ -9,9 +9,6 @@
 
 namespace kinestat::mechanisms {
 
-enum class StiffnessMethod { kMsa, kVjm };
-const char* to_string(StiffnessMethod m);  // "MSA", "VJM"
-
 struct FiveBarKernelOptions {
   FiveBarParams params;
   WorkingMode mode;                  // the inverse kinematics' root per leg (five_bar.hpp)

@@ -27,6 +27,10 @@ enum class PostureStatus : std::uint8_t {
 };
 const char* to_string(PostureStatus s);  // "ok", "unreachable", "singular", "failed"
 
+// How a kernel computes the stiffness (the five-bar's and the robot files' kernels offer both).
+enum class StiffnessMethod { kMsa, kVjm };
+const char* to_string(StiffnessMethod m);  // "MSA", "VJM"
+
 struct PostureResult {
   PostureStatus status = PostureStatus::kUnreachable;
   Mat6 stiffness = Mat6::Zero();   // tool point, global axes: N/m, N/rad, N m/m, N m/rad

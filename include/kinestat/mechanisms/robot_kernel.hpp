@@ -19,6 +19,9 @@ struct RobotKernelOptions {
   // Which task coordinate each of the point's x, y, z sets (index into the task; -1: none, the
   // grid must be flat along that axis). Default: the task's x, y, z where it has them.
   std::optional<std::array<int, 3>> map_axes;
+  // VJM (robot_vjm_chains) or MSA (robot_msa_structure, msa::cartesian_stiffness at the platform
+  // node): the same model, two methods. MSA: unloaded only.
+  StiffnessMethod method = StiffnessMethod::kVjm;
   // Loaded mode (at most one), as OrthoglideKernelOptions: an external wrench at the tool point
   // (N, N m) or a prescribed tool displacement (m, rad); PostureResult::deflection is the
   // equilibrium displacement.
@@ -30,11 +33,14 @@ struct RobotKernelOptions {
 std::array<int, 3> default_map_axes(const RobotModel& model);
 
 // kInvalidInput naming the bad value: no model, a task vector of the wrong size or not finite,
-// a map axis out of range or used twice, a wrench and a displacement together, non-finite loads.
+// a map axis out of range or used twice, a wrench and a displacement together, non-finite loads,
+// a load with the MSA method.
 Status validate(const RobotKernelOptions& options);
 
 // VJM stiffness at each point (vjm::platform_unloaded_stiffness / the loaded mode of
-// vjm::platform_equilibrium*), with the kinematics of solve_posture: evaluate() walks from home
+// vjm::platform_equilibrium*), or MSA (msa::cartesian_stiffness of robot_msa_structure at the
+// platform node; kFailed at every reachable point when the model has no MSA structure, e.g. a loop
+// of rigid ties: robot_msa_structure says why), with the kinematics of solve_posture: evaluate() walks from home
 // (continuation), evaluate_next() starts from the previous point and falls back to evaluate().
 // kUnreachable: no closure on home's branch (out of reach, joint limit, other working or assembly
 // mode); kSingular: the kinematics or the stiffness lose rank (a free direction); kFailed: no loaded

@@ -27,6 +27,9 @@
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
+#include "kinestat/elements/beam_element.hpp"
+#include "kinestat/elements/material.hpp"
+#include "kinestat/elements/section.hpp"
 #include "kinestat/vjm/chain.hpp"
 
 namespace kinestat::mechanisms {
@@ -65,12 +68,23 @@ struct RobotJoint {
   std::vector<std::pair<double, double>> limits;
 };
 
+// The beam a link's spring is the cantilever of (vjm::cantilever_spring): kept so that MSA models
+// the beam itself (robot_msa.hpp). Its local axes are the spring's axes (x along the beam, y and z
+// the section's); the beam ends at the link's end and starts `length` before it along x.
+struct RobotBeam {
+  Material material;
+  Section section;
+  double length = 0.0;  // m
+  BeamTheory theory = BeamTheory::kEulerBernoulli;
+};
+
 // A link from the chain's current point to `to`. Its spring, if any, sits at `to` (the free end of
 // a cantilever clamped at the link's start): a beam of the link or a given 6x6.
 struct RobotLink {
   std::string label;
   Vec3 to = Vec3::Zero();  // m, at home
   std::optional<RobotSpring> spring;
+  std::optional<RobotBeam> beam;  // set when `spring` is a beam's cantilever spring
 };
 
 struct RobotLeg {
@@ -195,6 +209,20 @@ VecX task_values(const RobotModel& model, const vjm::Transform& tool);
 // step whose Newton fails (evaluate from home); without, one Newton solve (a grid neighbour).
 KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotPosture& posture, RobotData& data,
                                bool continuation = true);
+
+// Where a leg's items are at a posture, in base axes, from the leg's kinematic chain (the partial
+// products of its factors). A joint: its frame at its point before its motion (`at`), before each
+// of its elementary motions (`motions`, one per coordinate; a parallelogram's three factors: the
+// proximal hinges, the bars, the distal hinges), and after it (`after`; a parallelogram's at `to`).
+// A link: its frame at its start (`at`) and at its end (`after`); `motions` empty. A joint's axis i
+// at the posture is motions[i].linear() * axes[i]; a spring's axes are at.linear() * spring.axes
+// (a joint's) or after.linear() * spring.axes (a link's). Home: every frame has base axes.
+struct RobotItemFrames {
+  vjm::Transform at = vjm::Transform::Identity();
+  std::vector<vjm::Transform> motions;
+  vjm::Transform after = vjm::Transform::Identity();
+};
+std::vector<RobotItemFrames> robot_leg_frames(const RobotModel& model, int leg, const RobotPosture& posture);
 
 // The VJM chains (vjm/chain.hpp) of the legs at a solved posture: actuated joints as actuators
 // with their springs (rigid: locked), passive joints at their values, the springs in place; each

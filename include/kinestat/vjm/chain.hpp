@@ -131,6 +131,10 @@ struct ChainJacobians {
 };
 ChainJacobians jacobians(const Chain& chain, const VecX& q, const VecX& theta);
 
+// The partial products of (1) at (q, theta): the pose before each factor, then the tool pose
+// (factors().size() + 1 poses). A factor's axis in base axes is poses[i].linear() * factor.axis.
+std::vector<Transform> factor_poses(const Chain& chain, const VecX& q, const VecX& theta);
+
 // H = d(J^T F)/d(q, theta) at fixed wrench F, the matrices of eq. (19)-(20): row i is the equation
 // of coordinate i, column j the coordinate differentiated, e.g. Hthetaq(i, j) = d(J_theta,i . F)/dq_j.
 // For a pure force this is the Hessian of F^T p(q, theta) (symmetric); with a moment it is the
