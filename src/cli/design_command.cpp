@@ -26,6 +26,7 @@
 
 #include "cli/command_output.hpp"
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/orthoglide_results_json.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
@@ -39,7 +40,7 @@
 namespace kinestat::cli {
 namespace {
 
-constexpr double kMm = 1e-3;  // m per mm: lengths are printed in mm
+using units::kMm;  // lengths are printed in mm
 
 struct DesignArgs {
   double cube_mm = 0.0;

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/map_png.hpp"
 
 namespace kinestat::io {
@@ -15,8 +15,9 @@ namespace {
 
 using namespace mechanisms;
 
-constexpr double kMm = 1e-3;  // m per mm
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
+using units::kMm;
+using units::kNMm;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // breaks a plotted line
 
 // "x -100:100 mm" or "x = 0 mm" for axis i of a grid.
@@ -63,7 +64,7 @@ MapFieldDisplay map_field_display(MapField f) {
     case MapField::kTranslationalMin:
     case MapField::kTranslationalMax: return {"N/mm", kMm};
     case MapField::kRotationalMin:
-    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kMm};
+    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kNMm};
     case MapField::kDeflectionTranslation: return {"mm", 1.0 / kMm};
     case MapField::kDeflectionRotation: return {"deg", 1.0 / kDeg};
     default: return {field_info(f).unit, 1.0};
