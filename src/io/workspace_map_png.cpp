@@ -110,7 +110,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
   for (int k : slices) {
     PlotField2D p = slice(values, d.scale, k);
     if (nc > 1) p.title = fmt::format("{} = {:g} mm", "xyz"[c], (g.origin(c) + k * g.spacing(c)) / kMm);
-    if (contour) p.curves.push_back({contour_lines(slice(kt->values, 1.0, k), *map.min_stiffness), "", 1});
+    if (contour)
+      p.curves.push_back({contour_lines(slice(kt->values, 1.0, k), *map.min_stiffness), "", CurveStyle::kDashedRed});
     panels.push_back(std::move(p));
   }
   PlotOptions o;
@@ -123,7 +124,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
   for (std::size_t i = 0; i < map.curves.size(); ++i) {
     PlotCurve curve;
     curve.label = map.curves[i].label;
-    curve.style = static_cast<int>(i % 3);
+    constexpr CurveStyle kCycle[] = {CurveStyle::kSolidBlack, CurveStyle::kDashedRed, CurveStyle::kShortDashedMagenta};
+    curve.style = kCycle[i % 3];
     for (const std::vector<Vec3>& line : map.curves[i].lines) {
       if (!curve.points.empty()) curve.points.push_back({kNaN, kNaN});
       for (const Vec3& q : line) curve.points.push_back({q(a) / kMm, q(b) / kMm});
@@ -131,7 +133,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
     o.curves.push_back(std::move(curve));
   }
   if (contour)  // the legend's entry; the lines are the panels'
-    o.curves.push_back({{}, fmt::format("k_t_min = {:g} N/mm (--min-stiffness)", *map.min_stiffness * kMm), 1});
+    o.curves.push_back({{}, fmt::format("k_t_min = {:g} N/mm (--min-stiffness)", *map.min_stiffness * kMm),
+                        CurveStyle::kDashedRed});
   if (panels.size() == 1) return write_png_map(path, panels.front(), o);
   return write_png_sheet(path, panels, o);
 }
@@ -162,7 +165,7 @@ Status write_design_sweep_png(const std::string& path, const FiveBarDesignSweep&
   o.curves.push_back({{{x - 0.4 * f.dx, y}, {x + 0.4 * f.dx, y}, {kNaN, kNaN}, {x, y - 0.4 * f.dy}, {x, y + 0.4 * f.dy}},
                       fmt::format("best design: r1 = {:.4g} mm, r2 = {:.4g} mm ({:.1f}% of the region)", x, y,
                                   100.0 * s.share(b.stiff)),
-                      0});
+                      CurveStyle::kSolidBlack});
   return write_png_map(path, f, o);
 }
 
