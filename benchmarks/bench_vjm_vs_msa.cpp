@@ -16,9 +16,9 @@
 
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 #include "kinestat/mechanisms/five_bar_vjm.hpp"
 #include "kinestat/mechanisms/orthoglide_frame.hpp"
@@ -32,7 +32,7 @@ namespace {
 using mechanisms::FiveBarParams;
 using mechanisms::FiveBarPosture;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 
 // Postures of the paper's Table 1 region (theta1, theta2 in deg, up assembly): row 14 and two others.
 const std::array<std::array<double, 2>, 3> kPostures = {{{64.0, 75.0}, {60.0, 80.0}, {70.0, 100.0}}};

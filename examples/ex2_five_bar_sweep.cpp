@@ -25,14 +25,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
 int main() {
   using namespace kinestat;
-  constexpr double kDeg = std::numbers::pi / 180.0;
+  using units::kDeg;
   const mechanisms::FiveBarParams params;  // the paper's robot (section 5)
 
   // One workspace for the whole sweep: it owns the solver object (CHOLMOD by default; see

@@ -34,6 +34,7 @@
 
 #include "cli/command_output.hpp"
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/orthoglide_results_json.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
@@ -51,7 +52,7 @@
 namespace kinestat::cli {
 namespace {
 
-constexpr double kMm = 1e-3;  // m per mm: lengths are printed in mm
+using units::kMm;  // lengths are printed in mm
 
 struct DesignArgs {
   double cube_mm = 0.0;
@@ -539,7 +540,7 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
       if (d.task[t] >= TaskCoordinate::kRx) {
         const double deg = a.orientation[static_cast<std::size_t>(d.task[t]) - 3];
         if (!std::isfinite(deg)) return fail(Status::Invalid("--orientation: an angle is not finite"));
-        o.kernel.task(static_cast<int>(t)) = deg * M_PI / 180.0;
+        o.kernel.task(static_cast<int>(t)) = deg * units::kDeg;
         any = true;
       }
     if (!any)

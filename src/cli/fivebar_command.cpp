@@ -1,6 +1,5 @@
 // kinestat fivebar --theta1 DEG --theta2 DEG [--assembly up|down] | --point X,Y [--mode ++]
 // The 5R five-bar of Gonçalves et al. 2010 (section 5) built and solved at one posture.
-#include <numbers>
 #include <optional>
 #include <ostream>
 
@@ -8,13 +7,14 @@
 #include <fmt/format.h>
 
 #include "cli/msa_output.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 
 namespace kinestat::cli {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kMm = 1e-3;
+using units::kDeg;
+using units::kMm;
 
 struct FiveBarArgs {
   std::optional<double> theta1, theta2;  // deg

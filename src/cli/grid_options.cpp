@@ -3,20 +3,21 @@
 #include <array>
 #include <charconv>
 #include <cmath>
-#include <numbers>
 #include <ostream>
 
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 
 namespace kinestat::cli {
 
 using mechanisms::MapRange;
 
 namespace {
-constexpr double kMm = 1e-3;  // m per mm
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
+using units::kMm;
+using units::kNMm;
 
 // The components of a vector option, each with its quantity and the unit it is written in.
 struct Component {
@@ -38,7 +39,7 @@ StatusOr<Eigen::Matrix<double, N, 1>> vector_option(const std::vector<double>& v
   return si;
 }
 
-const Component kN{Quantity::kForce, {1.0, "N"}}, kNmm{Quantity::kMoment, {kMm, "N mm"}},
+const Component kN{Quantity::kForce, {1.0, "N"}}, kNmm{Quantity::kMoment, {kNMm, "N mm"}},
     kMillimetre{Quantity::kLength, {kMm, "mm"}}, kDegree{Quantity::kAngle, {kDeg, "deg"}};
 }  // namespace
 

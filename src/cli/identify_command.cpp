@@ -10,12 +10,15 @@
 #include <fmt/format.h>
 
 #include "cli/command_output.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/identification_yaml.hpp"
 #include "kinestat/io/orthoglide_results_json.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 
 namespace kinestat::cli {
 namespace {
+
+using units::kMm;
 
 struct IdentifyArgs {
   std::string model, targets;
@@ -31,19 +34,19 @@ std::string model_file_lines(const std::vector<mechanisms::OrthoglideInput>& inp
     const double v = id.values[k];
     switch (inputs[k]) {
       case mechanisms::OrthoglideInput::kActuatorStiffness:
-        out += fmt::format("  actuator_stiffness: {:.5g}   # N/mm\n", v * 1e-3);
+        out += fmt::format("  actuator_stiffness: {:.5g}   # N/mm\n", v * kMm);  // N/m in N/mm
         break;
       case mechanisms::OrthoglideInput::kBarScale:
         out += fmt::format("  bar section: every dimension of the model file's times {:.5g}\n", v);
         break;
       case mechanisms::OrthoglideInput::kParallelogramWidth:
-        out += fmt::format("  parallelogram_width: {:.5g}   # mm\n", v * 1e3);
+        out += fmt::format("  parallelogram_width: {:.5g}   # mm\n", v / kMm);
         break;
       case mechanisms::OrthoglideInput::kPlatformOffset:
-        out += fmt::format("  platform_offset: {:.5g}   # mm\n", v * 1e3);
+        out += fmt::format("  platform_offset: {:.5g}   # mm\n", v / kMm);
         break;
       case mechanisms::OrthoglideInput::kFootLength:
-        out += fmt::format("  foot length: {:.5g}   # mm\n", v * 1e3);
+        out += fmt::format("  foot length: {:.5g}   # mm\n", v / kMm);
         break;
     }
   }

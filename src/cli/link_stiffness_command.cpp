@@ -15,6 +15,7 @@
 
 #include "cli/command_output.hpp"
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/mesh_convergence.hpp"
@@ -27,8 +28,8 @@
 namespace kinestat::cli {
 namespace {
 
-constexpr double kMm = 1e-3;
-constexpr double kMPa = 1e6;
+using units::kMm;
+using units::kMPa;
 
 // The convergence study's meshes: the coarsest has at least kElementsAcross elements across the
 // part's thinnest extent, each next one is kRefinement times finer (dofs ~3.4 times more). Measured
@@ -137,7 +138,7 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     if (args->max_iterations < 1)
       return fail(Status::Invalid(fmt::format("--max-iterations {}: give at least 1", args->max_iterations)));
     Output out(ctx, args->out);
-    const double scale = args->unit == "mm" ? 1e-3 : 1.0;
+    const double scale = args->unit == "mm" ? kMm : 1.0;
     fea::LinkStiffnessRequest request;
     request.mesh_file = args->mesh;
     request.unit_scale = scale;

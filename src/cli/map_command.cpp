@@ -17,6 +17,7 @@
 
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/map_json.hpp"
 #include "kinestat/io/map_vti.hpp"
 #include "kinestat/io/workspace_map_png.hpp"
@@ -34,7 +35,8 @@ namespace {
 
 using namespace kinestat::mechanisms;
 
-constexpr double kMm = 1e-3;  // m per mm
+using units::kDeg;
+using units::kMm;
 constexpr const char* kCommand = "map";
 
 struct MapArgs {
@@ -206,7 +208,7 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a) {
                                          first == 3 ? "orientation" : "position", task_text(d)));
     return Status::Ok();
   };
-  if (Status st = set_fixed(a.orientation, 3, M_PI / 180.0, "--orientation"); !st.ok()) return st;
+  if (Status st = set_fixed(a.orientation, 3, kDeg, "--orientation"); !st.ok()) return st;
   if (Status st = set_fixed(a.position, 0, kMm, "--position"); !st.ok()) return st;
   MapSetup s;
   s.angular = !a.angles.empty() || (a.box.empty() && d.workspace && d.workspace_angular);
@@ -229,7 +231,7 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a) {
     // The same lo:hi syntax as --box, in degrees.
     auto r = parse_ranges_mm(a.angles, 3, "--angles", "rx0:rx1,ry0:ry1,rz0:rz1 (deg)");
     if (!r.ok()) return r.status();
-    for (int i = 0; i < 3; ++i) s.ranges[i] = {(*r)[i].lo / kMm * M_PI / 180.0, (*r)[i].hi / kMm * M_PI / 180.0};
+    for (int i = 0; i < 3; ++i) s.ranges[i] = {(*r)[i].lo / kMm * kDeg, (*r)[i].hi / kMm * kDeg};
   } else if (d.workspace && d.workspace_angular == s.angular) {
     for (int i = 0; i < 3; ++i) s.ranges[i] = {(*d.workspace)[i].first, (*d.workspace)[i].second};
   } else {
@@ -343,7 +345,7 @@ int run_map(MapArgs& a, Context& ctx) {
     return fail(Status::Invalid(fmt::format("--field {} needs the loaded mode of a model (--load or --wrench)", a.field)));
 
   // The grid's step in SI and as the user gave it.
-  const double step = setup->angular ? *a.angle_step * M_PI / 180.0 : *a.step * kMm;
+  const double step = setup->angular ? *a.angle_step * kDeg : *a.step * kMm;
   const std::string step_text = setup->angular ? fmt::format("{:g} deg", *a.angle_step) : fmt::format("{:g} mm", *a.step);
   const char* step_option = setup->angular ? "--angle-step" : "--step";
   // The point count is estimated before anything is allocated.

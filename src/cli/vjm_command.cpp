@@ -1,7 +1,6 @@
 // kinestat vjm MODEL|ROBOT [--point x,y,z] [--orientation rx,ry,rz] [--load dx,dy,dz,rx,ry,rz | --wrench Fx,Fy,Fz,Mx,My,Mz] [--json FILE|-]
 // Virtual joint method stiffness (Pashkevich et al. 2009) of a platform read from a VJM model file
 // (docs/vjm.md): unloaded (eq. 9-10) and, with a load, loaded (eq. 11-21).
-#include <numbers>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -10,6 +9,7 @@
 #include "cli/command_output.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/core/cartesian_stiffness.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/vjm_results_json.hpp"
 #include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
@@ -20,8 +20,9 @@
 namespace kinestat::cli {
 namespace {
 
-constexpr double kMm = 1e-3;
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
+using units::kMm;
+using units::kNMm;
 
 struct VjmArgs {
   std::string model;
@@ -160,7 +161,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
                  << fmt::format("  displacement ({:.6e}, {:.6e}, {:.6e}) mm, rotation ({:.6e}, {:.6e}, {:.6e}) deg\n",
                                 t(0) / kMm, t(1) / kMm, t(2) / kMm, t(3) / kDeg, t(4) / kDeg, t(5) / kDeg)
                  << fmt::format("  wrench F = ({:.6e}, {:.6e}, {:.6e}) N, M = ({:.6e}, {:.6e}, {:.6e}) N mm\n", F(0),
-                                F(1), F(2), F(3) / kMm, F(4) / kMm, F(5) / kMm);
+                                F(1), F(2), F(3) / kNMm, F(4) / kNMm, F(5) / kNMm);
     results.state = *state;
     StatusOr<CartesianStiffness> KF = vjm::platform_loaded_stiffness(*chains, *state, stiffness_options);
     if (!KF.ok()) return bad(KF.status());

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 
 namespace kinestat::fea {
 
@@ -36,7 +37,7 @@ namespace {
 
 // Lengths written in the mesh unit (`scale` m), returned in m and checked in range.
 StatusOr<Vec3> lengths(const std::vector<double>& v, size_t first, double scale, const std::string& what) {
-  const UnitOfInput unit{scale, scale == 1.0 ? "m" : scale == 1e-3 ? "mm" : ""};
+  const UnitOfInput unit{scale, scale == 1.0 ? "m" : scale == units::kMm ? "mm" : ""};
   Vec3 p;
   for (int k = 0; k < 3; ++k) {
     const double x = v[first + static_cast<size_t>(k)];
@@ -87,7 +88,7 @@ StatusOr<Region> parse_region(const std::string& text, double scale, const std::
 StatusOr<Material> parse_material(const std::string& text, const std::string& what, double modulus_unit) {
   if (text == "steel") return Material::from_E_nu("steel", 210e9, 0.3);
   if (text == "aluminium" || text == "aluminum") return Material::from_E_nu("aluminium", 70e9, 0.33);
-  const std::string unit = modulus_unit == 1e6 ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("x {:g} Pa", modulus_unit);
+  const std::string unit = modulus_unit == units::kMPa ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("x {:g} Pa", modulus_unit);
   const std::string form = fmt::format("give steel, aluminium or E=VALUE,nu=V (E > 0 in {}, -1 < nu < 0.5)", unit);
   std::optional<double> E, nu;
   std::stringstream ss(text);

@@ -4,6 +4,8 @@
 
 #include <utility>
 
+#include "kinestat/core/units.hpp"
+
 namespace kinestat::io {
 
 UnitOfInput FileUnits::of(Quantity q) const {
@@ -33,16 +35,15 @@ UnitOfInput FileUnits::of(Quantity q) const {
 
 std::optional<double> length_unit(const std::string& name) {
   static const std::pair<const char*, double> kUnits[] = {
-      {"m", 1.0}, {"mm", 1e-3}, {"cm", 1e-2}, {"in", 0.0254}, {"ft", 0.3048}};  // exact by definition
+      {"m", 1.0}, {"mm", units::kMm}, {"cm", units::kCm}, {"in", units::kInch}, {"ft", units::kFoot}};
   for (const auto& [n, v] : kUnits)
     if (name == n) return v;
   return std::nullopt;
 }
 
 std::optional<double> force_unit(const std::string& name) {
-  // 1 lbf = 0.45359237 kg x 9.80665 m/s^2 exactly; 1 kip = 1000 lbf.
   static const std::pair<const char*, double> kUnits[] = {
-      {"N", 1.0}, {"kN", 1e3}, {"lbf", 4.4482216152605}, {"kip", 4448.2216152605}};
+      {"N", 1.0}, {"kN", units::kKN}, {"lbf", units::kLbf}, {"kip", units::kKip}};
   for (const auto& [n, v] : kUnits)
     if (name == n) return v;
   return std::nullopt;

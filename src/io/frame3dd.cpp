@@ -12,13 +12,14 @@
 #include <tuple>
 #include <utility>
 
+#include "kinestat/core/units.hpp"
 #include "io/roll_orientation.hpp"
 #include "io/yaml_fields.hpp"
 
 namespace kinestat::io {
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
+using units::kDeg;
 
 // Thrown by Reader::fail and caught by read_frame3dd_string: never crosses the io layer.
 struct Frame3ddError {
@@ -264,7 +265,7 @@ class Reader {
       e.Iz = v(8, "Izz", Quantity::kInertia, Sign::kPositive);
       e.E = v(9, "E", Quantity::kModulus, Sign::kPositive);
       e.G = v(10, "G", Quantity::kModulus, Sign::kPositive);
-      e.roll = value(l.tokens[11], l.number, item + " roll", Quantity::kAngle, Sign::kAny, UnitOfInput{kDegree, "deg"});
+      e.roll = value(l.tokens[11], l.number, item + " roll", Quantity::kAngle, Sign::kAny, UnitOfInput{kDeg, "deg"});
       e.density = v(12, "density", Quantity::kDensity, Sign::kNonNegative);
       const Vec3 d = s_.nodes()[static_cast<std::size_t>(e.n2 - 1)].position - s_.nodes()[static_cast<std::size_t>(e.n1 - 1)].position;
       if (!(d.norm() > 1e-9 * s_.length_scale()))

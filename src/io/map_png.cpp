@@ -49,15 +49,16 @@ constexpr int kViridisPoints = 11;
 constexpr std::array<unsigned, kViridisPoints> kViridis = {0x440154, 0x482475, 0x414487, 0x355f8d, 0x2a788e, 0x21918c,
                                                            0x22a884, 0x44bf70, 0x7ad151, 0xbddf26, 0xfde725};
 
-struct CurveStyle {
+struct CurvePen {
   PLINT colour, line_style;  // line_style: PLplot's predefined patterns (pllsty): 1 solid, 2 short dashes, 3 long
 };
-CurveStyle curve_style(int style) {
+CurvePen curve_pen(CurveStyle style) {
   switch (style) {
-    case 1: return {kRed, 3};
-    case 2: return {kMagenta, 2};
-    default: return {kBlack, 1};
+    case CurveStyle::kDashedRed: return {kRed, 3};
+    case CurveStyle::kShortDashedMagenta: return {kMagenta, 2};
+    case CurveStyle::kSolidBlack: break;
   }
+  return {kBlack, 1};
 }
 
 std::mutex& plplot_mutex() {
@@ -198,7 +199,7 @@ double tick_step(double range, double length_px, double label_px) {
 
 void draw_curves(const std::vector<PlotCurve>& curves, double line_width) {
   for (const PlotCurve& c : curves) {
-    const CurveStyle s = curve_style(c.style);
+    const CurvePen s = curve_pen(c.style);
     plcol0(s.colour);
     pllsty(s.line_style);
     plwidth(line_width);
@@ -253,8 +254,8 @@ void draw_legend(const PageBox& box, const std::vector<PlotCurve>& curves, doubl
   for (const PlotCurve& c : curves) texts.push_back(escape_text(c.label));
   for (const std::string& t : texts) text_ptrs.push_back(t.c_str());
   for (const PlotCurve& c : curves) {
-    line_colours.push_back(curve_style(c.style).colour);
-    line_styles.push_back(curve_style(c.style).line_style);
+    line_colours.push_back(curve_pen(c.style).colour);
+    line_styles.push_back(curve_pen(c.style).line_style);
   }
   PLFLT width = 0.0, height = 0.0;
   pllegend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,

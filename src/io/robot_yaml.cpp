@@ -11,6 +11,7 @@
 
 #include "io/roll_orientation.hpp"
 #include "io/yaml_fields.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/material.hpp"
 #include "kinestat/vjm/link_spring.hpp"
@@ -20,7 +21,7 @@ namespace {
 
 using namespace kinestat::mechanisms;
 constexpr const char* kDoc = "docs/robots.md";
-constexpr double kDeg = M_PI / 180.0;
+using units::kDeg;
 
 class RobotReader : public YamlFields {
  public:

@@ -11,6 +11,7 @@
 
 #include "kinestat/core/frame.hpp"
 #include "kinestat/core/types.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
 #include "io/roll_orientation.hpp"
@@ -19,7 +20,7 @@
 namespace kinestat::io {
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
+using units::kDeg;
 
 // One parse of one file. Every check fails through fail(), which names the file, the line of the
 // offending YAML node, the item and the fix.
@@ -211,7 +212,7 @@ class Parser : public YamlFields {
     if (const YAML::Node r = n["roll"]; r.IsDefined()) {
       if (n["orientation"].IsDefined())
         fail(r, item, "give either 'orientation' or 'roll', not both; they set the same local axes");
-      const double roll = value(r, item, "roll", Quantity::kAngle, {kDegree, "deg"});
+      const double roll = value(r, item, "roll", Quantity::kAngle, {kDeg, "deg"});
       b.orientation = roll_orientation(p2 - p1, roll);
     }
     const YAML::Node th = n["theory"];

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <limits>
 #include <map>
-#include <numbers>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
@@ -19,7 +19,7 @@
 namespace kinestat::io {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 constexpr const char* kDoc = "docs/vjm.md";
 const UnitOfInput kDegrees{kDeg, "deg"};
 constexpr int kNoSizeLimit = std::numeric_limits<int>::max();
@@ -148,7 +148,7 @@ class VjmParser : public YamlFields {
     if (const YAML::Node u = f["unit"]; u.IsDefined()) {
       const std::string s = text(u, it, "unit");
       if (s != "mm" && s != "m") fail(u, it, fmt::format("unknown unit '{}'; write mm or m (the mesh file's unit)", s));
-      r.unit_scale = s == "mm" ? 1e-3 : 1.0;
+      r.unit_scale = s == "mm" ? units::kMm : 1.0;
     }
     const UnitOfInput mesh_unit{r.unit_scale, r.unit_scale == 1.0 ? "m" : "mm"};
     if (const YAML::Node m = f["material"]; m.IsDefined()) {

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/map_png.hpp"
 
 namespace kinestat::io {
@@ -15,8 +15,9 @@ namespace {
 
 using namespace mechanisms;
 
-constexpr double kMm = 1e-3;  // m per mm
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
+using units::kMm;
+using units::kNMm;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();  // breaks a plotted line
 
 // "x -100:100 mm", "x = 0 mm" or "rx -10:10 deg" for axis i of a grid.
@@ -65,7 +66,7 @@ MapFieldDisplay map_field_display(MapField f) {
     case MapField::kTranslationalMin:
     case MapField::kTranslationalMax: return {"N/mm", kMm};
     case MapField::kRotationalMin:
-    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kMm};
+    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kNMm};
     case MapField::kDeflectionTranslation: return {"mm", 1.0 / kMm};
     case MapField::kDeflectionRotation: return {"deg", 1.0 / kDeg};
     default: return {field_info(f).unit, 1.0};
@@ -112,7 +113,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
   for (int k : slices) {
     PlotField2D p = slice(values, d.scale, k);
     if (nc > 1) p.title = fmt::format("{} = {:g} {}", g.names[c], (g.origin(c) + k * g.spacing(c)) * uc.scale, uc.unit);
-    if (contour) p.curves.push_back({contour_lines(slice(kt->values, 1.0, k), *map.min_stiffness), "", 1});
+    if (contour)
+      p.curves.push_back({contour_lines(slice(kt->values, 1.0, k), *map.min_stiffness), "", CurveStyle::kDashedRed});
     panels.push_back(std::move(p));
   }
   PlotOptions o;
@@ -125,7 +127,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
   for (std::size_t i = 0; i < map.curves.size(); ++i) {
     PlotCurve curve;
     curve.label = map.curves[i].label;
-    curve.style = static_cast<int>(i % 3);
+    constexpr CurveStyle kCycle[] = {CurveStyle::kSolidBlack, CurveStyle::kDashedRed, CurveStyle::kShortDashedMagenta};
+    curve.style = kCycle[i % 3];
     for (const std::vector<Vec3>& line : map.curves[i].lines) {
       if (!curve.points.empty()) curve.points.push_back({kNaN, kNaN});
       for (const Vec3& q : line) curve.points.push_back({q(a) * ua.scale, q(b) * ub.scale});
@@ -133,7 +136,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
     o.curves.push_back(std::move(curve));
   }
   if (contour)  // the legend's entry; the lines are the panels'
-    o.curves.push_back({{}, fmt::format("k_t_min = {:g} N/mm (--min-stiffness)", *map.min_stiffness * kMm), 1});
+    o.curves.push_back({{}, fmt::format("k_t_min = {:g} N/mm (--min-stiffness)", *map.min_stiffness * kMm),
+                        CurveStyle::kDashedRed});
   if (panels.size() == 1) return write_png_map(path, panels.front(), o);
   return write_png_sheet(path, panels, o);
 }
@@ -164,7 +168,7 @@ Status write_design_sweep_png(const std::string& path, const FiveBarDesignSweep&
   o.curves.push_back({{{x - 0.4 * f.dx, y}, {x + 0.4 * f.dx, y}, {kNaN, kNaN}, {x, y - 0.4 * f.dy}, {x, y + 0.4 * f.dy}},
                       fmt::format("best design: r1 = {:.4g} mm, r2 = {:.4g} mm ({:.1f}% of the region)", x, y,
                                   100.0 * s.share(b.stiff)),
-                      0});
+                      CurveStyle::kSolidBlack});
   return write_png_map(path, f, o);
 }
 

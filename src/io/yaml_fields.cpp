@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include "kinestat/core/units.hpp"
+
 namespace kinestat::io {
 
 std::string join_keys(std::initializer_list<const char*> names) {
@@ -141,7 +143,7 @@ FileUnits YamlFields::units(const YAML::Node& v, bool any_units) const {
   }
   const std::string u = v.IsScalar() ? v.Scalar() : "";
   if (u == "SI") return {};
-  if (u == "mm-N-s") return {1e-3, 1.0, "mm", "N"};
+  if (u == "mm-N-s") return {units::kMm, 1.0, "mm", "N"};
   fail(v, "units", fmt::format("unknown units '{}'; write {}", u, forms));
 }
 

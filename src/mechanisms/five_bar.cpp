@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "kinestat/core/units.hpp"
+
 namespace kinestat::mechanisms {
 
 namespace {
@@ -156,8 +158,8 @@ StatusOr<std::array<FiveBarPosture, 2>> direct_kinematics(const FiveBarParams& p
   const double dist = D.norm();
   const double tol = kLengthTol * (p.r1 + p.r2 + p.r3);
   const auto where = [&] {
-    return fmt::format("theta1 = {:g} deg, theta2 = {:g} deg", theta1 * 180.0 / std::numbers::pi,
-                       theta2 * 180.0 / std::numbers::pi);
+    return fmt::format("theta1 = {:g} deg, theta2 = {:g} deg", theta1 / units::kDeg,
+                       theta2 / units::kDeg);
   };
   if (dist > 2.0 * p.r2 + tol) {
     return Status::Invalid(fmt::format("five-bar direct kinematics: {} cannot be assembled (|B1B2| = {:g} m > 2 r2 = {:g} m)",
@@ -203,7 +205,7 @@ FiveBarJacobians five_bar_jacobians(const FiveBarPosture& q) {
 msa::Structure make_five_bar_structure(const FiveBarParams& p, const FiveBarPosture& q) {
   msa::Structure s;
   s.set_title(fmt::format("5R five-bar (Gonçalves et al. 2010), theta1 = {:g} deg, theta2 = {:g} deg, {} assembly",
-                          q.theta1 * 180.0 / std::numbers::pi, q.theta2 * 180.0 / std::numbers::pi,
+                          q.theta1 / units::kDeg, q.theta2 / units::kDeg,
                           to_string(q.assembly)));
   const auto at = [](const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); };
   // Section 5, Fig. 4a: each joint centre carries one node per link end.

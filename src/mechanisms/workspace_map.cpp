@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 
 namespace kinestat::mechanisms {
 namespace {
@@ -78,7 +79,7 @@ std::size_t MapGrid::path_index(std::size_t k) const {
 const char* axis_unit(const MapGrid& g, int axis) { return g.angular[axis] ? "rad" : "m"; }
 
 UnitDisplay axis_display(const MapGrid& g, int axis) {
-  return g.angular[axis] ? UnitDisplay{"deg", 180.0 / M_PI} : UnitDisplay{"mm", 1e3};
+  return g.angular[axis] ? UnitDisplay{"deg", 1.0 / units::kDeg} : UnitDisplay{"mm", 1.0 / units::kMm};
 }
 
 namespace {

@@ -150,13 +150,19 @@ void bind_png(py::module_& m) {
       .def_readonly("nx", &io::PlotField2D::nx)
       .def_readonly("ny", &io::PlotField2D::ny)
       .def_readwrite("title", &io::PlotField2D::title);
+  py::enum_<io::CurveStyle>(m, "CurveStyle", "How a PlotCurve is drawn (no colour is one of viridis's)")
+      .value("SOLID_BLACK", io::CurveStyle::kSolidBlack)
+      .value("DASHED_RED", io::CurveStyle::kDashedRed)
+      .value("SHORT_DASHED_MAGENTA", io::CurveStyle::kShortDashedMagenta);
   py::class_<io::PlotCurve>(m, "PlotCurve")
-      .def(py::init([](const RowsRef<2>& points, std::string label, int style) {
+      .def(py::init([](const RowsRef<2>& points, std::string label, io::CurveStyle style) {
              io::PlotCurve c{{}, std::move(label), style};
              for (Eigen::Index i = 0; i < points.rows(); ++i) c.points.push_back({points(i, 0), points(i, 1)});
              return c;
            }),
-           py::arg("points"), py::arg("label") = "", py::arg("style") = 0);
+           py::arg("points"), py::arg("label") = "", py::arg("style") = io::CurveStyle::kSolidBlack)
+      .def_readonly("label", &io::PlotCurve::label)
+      .def_readonly("style", &io::PlotCurve::style);
   py::class_<io::PlotOptions>(m, "PlotOptions")
       .def(py::init<>())
       .def_readwrite("title", &io::PlotOptions::title)

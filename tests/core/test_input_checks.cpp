@@ -1,6 +1,7 @@
 // The range and size checks every reader and option goes through (core/input_checks.hpp): a value is
 // judged after its conversion to SI and reported in the unit it was written in.
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,7 @@ void expect_contains(const std::string& message, const std::string& part) {
   EXPECT_NE(message.find(part), std::string::npos) << "expected \"" << part << "\" in: " << message;
 }
 
-const UnitOfInput kMm{1e-3, "mm"};
+const UnitOfInput kMm{units::kMm, "mm"};
 
 TEST(InputChecks, LengthRangeIsJudgedInSiAndReportedInTheWrittenUnit) {
   EXPECT_TRUE(check_quantity(1e9, Quantity::kLength, "x", kMm).ok());  // 1e6 m: the bound itself

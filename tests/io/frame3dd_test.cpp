@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/frame3dd.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
@@ -26,8 +27,8 @@ FileUnits units(const std::string& name) {
   return u.ok() ? *u : FileUnits{};
 }
 
-constexpr double kInch = 0.0254;             // m
-constexpr double kKip = 4448.2216152605;     // N
+using units::kInch;
+using units::kKip;
 
 // Frame3DD's example A (pslack/frame3dd, examples/exA.3dd, the format of commit 09f5c74): a 2D truss
 // of 21 elements in kip and inch, load case 1 nodal loads and a support settlement, case 2 nodal

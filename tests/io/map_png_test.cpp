@@ -126,8 +126,8 @@ PlotOptions half_options() {
   o.title = "test map: value = x";
   o.colorbar_label = "x (mm)";
   o.width = 900, o.height = 700;
-  o.curves.push_back({{{kCurveX, -20.0}, {kCurveX, 200.0}}, "vertical line", 0});
-  o.curves.push_back({{{-120.0, kCurveY}, {120.0, kCurveY}}, "horizontal line", 1});
+  o.curves.push_back({{{kCurveX, -20.0}, {kCurveX, 200.0}}, "vertical line", CurveStyle::kSolidBlack});
+  o.curves.push_back({{{-120.0, kCurveY}, {120.0, kCurveY}}, "horizontal line", CurveStyle::kDashedRed});
   return o;
 }
 

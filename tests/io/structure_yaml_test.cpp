@@ -8,6 +8,8 @@
 #include <numbers>
 #include <string>
 
+#include "kinestat/core/units.hpp"
+
 namespace kinestat::io {
 namespace {
 
@@ -216,7 +218,7 @@ TEST(StructureYaml, RollAngleGivesFrame3ddLocalAxes) {
 }
 
 // Any length and force unit (issue 20): {length: in, force: kip}, converted once on reading with
-// the exact definitions (1 in = 0.0254 m, 1 kip = 4448.2216152605 N). Frame3DD's example A gives its
+// the exact definitions of core/units.hpp (1 in = 0.0254 m, 1 kip = 4448.2216152605 N). Frame3DD's example A gives its
 // steel 7.33e-7 kip s^2/in^4, which must arrive as a steel density (7833 kg/m^3).
 TEST(StructureYaml, KipAndInchArriveInSI) {
   const char* yaml = R"(
@@ -239,7 +241,7 @@ load_cases:
 )";
   auto s = read_structure_yaml_string(yaml, "kip.yaml");
   ASSERT_TRUE(s.ok()) << s.status().message();
-  const double in = 0.0254, kip = 4448.2216152605;
+  const double in = units::kInch, kip = units::kKip;
   EXPECT_DOUBLE_EQ(s->nodes()[1].position.x(), 120 * in);
   EXPECT_DOUBLE_EQ(s->materials()[0].E, 29000 * kip / (in * in));
   EXPECT_DOUBLE_EQ(s->sections()[0].Iz, 0.01 * in * in * in * in);

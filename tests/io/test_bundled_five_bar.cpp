@@ -2,8 +2,7 @@
 // mechanisms/five_bar: two independent routes to one answer, and the paper's Table 1 row 14.
 #include <gtest/gtest.h>
 
-#include <numbers>
-
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/structure_yaml.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 #include "kinestat/msa/static_analysis.hpp"
@@ -14,7 +13,7 @@ namespace {
 TEST(BundledFiveBar, FileEqualsBuilderAndTable1Row14) {
   auto file = io::read_structure_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/five_bar.yaml");
   ASSERT_TRUE(file.ok()) << file.status().message();
-  constexpr double deg = std::numbers::pi / 180.0;
+  constexpr double deg = units::kDeg;
   const mechanisms::FiveBarParams paper;  // the paper's section-5 values
   auto built = mechanisms::make_five_bar_structure(paper, 64 * deg, 75 * deg, mechanisms::Assembly::kUp);
   ASSERT_TRUE(built.ok());

@@ -6,13 +6,14 @@
 #include <cmath>
 #include <numbers>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 
 namespace kinestat::mechanisms {
 namespace {
 
 using std::numbers::pi;
-constexpr double kDeg = pi / 180.0;
+using units::kDeg;
 
 // Angle difference modulo 2 pi, in [0, pi].
 double angle_gap(double a, double b) { return std::abs(std::remainder(a - b, 2.0 * pi)); }

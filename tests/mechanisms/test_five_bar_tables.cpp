@@ -15,15 +15,15 @@
 
 #include <cmath>
 #include <limits>
-#include <numbers>
 
+#include "kinestat/core/units.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::mechanisms {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using units::kDeg;
 constexpr int kP = kFiveBarPlatformNode;  // node "5"
 
 const FiveBarParams kPaper;  // section 5: every default of FiveBarParams

@@ -4,10 +4,10 @@
 // Cartesian stiffness matrices at the free end must agree to round-off.
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <utility>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/mechanisms/five_bar_vjm.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/vjm/link_spring.hpp"
@@ -93,7 +93,7 @@ TEST(VjmVsMsa, BeamFrameWithElasticJointTimoshenko) { cross_check(BeamTheory::kT
 // cost ~7 of the 16 digits, so they agree to ~1e-8 (measured: 3e-9 to 2e-8), asserted at 1e-6.
 TEST(VjmVsMsa, FiveBarWithReleasedJointsAtTable1Postures) {
   const mechanisms::FiveBarParams p;
-  constexpr double deg = std::numbers::pi / 180.0;
+  constexpr double deg = units::kDeg;
   msa::Workspace ws;
   for (const auto& [t1, t2] : {std::pair{64.0, 75.0}, {89.0, 91.0}, {60.0, 114.0}, {70.0, 100.0}}) {
     const auto q = mechanisms::direct_kinematics(p, t1 * deg, t2 * deg, mechanisms::Assembly::kUp);
@@ -112,7 +112,7 @@ TEST(VjmVsMsa, FiveBarWithReleasedJointsAtTable1Postures) {
 // At theta1 = theta2 (a parallel singularity) both methods lose the platform's motion along y.
 TEST(VjmVsMsa, FiveBarSingularPostureLosesTheSameDirection) {
   const mechanisms::FiveBarParams p;
-  constexpr double deg = std::numbers::pi / 180.0;
+  constexpr double deg = units::kDeg;
   const auto q = mechanisms::direct_kinematics(p, 30 * deg, 30 * deg, mechanisms::Assembly::kUp);
   ASSERT_TRUE(q.ok());
   const auto kv = vjm::platform_unloaded_stiffness(mechanisms::five_bar_vjm_chains(p, *q));

@@ -199,3 +199,16 @@ def test_bad_sweeps_raise_input_error():
     with pytest.raises(ks.InputError, match="r1"):
         mech.sweep_five_bar_designs(o)
 
+
+
+def test_plot_curve_style_is_an_enum(tmp_path):
+    # PlotCurve's style is io.CurveStyle (it was an int 0..2): a number is refused, a style is drawn.
+    curve = ks.io.PlotCurve(np.array([[0.0, 0.0], [3.0, 2.0]]), "diagonal", ks.io.CurveStyle.DASHED_RED)
+    assert curve.style == ks.io.CurveStyle.DASHED_RED and curve.label == "diagonal"
+    assert ks.io.PlotCurve(np.zeros((2, 2))).style == ks.io.CurveStyle.SOLID_BLACK
+    with pytest.raises(TypeError):
+        ks.io.PlotCurve(np.zeros((2, 2)), "", 1)
+    options = ks.io.PlotOptions()
+    options.curves = [curve]
+    ks.io.write_png_map(str(tmp_path / "curve.png"), ks.io.PlotField2D(np.arange(12.0).reshape(3, 4)), options)
+    assert (tmp_path / "curve.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -1,7 +1,11 @@
 // Recoverable failures are returned, not thrown (as in Ceres): a status code plus a message that
 // names the item at fault and what to do about it.
+//
+// Both types are [[nodiscard]]: a function that returns one warns when its result is dropped
+// (-Werror makes that a build failure). Drop one only where ignoring it is right, with a comment.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -15,7 +19,10 @@ enum class StatusCode {
   kInternal,       // a library failure (out of memory in CHOLMOD, ...)
 };
 
-class Status {
+// "kInvalidInput", ...: the enumerator's name, for messages about the status itself.
+const char* status_code_name(StatusCode code);
+
+class [[nodiscard]] Status {
  public:
   Status() = default;
   Status(StatusCode code, std::string message) : code_(code), message_(std::move(message)) {}
@@ -35,25 +42,50 @@ class Status {
   std::string message_;
 };
 
+namespace detail {
+// Prints "kinestat: StatusOr::value() called on an error (CODE: MESSAGE)..." to stderr and aborts.
+[[noreturn]] void status_or_value_of_error(const Status& status);
+}  // namespace detail
+
 // A value or the reason there is none.
+//
+// Reading the value (value(), *, ->) of a StatusOr that holds an error is a programming error, not
+// bad input: the caller must test ok() first. It prints the status to stderr and aborts (in every
+// build type), instead of handing out a value that was never computed. Bad input itself never
+// aborts: it is the error status the caller tests for.
+//
+// A StatusOr made from Status::Ok() (a status without a value) holds kInternal instead, so that
+// ok() is true exactly when there is a value.
 template <class T>
-class StatusOr {
+class [[nodiscard]] StatusOr {
  public:
   StatusOr(T value) : value_(std::move(value)) {}  // NOLINT: implicit by design
-  StatusOr(Status status) : status_(std::move(status)) {}  // NOLINT
+  StatusOr(Status status) : status_(std::move(status)) {  // NOLINT
+    if (status_.ok()) status_ = Status::Internal("StatusOr made from an OK status without a value");
+  }
   bool ok() const { return status_.ok(); }
   const Status& status() const { return status_; }
-  const T& value() const& { return value_; }
-  T& value() & { return value_; }
-  T&& value() && { return std::move(value_); }
-  const T& operator*() const& { return value_; }
-  T& operator*() & { return value_; }
-  const T* operator->() const { return &value_; }
-  T* operator->() { return &value_; }
+  const T& value() const& { return checked(); }
+  T& value() & { return checked(); }
+  T&& value() && { return std::move(checked()); }
+  const T& operator*() const& { return checked(); }
+  T& operator*() & { return checked(); }
+  T&& operator*() && { return std::move(checked()); }
+  const T* operator->() const { return &checked(); }
+  T* operator->() { return &checked(); }
 
  private:
+  const T& checked() const {
+    if (!value_) detail::status_or_value_of_error(status_);
+    return *value_;
+  }
+  T& checked() {
+    if (!value_) detail::status_or_value_of_error(status_);
+    return *value_;
+  }
+
   Status status_;
-  T value_{};
+  std::optional<T> value_;
 };
 
 }  // namespace kinestat

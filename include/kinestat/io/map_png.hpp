@@ -14,11 +14,14 @@ namespace kinestat::io {
 
 // A scalar field on a regular 2D grid, x fastest: values[i + nx * j] at (x0 + i dx, y0 + j dy),
 // in plot units (those the axis labels state). NaN where there is no value (drawn blank).
+// How a curve is drawn; no colour is one of viridis's.
+enum class CurveStyle { kSolidBlack, kDashedRed, kShortDashedMagenta };
+
 // A polyline in plot units drawn over the field; a NaN point breaks the line.
 struct PlotCurve {
   std::vector<std::array<double, 2>> points;
   std::string label;  // legend entry ("workspace boundary", "parallel singularity")
-  int style = 0;      // 0: solid black, 1: dashed red, 2: short-dashed magenta (none is in viridis)
+  CurveStyle style = CurveStyle::kSolidBlack;
 };
 
 struct PlotField2D {
