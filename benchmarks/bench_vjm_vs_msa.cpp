@@ -10,7 +10,7 @@
 // the tables' Q1: the VJM chains of mechanisms::orthoglide_chains (platform_unloaded_stiffness) against
 // the same mechanism as an MSA frame, mechanisms::orthoglide_frame (beams, joints with released
 // rotations, rigid plates; 16 / 40 nodes), solved with a reused msa::Workspace. Both are exact for
-// these elements: max_rel_diff ~1e-14 to 1e-12 (tests/mechanisms/test_orthoglide_frame.cpp).
+// these elements: max_rel_diff ~1e-14 to 1e-12 (tests/mechanisms/orthoglide_frame_test.cpp).
 // Run: ./build/benchmarks/bench_vjm_vs_msa   (figures: benchmarks/README.md)
 #include <benchmark/benchmark.h>
 

@@ -67,7 +67,7 @@ struct DesignArgs {
 };
 
 // Grid of the volume fractions of Fig. 3 and Table 2 (n^3 cells over [-L, L]^3; ~0.5 % from the
-// paper's own ray method, tests/mechanisms/test_orthoglide_design.cpp).
+// paper's own ray method, tests/mechanisms/orthoglide_design_test.cpp).
 constexpr int kVolumeGrid = 80;
 
 const char* strategy_summary(int s) {

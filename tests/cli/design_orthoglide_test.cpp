@@ -1,7 +1,7 @@
 // kinestat design orthoglide: the paper's analyses beyond Table 4 are printed (section 5.2 switch
 // points, Fig. 3 and Table 2 volumes, the software limit's share of the joint box, section 6's encoder
 // offsets), with the values the library tests check against independent routes
-// (tests/mechanisms/test_orthoglide_design.cpp).
+// (tests/mechanisms/orthoglide_design_test.cpp).
 #include <gtest/gtest.h>
 
 #include <string>

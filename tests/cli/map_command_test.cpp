@@ -79,7 +79,7 @@ std::pair<double, double> force_stiffness_range(const Mat6& C) {
 // The five-bar: its VJM (`kinestat map fivebar --method vjm`'s model by the other method, exact for
 // beams and well conditioned) to 1e-9 + 2e-15 cond(K) (round-off of any solve); `kinestat fivebar`'s
 // msa::solve to 1e-5, its own accuracy: the 2e11 N/m joint springs cost the nodal 36x36 ~7 digits
-// (test_posture_kernels.cpp). The Orthoglide: `kinestat vjm`'s path.
+// (posture_kernels_test.cpp). The Orthoglide: `kinestat vjm`'s path.
 TEST(MapCommand, ValuesEqualTheSinglePostureCommands) {
   const Vec6 load = (Vec6() << 3.0, -2.0, 0.0, 0.0, 0.0, 0.0).finished();
   const CliRun r = run_cli({"map", "fivebar", "--region", "-100:100,0:150", "--step", "25", "--load", "3,-2,0,0,0,0",

@@ -1,7 +1,7 @@
 // Output that cannot be written is a failed run (exit 2, the path named), never a success with the
 // result lost: a full disk (/dev/full) under --json, --png, --vti, --vtk, and stdout on a full disk.
 // That a failed or killed write leaves the earlier file is tested on the shared writer
-// (tests/core/test_atomic_file.cpp), which every output file goes through.
+// (tests/core/atomic_file_test.cpp), which every output file goes through.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -92,7 +92,7 @@ Mat6 on_complement(const Mat6& K, const Mat6& C) {
 }
 
 // The five-bar's 2e11 N/m (N m/rad) joint springs in series with ~1e4 N/m of link bending cost an
-// MSA on nodal unknowns ~7 digits (tests/mechanisms/test_posture_kernels.cpp): the built-in
+// MSA on nodal unknowns ~7 digits (tests/mechanisms/posture_kernels_test.cpp): the built-in
 // five-bar's MSA reference (CHOLMOD on its 36 nodal unknowns) is off its VJM reference by up to
 // ~1e-5 in compliance. The generic MSA has the same matrix in other unknowns and round-off of the
 // same size, not at the same points: it is held to twice the reference's largest error over the

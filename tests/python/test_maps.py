@@ -137,7 +137,7 @@ def test_bad_grids_raise_input_error():
 
 
 def small_sweep():
-    # The C++ test's sweep (tests/mechanisms/test_five_bar_design_sweep.cpp): 3 x 3 designs about the paper's.
+    # The C++ test's sweep (tests/mechanisms/five_bar_design_sweep_test.cpp): 3 x 3 designs about the paper's.
     o = mech.FiveBarDesignSweepOptions()
     o.r1, o.r2, o.steps = (0.07, 0.13), (0.08, 0.14), 3
     o.region = mech.make_map_grid([(-0.1, 0.1), (0.04, 0.2), 0.0], 0.01)

@@ -8,7 +8,7 @@
 // other dofs fixed, and for a prismatic beam without span load that field is known exactly (cubic
 // deflection, quadratic rotation, with the shear parameter Phi = 12 E I / (G As L^2): Friedman and
 // Kosmatka, "An improved two-node Timoshenko beam finite element", Computers & Structures 47(3),
-// 1993; Phi = 0 gives the Hermite cubics). tests/elements/test_member_loads.cpp checks the point
+// 1993; Phi = 0 gives the Hermite cubics). tests/elements/member_loads_test.cpp checks the point
 // load against an independent force-method derivation.
 // End releases are condensed afterwards with condense_fixed_end_forces (beam_element.hpp).
 #pragma once

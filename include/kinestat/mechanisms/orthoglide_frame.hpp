@@ -1,7 +1,7 @@
 // The Orthoglide (3-PUU or 3-PRPaR) as an MSA frame: the same mechanism and the same inputs as the
 // VJM chains of orthoglide_stiffness.hpp, element for element, so the two methods can be compared
 // (the frame's Cartesian stiffness at the tool node equals vjm::platform_unloaded_stiffness of
-// orthoglide_chains, tests/mechanisms/test_orthoglide_frame.cpp).
+// orthoglide_chains, tests/mechanisms/orthoglide_frame_test.cpp).
 //
 // Per leg i (slider axis e_i, slider at rho_i e_i from the inverse kinematics, leg direction d):
 //   ground node (fully supported) --actuator joint: k_act along e_i, rigid in the other 5 dofs-->

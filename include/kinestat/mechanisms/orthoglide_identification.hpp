@@ -4,7 +4,7 @@
 // Pashkevich et al. 2009 publish the compliance (Tables 1-2) but not the inputs it came from (link
 // stiffness from FEA, actuator stiffness, platform geometry). With as many target compliance terms as
 // free inputs, the model is solved for the inputs; every other term of the tables is then a
-// prediction that can be compared (tests/mechanisms/test_orthoglide_identification.cpp, docs/vjm.md).
+// prediction that can be compared (tests/mechanisms/orthoglide_identification_test.cpp, docs/vjm.md).
 // The same function calibrates a model to a robot's measured compliance.
 //
 // Method: Levenberg-Marquardt (Eigen's unsupported NonLinearOptimization module) on the logarithms of

@@ -11,7 +11,7 @@
 //   Table 2 Q2 k_tran 21.2                              foot length (the foot's bending compliance)
 //
 // Units of the tables: k_tran 1e-4 mm/N, k_rot 1e-7 rad/(N mm); each 3x3 block is a on the diagonal
-// and b off it (q_axis_form in test_orthoglide_stiffness.cpp checks that form).
+// and b off it (q_axis_form in orthoglide_stiffness_test.cpp checks that form).
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -248,7 +248,7 @@ TEST(OrthoglidePrediction, RotationalComplianceAtQ1AndQ2) {
 
 TEST(OrthoglidePrediction, SignOfEveryOffDiagonalTerm) {
   // The 20 non-zero printed couplings of Tables 1-2 (the nominal model has the same signs,
-  // test_orthoglide_stiffness.cpp), including the tiny loaded ones at Q0.
+  // orthoglide_stiffness_test.cpp), including the tiny loaded ones at Q0.
   std::cout << "Tables 1-3 (a, b of each block; paper in brackets): unloaded k_tran | k_rot || loaded k_tran | "
                "k_rot | F | M\n";
   for (A a : {A::kPUU, A::kPRPaR}) {

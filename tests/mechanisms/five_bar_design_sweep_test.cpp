@@ -1,5 +1,5 @@
 // Five-bar design sweep: each design's counts equal those counted from a workspace map of that
-// design computed separately (with the same sweep kernel, whose values test_posture_kernels.cpp checks
+// design computed separately (with the same sweep kernel, whose values posture_kernels_test.cpp checks
 // against the reference kernels); the best design has the largest share; bad ranges are refused
 // naming the range.
 #include "kinestat/mechanisms/five_bar_design_sweep.hpp"
