@@ -115,8 +115,11 @@ TEST(RobotFeaSpring, MatchesTheBeamRobotAndTheMatrixRobot) {
   for (int i = 0; i < 6; ++i) EXPECT_NEAR(K_link(i, i) / K_beam_link(i, i), 1.0, 0.03) << "dof " << i;
   const std::vector<Mat6> K_fea = stiffness_at_postures(*fea), K_beam = stiffness_at_postures(*beam);
   for (std::size_t p = 0; p < K_fea.size(); ++p) {
-    for (int i = 0; i < 6; ++i)
+    // Measured: 1.008 (ux, uy, rz) .. 1.018 (uz); 0.8 % in the Frobenius norm.
+    for (int i = 0; i < 6; ++i) {
       EXPECT_NEAR(K_fea[p](i, i) / K_beam[p](i, i), 1.0, 0.03) << "posture " << p << " dof " << i;
+      EXPECT_GT(K_fea[p](i, i), K_beam[p](i, i)) << "posture " << p << " dof " << i;  // the FEA's stiffening
+    }
     EXPECT_LT((K_fea[p] - K_beam[p]).norm() / K_beam[p].norm(), 0.03) << "posture " << p;
   }
 
