@@ -16,7 +16,8 @@ from ._kinestat.io import read_robot_model, read_robot_params, is_robot_file  # 
 
 
 def load(path, params=None):
-    """Reads and checks a robot file into a RobotModel. params: {name: value} in the file's units
+    """Reads and checks a robot file into a RobotModel, its links' `fea:` springs computed (meshing
+    and FEA, or their cache). params: {name: value} in the file's units
     (its `units:`), replacing the file's values (a design's parameters). Raises InputError with the
     CLI's message ("FILE:LINE: ...", or "no parameter 'NAME' to set; ...")."""
     return read_robot_model(str(path), params)

@@ -43,4 +43,30 @@ Status Output::write_json(const nlohmann::json& j) {
   return io::write_json(options_.json, j);
 }
 
+StatusOr<mechanisms::RobotModel> load_robot_model(Context& ctx, const std::string& command, const std::string& path,
+                                                  bool quiet, const io::ParamOverrides& overrides,
+                                                  std::map<int, Mat6>* computed) {
+  StatusOr<mechanisms::RobotDescription> d = io::read_robot_description(path, overrides);
+  if (!d.ok()) return d.status();
+  auto each_fea = [&](auto f) {
+    for (mechanisms::RobotLeg& leg : d->legs)
+      for (auto& item : leg.items)
+        if (auto* link = std::get_if<mechanisms::RobotLink>(&item); link && link->spring && link->spring->fea)
+          f(*link->spring);
+  };
+  if (computed != nullptr)
+    each_fea([&](mechanisms::RobotSpring& s) {
+      if (const auto it = computed->find(s.fea_entry); it != computed->end()) s.stiffness = it->second;
+    });
+  auto progress = [&ctx, &command, quiet](const std::string& stage) {
+    if (!quiet) ctx.err << command << ": " << stage << " ...\n";
+  };
+  // Warnings even when quiet: a cache entry was damaged and its result recomputed.
+  auto warning = [&ctx, &command](const std::string& w) { ctx.err << command << ": warning: " << w << "\n"; };
+  if (Status s = mechanisms::resolve_robot_fea_springs(*d, progress, warning); !s.ok()) return s;
+  if (computed != nullptr)
+    each_fea([&](const mechanisms::RobotSpring& s) { computed->emplace(s.fea_entry, s.stiffness); });
+  return mechanisms::make_robot_model(std::move(*d));
+}
+
 }  // namespace kinestat::cli

@@ -3,12 +3,15 @@
 // to stderr (or nowhere with --quiet).
 #pragma once
 
+#include <map>
 #include <ostream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "kinestat/cli/app.hpp"
+#include "kinestat/io/robot_yaml.hpp"
+#include "kinestat/mechanisms/robot_model.hpp"
 
 namespace kinestat::cli {
 
@@ -41,5 +44,13 @@ class Output {
   OutputOptions options_;
   std::ostream discard_{nullptr};  // a stream without buffer drops what is written to it
 };
+
+// A robot file (docs/robots.md) read, its links' `fea:` springs computed (meshing and FEA or their
+// cache: progress "COMMAND: stage ..." on ctx.err unless `quiet`, warnings always), and built by
+// make_robot_model. `computed` (optional) keeps the springs by file entry across calls: a design
+// sweep's designs re-read the file, and its `fea:` blocks take no parameters.
+StatusOr<mechanisms::RobotModel> load_robot_model(Context& ctx, const std::string& command, const std::string& path,
+                                                  bool quiet, const io::ParamOverrides& overrides = {},
+                                                  std::map<int, Mat6>* computed = nullptr);
 
 }  // namespace kinestat::cli

@@ -593,8 +593,10 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
   const MapGrid* region = &o.region;
   const std::string& path = a.target;
 
-  const RobotDesignFactory factory = [&path](const std::vector<std::pair<std::string, double>>& values) {
-    return io::read_robot_model(path, values);
+  // The links' `fea:` springs are computed for the first design and reused (they take no parameters).
+  std::map<int, Mat6> fea_springs;
+  const RobotDesignFactory factory = [&](const std::vector<std::pair<std::string, double>>& values) {
+    return load_robot_model(ctx, "design", path, a.quiet, values, &fea_springs);
   };
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();

@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/command_output.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/core/units.hpp"
@@ -171,7 +172,7 @@ std::string task_text(const RobotDescription& d) {
 
 // A robot file (docs/robots.md): the box from --box or the file's `workspace:`, the orientation
 // task coordinates from --orientation.
-StatusOr<MapSetup> robot_setup(const MapArgs& a) {
+StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
   for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.region_opt})
     if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a robot file takes --box, --step, "
                                       "--orientation, --angles, --angle-step, --position, --method, --load or "
@@ -185,7 +186,7 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a) {
     o.method = a.method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
   }
   if (Status st = parse_load(a, o.displacement, o.wrench); !st.ok()) return st;
-  auto model = io::read_robot_model(a.target);
+  auto model = load_robot_model(ctx, "map", a.target, a.quiet);
   if (!model.ok()) return model.status();
   auto shared = std::make_shared<const RobotModel>(std::move(*model));
   const RobotDescription& d = shared->description();
@@ -334,7 +335,7 @@ int run_map(MapArgs& a, Context& ctx) {
   } else {
     StatusOr<bool> robot = io::is_robot_file(a.target);
     if (!robot.ok()) return fail(robot.status());
-    setup = *robot ? robot_setup(a) : model_setup(a);
+    setup = *robot ? robot_setup(a, ctx) : model_setup(a);
   }
   if (!setup.ok()) return fail(setup.status());
   if ((*field == MapField::kDeflectionTranslation || *field == MapField::kDeflectionRotation) && !setup->with_load)

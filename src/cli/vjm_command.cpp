@@ -42,8 +42,8 @@ struct ModelChains {
   std::string title, posture;
 };
 
-StatusOr<ModelChains> robot_chains(const VjmArgs& a, const std::optional<Vec3>& point) {
-  auto model = io::read_robot_model(a.model);
+StatusOr<ModelChains> robot_chains(const VjmArgs& a, const std::optional<Vec3>& point, Context& ctx) {
+  auto model = load_robot_model(ctx, "vjm", a.model, a.out.quiet);
   if (!model.ok()) return model.status();
   const mechanisms::RobotDescription& d = model->description();
   VecX task = model->home_task();
@@ -111,7 +111,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
     return bad(Status::Invalid("--orientation applies to robot files (docs/robots.md)"));
   StatusOr<ModelChains> model = Status::Ok();
   if (*robot) {
-    model = robot_chains(a, point);
+    model = robot_chains(a, point, ctx);
   } else {
     StatusOr<io::VjmModel> vjm_model = io::read_vjm_model_yaml(a.model);
     if (!vjm_model.ok()) return bad(vjm_model.status());

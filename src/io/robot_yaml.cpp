@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -184,11 +185,29 @@ class RobotReader : public YamlFields {
 
   // A 6x6 spring: `matrix` (6 rows, file units: N/mm, N/rad, N mm/rad for mm-N-s) or `diagonal`
   // (6 numbers), with optional `axes: {x: [..], y: [..]}` (default: `default_axes`).
-  RobotSpring spring(const YAML::Node& n, const std::string& item, const Mat3& default_axes) {
-    check_map(n, item, {"matrix", "diagonal", "axes"});
+  // A link's may instead be `fea:` (the keys of fea_request, io/yaml_fields.hpp): only what to
+  // compute (mechanisms::resolve_robot_fea_springs); its stiffness is NaN until then. `fea_item`
+  // names it in messages; empty: a joint's spring, which cannot be `fea:`.
+  RobotSpring spring(const YAML::Node& n, const std::string& item, const Mat3& default_axes,
+                     const std::string& fea_item = "") {
+    check_map(n, item, {"matrix", "diagonal", "fea", "axes"});
     RobotSpring s;
     s.label = item;
     s.axes = default_axes;
+    if (const YAML::Node f = n["fea"]; f.IsDefined()) {
+      if (fea_item.empty())
+        fail(f, item, "a joint's spring is a `matrix` or `diagonal`; `fea:` is a link's (a link's mesh)");
+      if (n["matrix"].IsDefined() || n["diagonal"].IsDefined())
+        fail(n, item, "give one of 'matrix', 'diagonal' or 'fea'");
+      s.fea = fea_request(*this, f, fea_item, u_);
+      s.fea_where = where(f, fea_item);
+      // The copies of a leg pattern read the same entry: one computation for all.
+      const auto key = std::pair{f.Mark().line, f.Mark().column};
+      s.fea_entry = fea_entries_.emplace(key, static_cast<int>(fea_entries_.size())).first->second;
+      s.stiffness = Mat6::Constant(std::numeric_limits<double>::quiet_NaN());
+      if (const YAML::Node a = n["axes"]; a.IsDefined()) s.axes = frame_axes(a, item);
+      return s;
+    }
     Vec6 dscale;
     dscale << Vec3::Constant(1.0 / std::sqrt(u_.length)), Vec3::Constant(std::sqrt(u_.length));
     auto entry = [&](const YAML::Node& v, int i, int j, const std::string& key) {
@@ -200,7 +219,8 @@ class RobotReader : public YamlFields {
       if (Status st = check_quantity(x, q, "'" + key + "'", unit); !st.ok()) fail(v, item, st.message());
       return x * u_.force * dscale(i) * dscale(j);
     };
-    if (n["matrix"].IsDefined() == n["diagonal"].IsDefined()) fail(n, item, "give one of 'matrix' or 'diagonal'");
+    if (n["matrix"].IsDefined() == n["diagonal"].IsDefined())
+      fail(n, item, fmt::format("give one of 'matrix' or 'diagonal'{}", fea_item.empty() ? "" : " or 'fea'"));
     s.stiffness.setZero();
     if (const YAML::Node k = n["matrix"]; k.IsDefined()) {
       if (!k.IsSequence() || k.size() != 6) fail(k, item, "'matrix' must be 6 rows of 6 numbers");
@@ -281,11 +301,15 @@ class RobotReader : public YamlFields {
         if (!(count >= 1 && count == std::floor(count))) fail(b["count"], label, "'count' is a whole number >= 1");
         for (double* p : {&bars.A, &bars.Asy, &bars.Asz, &bars.Iy, &bars.Iz, &bars.J}) *p *= count;
       }
-      l.spring = RobotSpring{l.label, vjm::cantilever_spring(m, bars, L, theory), beam_axes(x, roll)};
+      RobotSpring cantilever;
+      cantilever.label = l.label;
+      cantilever.stiffness = vjm::cantilever_spring(m, bars, L, theory);
+      cantilever.axes = beam_axes(x, roll);
+      l.spring = cantilever;
       l.beam = RobotBeam{m, bars, L, theory};
     } else if (const YAML::Node sp = n["spring"]; sp.IsDefined()) {
       const Vec3 x = dir.norm() > 0.0 ? dir : Vec3::UnitX();
-      RobotSpring s = spring(sp, l.label, beam_axes(x, 0.0));
+      RobotSpring s = spring(sp, l.label, beam_axes(x, 0.0), label + " spring fea");
       if (sp["axes"].IsDefined()) s.axes = turn * s.axes;
       l.spring = s;
     }
@@ -407,6 +431,7 @@ class RobotReader : public YamlFields {
   std::vector<std::pair<std::string, std::unique_ptr<double>>> params_;  // muParser keeps their addresses
   std::map<std::string, Material> materials_;
   std::map<std::string, Section> sections_;
+  std::map<std::pair<int, int>, int> fea_entries_;  // `fea:` springs by their line and column
 };
 
 }  // namespace

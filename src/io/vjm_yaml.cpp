@@ -11,7 +11,6 @@
 #include "kinestat/core/units.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
-#include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/vjm/link_spring.hpp"
 #include "kinestat/vjm/platform.hpp"
 #include "io/yaml_fields.hpp"
@@ -128,67 +127,16 @@ class VjmParser : public YamlFields {
     return value(v, item, key, Quantity::kAngle, kDegrees);
   }
 
-  // A path in the file, relative to the model file's folder.
-  std::string path_in_file(const YAML::Node& v, const std::string& item, const std::string& key) const {
-    return (std::filesystem::path(file()).parent_path() / text(v, item, key)).string();
-  }
-
-  // `fea:` the 6x6 of a link from the FEA of its mesh (fea/link_stiffness_request.hpp, rigid reference
-  // coupling), through the result cache when `cache` names a directory: only what to compute; the
-  // file is not meshed here (resolve_fea_springs does it). Convention (docs/vjm.md): the mesh's axes
-  // are the current frame's axes and the reference point is the current frame's origin, i.e. the
-  // spring sits at the link's far end, after the `translate` along the link, exactly like `cantilever`.
-  fea::LinkStiffnessRequest fea_request(const YAML::Node& f, const std::string& it) const {
-    check_map(f, it,
-              {"mesh", "material", "E", "nu", "clamp", "reference", "reference_point", "unit", "size", "max_elements",
-               "cache"});
-    fea::LinkStiffnessRequest r;
-    // The mesh file's length unit (also of the regions, reference point and size): the model's by default.
-    r.unit_scale = u_.length;
-    if (const YAML::Node u = f["unit"]; u.IsDefined()) {
-      const std::string s = text(u, it, "unit");
-      if (s != "mm" && s != "m") fail(u, it, fmt::format("unknown unit '{}'; write mm or m (the mesh file's unit)", s));
-      r.unit_scale = s == "mm" ? units::kMm : 1.0;
-    }
-    const UnitOfInput mesh_unit{r.unit_scale, r.unit_scale == 1.0 ? "m" : "mm"};
-    if (const YAML::Node m = f["material"]; m.IsDefined()) {
-      if (f["E"].IsDefined() || f["nu"].IsDefined()) fail(m, it, "give either 'material' or 'E' and 'nu', not both");
-      StatusOr<Material> parsed = fea::parse_material(text(m, it, "material"), "'material: " + m.Scalar() + "'",
-                                                    u_.of(Quantity::kModulus).scale);
-      if (!parsed.ok()) fail(m, it, parsed.status().message());
-      r.material = *parsed;
-    } else {
-      r.material = material(f, it);
-    }
-    auto region = [&](const char* key) {
-      const YAML::Node n = require(f, it, key);
-      StatusOr<fea::Region> parsed = fea::parse_region(text(n, it, key), r.unit_scale, fmt::format("'{}: {}'", key, n.Scalar()));
-      if (!parsed.ok()) fail(n, it, parsed.status().message());
-      return *parsed;
-    };
-    r.options.clamp = region("clamp");
-    r.options.reference = region("reference");
-    if (const YAML::Node p = f["reference_point"]; p.IsDefined())
-      r.options.reference_point = vec3(p, it, "reference_point", Quantity::kLength, mesh_unit);
-    if (const YAML::Node n = f["size"]; n.IsDefined())
-      r.mesh_size = value(n, it, "size", Quantity::kLength, mesh_unit, Sign::kPositive);
-    if (const YAML::Node n = f["max_elements"]; n.IsDefined())  // the estimated tetrahedra allowed
-      r.max_elements = value(n, it, "max_elements", Quantity::kRatio, {}, Sign::kPositive);
-    const YAML::Node mesh = require(f, it, "mesh");
-    r.mesh_file = path_in_file(mesh, it, "mesh");
-    if (!std::filesystem::is_regular_file(r.mesh_file))
-      fail(mesh, it, r.mesh_file + ": no such mesh file; the path is relative to the model file's folder");
-    if (const YAML::Node c = f["cache"]; c.IsDefined()) r.cache_dir = path_in_file(c, it, "cache");
-    return r;
-  }
-
   // A spring's 6x6; for `fea:` a placeholder, and *fea says what to compute.
   Mat6 spring(const YAML::Node& n, const std::string& item, std::optional<FeaSpring>* fea) const {
     check_map(n, item, {"matrix", "cantilever", "parallelogram", "fea"});
     if (n.size() != 1) fail(n, item, "give exactly one of matrix, cantilever, parallelogram, fea");
     if (const YAML::Node f = n["fea"]; f.IsDefined()) {
       const std::string it = item + " fea";
-      *fea = FeaSpring{.where = where(f, it), .request = fea_request(f, it)};
+      // Convention (docs/vjm.md): the mesh's axes are the current frame's axes and the reference
+      // point is the current frame's origin: the spring sits at the link's far end, after the
+      // `translate` along the link, exactly like `cantilever`.
+      *fea = FeaSpring{.where = where(f, it), .request = fea_request(*this, f, it, u_)};
       return Mat6::Identity();  // valid for the checks of the chain's geometry; made NaN after them
     }
     if (const YAML::Node k = n["matrix"]; k.IsDefined()) {

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "kinestat/core/units.hpp"
+#include "kinestat/fea/link_stiffness_inputs.hpp"
 
 namespace kinestat::io {
 
@@ -153,6 +155,64 @@ StatusOr<std::string> read_text_file(const std::string& path, const std::string&
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+}  // namespace kinestat::io
+
+namespace kinestat::io {
+
+fea::LinkStiffnessRequest fea_request(const YamlFields& y, const YAML::Node& f, const std::string& it,
+                                      const FileUnits& u) {
+  y.check_map(f, it,
+              {"mesh", "material", "E", "nu", "clamp", "reference", "reference_point", "unit", "size", "max_elements",
+               "cache"});
+  // A path in the file, relative to the file's folder.
+  auto path_in_file = [&](const YAML::Node& v, const char* key) {
+    return (std::filesystem::path(y.file()).parent_path() / y.text(v, it, key)).string();
+  };
+  fea::LinkStiffnessRequest r;
+  // The mesh file's length unit (also of the regions, reference point and size): the file's by default.
+  r.unit_scale = u.length;
+  if (const YAML::Node n = f["unit"]; n.IsDefined()) {
+    const std::string s = y.text(n, it, "unit");
+    if (s != "mm" && s != "m") y.fail(n, it, fmt::format("unknown unit '{}'; write mm or m (the mesh file's unit)", s));
+    r.unit_scale = s == "mm" ? units::kMm : 1.0;
+  }
+  const UnitOfInput mesh_unit{r.unit_scale, r.unit_scale == 1.0 ? "m" : "mm"};
+  if (const YAML::Node m = f["material"]; m.IsDefined()) {
+    if (f["E"].IsDefined() || f["nu"].IsDefined()) y.fail(m, it, "give either 'material' or 'E' and 'nu', not both");
+    StatusOr<Material> parsed = fea::parse_material(y.text(m, it, "material"), "'material: " + m.Scalar() + "'",
+                                                    u.of(Quantity::kModulus).scale);
+    if (!parsed.ok()) y.fail(m, it, parsed.status().message());
+    r.material = *parsed;
+  } else {
+    const double nu = y.number(y.require(f, it, "nu"), it, "nu");
+    if (!(nu > -1.0 && nu < 0.5))
+      y.fail(f["nu"], it, fmt::format("'nu' = {} is not in (-1, 0.5); give Poisson's ratio", nu));
+    r.material = Material::from_E_nu(
+        it, y.value(y.require(f, it, "E"), it, "E", Quantity::kModulus, u.of(Quantity::kModulus), Sign::kPositive), nu);
+  }
+  auto region = [&](const char* key) {
+    const YAML::Node n = y.require(f, it, key);
+    StatusOr<fea::Region> parsed =
+        fea::parse_region(y.text(n, it, key), r.unit_scale, fmt::format("'{}: {}'", key, n.Scalar()));
+    if (!parsed.ok()) y.fail(n, it, parsed.status().message());
+    return *parsed;
+  };
+  r.options.clamp = region("clamp");
+  r.options.reference = region("reference");
+  if (const YAML::Node p = f["reference_point"]; p.IsDefined())
+    r.options.reference_point = y.vec3(p, it, "reference_point", Quantity::kLength, mesh_unit);
+  if (const YAML::Node n = f["size"]; n.IsDefined())
+    r.mesh_size = y.value(n, it, "size", Quantity::kLength, mesh_unit, Sign::kPositive);
+  if (const YAML::Node n = f["max_elements"]; n.IsDefined())  // the estimated tetrahedra allowed
+    r.max_elements = y.value(n, it, "max_elements", Quantity::kRatio, {}, Sign::kPositive);
+  const YAML::Node mesh = y.require(f, it, "mesh");
+  r.mesh_file = path_in_file(mesh, "mesh");
+  if (!std::filesystem::is_regular_file(r.mesh_file))
+    y.fail(mesh, it, r.mesh_file + ": no such mesh file; the path is relative to the model file's folder");
+  if (const YAML::Node c = f["cache"]; c.IsDefined()) r.cache_dir = path_in_file(c, "cache");
+  return r;
 }
 
 }  // namespace kinestat::io

@@ -1,5 +1,5 @@
 // Checked access to the fields of a YAML model file, shared by the file readers (structure_yaml,
-// vjm_yaml). Every check fails with one message "FILE:LINE: ITEM: what is wrong; what to do"
+// vjm_yaml, robot_yaml). Every check fails with one message "FILE:LINE: ITEM: what is wrong; what to do"
 // (yaml-cpp's 0-based Mark() line printed 1-based; omitted when the node has no position).
 #pragma once
 
@@ -14,6 +14,7 @@
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/elements/section.hpp"
+#include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/io/file_units.hpp"
 
 namespace kinestat::io {
@@ -80,6 +81,14 @@ class YamlFields {
   std::string file_;
   std::string doc_;
 };
+
+// A `fea:` link spring's keys (docs/vjm.md; robots' links, docs/robots.md): mesh, material or E and
+// nu, clamp, reference, reference_point, unit, size, max_elements, cache. Only what to compute: the
+// mesh is not read, but it must exist. Paths are relative to the file's folder; `units` are the
+// file's (the mesh's unit by default, E's unit). Plain numbers (no expressions). Shared by the VJM
+// and robot readers.
+fea::LinkStiffnessRequest fea_request(const YamlFields& y, const YAML::Node& f, const std::string& item,
+                                      const FileUnits& units);
 
 // Loads `text` and runs parse(root), turning YamlInputError and yaml-cpp's exceptions into
 // kInvalidInput messages that name `display_name` and the line.

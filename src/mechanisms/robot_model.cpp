@@ -173,6 +173,13 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
     for (std::size_t i = 0; i < leg.items.size(); ++i) {
       if (auto* link = std::get_if<RobotLink>(&leg.items[i])) {
         scale = std::max(scale, link->to.norm());
+        if (link->spring && !link->spring->stiffness.allFinite())
+          return Status::Invalid(
+              link->spring->fea
+                  ? fmt::format("{}: this `fea:` spring is not computed yet; resolve it first "
+                                "(mechanisms::resolve_robot_fea_springs, as the kinestat commands and robots.load do)",
+                                link->spring->fea_where)
+                  : fmt::format("{}: {}: its spring is not finite", src, link->label));
         continue;
       }
       RobotJoint& j = std::get<RobotJoint>(leg.items[i]);

@@ -182,6 +182,10 @@ class Builder {
 
   // A 6x6 spring between the body `cur` and a new body at `p`, in `axes` (base axes).
   StatusOr<int> spring(int cur, const Vec3& p, const Mat3& axes, const RobotSpring& sp) {
+    if (sp.fea && !diagonal(sp.stiffness))
+      return invalid(fmt::format("{}: a `fea:` spring is a full 6x6 (its mesh couples its components) and an MSA joint "
+                                 "is diagonal in its axes; use the VJM (--method vjm), or give the link a `beam:`",
+                                 sp.fea_where));
     if (!diagonal(sp.stiffness))
       return invalid(fmt::format("{}: its 6x6 spring couples its components in its axes; an MSA joint is diagonal in "
                                  "its axes (give the spring `diagonal:` and `axes:`), or use the VJM",

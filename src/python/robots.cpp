@@ -249,10 +249,24 @@ void bind_files(py::module_& io) {
       "read_robot_model",
       [](const std::string& path, const std::optional<py::dict>& params) {
         const io::ParamOverrides o = overrides(params);
-        return std::make_shared<RobotModel>(unwrap(without_gil([&] { return io::read_robot_model(path, o); })));
+        // The links' `fea:` springs computed between reading and building (docs/robots.md); their
+        // warnings (a rejected cache entry, recomputed) as RuntimeWarnings once the GIL is back.
+        std::vector<std::string> warnings;
+        StatusOr<RobotModel> model = without_gil([&]() -> StatusOr<RobotModel> {
+          StatusOr<RobotDescription> d = io::read_robot_description(path, o);
+          if (!d.ok()) return d.status();
+          if (Status s = resolve_robot_fea_springs(*d, {}, [&](const std::string& w) { warnings.push_back(w); });
+              !s.ok())
+            return s;
+          return make_robot_model(std::move(*d));
+        });
+        for (const std::string& w : warnings)
+          if (PyErr_WarnEx(PyExc_RuntimeWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+        return std::make_shared<RobotModel>(unwrap(std::move(model)));
       },
       py::arg("path"), py::arg("params") = py::none(),
-      "Reads and checks a robot file (docs/robots.md; models/robots/) into a mechanisms.RobotModel; params "
+      "Reads and checks a robot file (docs/robots.md; models/robots/) into a mechanisms.RobotModel, its links' "
+      "`fea:` springs computed (meshing and FEA, or their cache); params "
       "({name: value}, the file's units) replace the file's values. InputError 'FILE:LINE: ...' as the CLI prints, "
       "also for a name that is no parameter of the file.");
   io.def(

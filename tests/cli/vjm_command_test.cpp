@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -185,6 +186,51 @@ TEST(VjmCommand, RobotFileAtAPoint) {
   const CliRun far = run_cli({"vjm", file, "--point", "2000,0,790"});
   EXPECT_EQ(far.code, 2);
   EXPECT_NE(far.err.find("not reached from home"), std::string::npos) << far.err;
+}
+
+}  // namespace
+}  // namespace kinestat::cli
+
+namespace kinestat::cli {
+namespace {
+
+// A robot file whose links are `fea:` springs (docs/robots.md): `vjm` and `map` mesh and solve them
+// between reading and building, with the stages on stderr (none with --quiet); MSA refuses them by
+// FILE:LINE; a missing mesh exits 2 naming the file's line.
+TEST(VjmCommand, RobotFileWithFeaLinks) {
+  const std::string dir = std::string(KINESTAT_BINARY_DIR) + "/vjm_robot_fea";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(kSource + "/meshes/bar.off", dir + "/bar.off",
+                             std::filesystem::copy_options::overwrite_existing);
+  auto write = [&](const std::string& name, const std::string& mesh) {
+    std::ofstream(dir + "/" + name)
+        << "robot: 3-RPR of bars\nunits: mm-N-s\nparams: {px: 25, py: 43.30127, a: px + sqrt(200^2 - py^2)}\n"
+           "planar: true\ntask: [x, y, rz]\ntool: [0, 0, 0]\nlegs:\n  - copies: 3\n    chain:\n"
+           "      - revolute: {at: [a, 0, 0], axis: [0, 0, 1]}\n"
+           "      - prismatic: {at: [a, 0, 0], axis: [px - a, py, 0], actuated: true}\n"
+           "      - link: {to: [px, py, 0], spring: {fea: {mesh: " << mesh
+        << ", material: steel, clamp: x=0, reference: x=200, size: 20}}}\n"
+           "      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}\n";
+    return dir + "/" + name;
+  };
+  const std::string file = write("robot.yaml", "bar.off");
+  CliRun r = run_cli({"vjm", file});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("vjm: meshing "), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("Cartesian stiffness"), std::string::npos) << r.out;
+  r = run_cli({"vjm", file, "--quiet"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_EQ(r.err.find("meshing"), std::string::npos) << r.err;
+  r = run_cli({"map", file, "--box", "-10:10,-10:10,0:0", "--step", "10", "--quiet"});
+  EXPECT_EQ(r.code, kExitOk) << r.err;
+  r = run_cli({"map", file, "--box", "-10:10,-10:10,0:0", "--step", "10", "--method", "msa", "--quiet"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find(file + ":12: leg 1 link 1 spring fea: a `fea:` spring is a full 6x6"), std::string::npos)
+      << r.err;
+  r = run_cli({"vjm", write("missing.yaml", "missing.off")});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("missing.yaml:12: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no such mesh file"), std::string::npos) << r.err;
 }
 
 }  // namespace

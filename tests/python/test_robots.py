@@ -71,6 +71,36 @@ def test_hexapod_solves_at_home():
     assert t.status == "ok"
 
 
+def test_load_computes_fea_link_springs(tmp_path):
+    # A 3-RPR whose links are meshes/bar.off (docs/robots.md, `fea:` link springs): robots.load meshes
+    # and solves it (coarse: a fraction of a second) between reading and building; a missing mesh is
+    # the reader's InputError with FILE:LINE.
+    (tmp_path / "bar.off").write_bytes((SOURCE_DIR / "meshes" / "bar.off").read_bytes())
+    text = """robot: 3-RPR of bars
+units: mm-N-s
+params: {px: 25, py: 43.30127, a: px + sqrt(200^2 - py^2)}
+planar: true
+task: [x, y, rz]
+tool: [0, 0, 0]
+legs:
+  - copies: 3
+    chain:
+      - revolute: {at: [a, 0, 0], axis: [0, 0, 1]}
+      - prismatic: {at: [a, 0, 0], axis: [px - a, py, 0], actuated: true}
+      - link: {to: [px, py, 0], spring: {fea: {mesh: MESH, material: steel, clamp: x=0, reference: x=200, size: 20}}}
+      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}
+"""
+    (tmp_path / "fea.yaml").write_text(text.replace("MESH", "bar.off"))
+    r = ks.robots.load(tmp_path / "fea.yaml")
+    s = r.solve(r.home_task)
+    assert s.ok
+    K = ks.vjm.platform_unloaded_stiffness(r.vjm_chains(s)).stiffness
+    assert np.all(np.isfinite(K)) and np.all(np.diag(K) > 0)
+    (tmp_path / "missing.yaml").write_text(text.replace("MESH", "missing.off"))
+    with pytest.raises(ks.InputError, match=r"missing\.yaml:12: .*no such mesh file"):
+        ks.robots.load(tmp_path / "missing.yaml")
+
+
 def test_solve_reports_failures_as_statuses(delta):
     s = delta.solve([0, 0, -2.0])  # 2 m below the base: out of reach
     assert s.status == "unreachable" and not s.ok and s.message

@@ -1,7 +1,7 @@
 // One path from a link's surface file to its 6x6 stiffness: check the surface, mesh it (CGAL Mesh_3),
 // run the FEA (fea/link_stiffness.hpp), through the result cache (fea/result_cache.hpp). Used by
 // `kinestat link-stiffness` and by the `fea:` springs of VJM model files (resolved after reading,
-// io/vjm_yaml.hpp).
+// io/vjm_yaml.hpp) and of robot files' links (mechanisms::resolve_robot_fea_springs).
 #pragma once
 
 #include <optional>

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -30,6 +31,7 @@
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/material.hpp"
 #include "kinestat/elements/section.hpp"
+#include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/vjm/chain.hpp"
 
 namespace kinestat::mechanisms {
@@ -50,6 +52,12 @@ struct RobotSpring {
   std::string label;        // names it in messages: "leg 2 link 1"
   Mat6 stiffness;           // dofs ux uy uz rx ry rz along `axes`: N/m, N/rad, N m/m, N m/rad
   Mat3 axes = Mat3::Identity();  // columns: the spring's x, y, z in base axes at home (orthonormal)
+  // A link's `fea:` spring (docs/robots.md): the FEA of a mesh whose axes are `axes` and whose
+  // reference point is the link's end; `stiffness` is NaN (refused by make_robot_model) until
+  // resolve_robot_fea_springs computes it.
+  std::optional<fea::LinkStiffnessRequest> fea;
+  std::string fea_where;  // "FILE:LINE: ITEM fea", for messages
+  int fea_entry = -1;     // the file's `fea:` entry: the same in a leg pattern's copies (computed once)
 };
 
 struct RobotJoint {
@@ -195,9 +203,18 @@ class RobotModel {
   int inverse_sign_ = 1, direct_sign_ = 1;
 };
 
+// Computes the links' `fea:` springs not yet computed (fea::compute_link_stiffness: meshing and FEA,
+// or the spring's cache), each file entry once (a pattern's copies share it: the turn moves the
+// axes, not the mesh). `progress` (optional) hears the long stages, `warning` (optional) what the
+// user must hear even when quiet ("FILE:LINE: ...: a rejected cache entry, recomputed"). A bad mesh
+// or region: kInvalidInput "FILE:LINE: ITEM fea: MESH: ...".
+Status resolve_robot_fea_springs(RobotDescription& d, const std::function<void(const std::string&)>& progress = {},
+                                 const std::function<void(const std::string&)>& warning = {});
+
 // Checks and builds: axes unit and non-zero, actuated joints as many as task coordinates, unknowns
 // as many as equations, the Jacobians of full rank at home (else the free or redundant motion is
-// named), a planar robot in its plane. kInvalidInput naming the description's source and item.
+// named), a planar robot in its plane, every spring computed (a `fea:` one not yet resolved is
+// refused naming its FILE:LINE). kInvalidInput naming the description's source and item.
 StatusOr<RobotModel> make_robot_model(RobotDescription d);
 
 // Task coordinate values of a tool pose (m, rad).

@@ -1,0 +1,199 @@
+// The `fea:` link springs of robot files (docs/robots.md, issue #19 item 1): a planar 3-RPR whose
+// links are the bar of meshes/bar.off, against the same robot with the links as `beam:` (within the
+// FEA-vs-beam tolerance of vjm_fea_spring_test) and with the FEA's 6x6 written in as a `matrix:`
+// (exact: the plumbing); an unresolved spring refused by make_robot_model, a missing mesh at read
+// time, both by FILE:LINE; the MSA's refusal of a full 6x6.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "kinestat/core/units.hpp"
+#include "kinestat/io/robot_yaml.hpp"
+#include "kinestat/mechanisms/robot_model.hpp"
+#include "kinestat/mechanisms/robot_msa.hpp"
+#include "kinestat/vjm/stiffness.hpp"
+
+namespace kinestat {
+namespace {
+
+using namespace mechanisms;
+namespace fs = std::filesystem;
+
+const fs::path kBar = fs::path(KINESTAT_SOURCE_DIR) / "meshes" / "bar.off";  // x 0-200, y +-10, z +-15 mm
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A 3-RPR whose links (base joint to platform joint) are 200 mm long, the bar's length; rigid
+// actuators, so that the platform's compliance is the links'. `spring` is the link's `beam:` or
+// `spring:` entry, on line 14.
+std::string robot(const std::string& spring) {
+  return "robot: 3-RPR of bars\n"
+         "units: mm-N-s\n"
+         "params: {px: 25, py: 43.30127, a: px + sqrt(200^2 - py^2)}\n"
+         "planar: true\n"
+         "task: [x, y, rz]\n"
+         "tool: [0, 0, 0]\n"
+         "materials: {steel: {E: 210000, nu: 0.3}}\n"
+         "sections: {bar: {type: rectangle, b: 20, h: 30}}\n"
+         "legs:\n"
+         "  - copies: 3\n"
+         "    chain:\n"
+         "      - revolute: {at: [a, 0, 0], axis: [0, 0, 1]}\n"
+         "      - prismatic: {at: [a, 0, 0], axis: [px - a, py, 0], actuated: true}\n"
+         "      - link: {to: [px, py, 0], length: 200, " + spring + "}\n"
+         "      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}\n";
+}
+constexpr int kLinkLine = 14;
+const std::string kFea = "spring: {fea: {mesh: bar.off, material: steel, clamp: x=0, reference: x=200, size: 6, "
+                         "cache: cache}}";
+
+StatusOr<RobotModel> build(const std::string& path, std::vector<std::string>* stages = nullptr) {
+  StatusOr<RobotDescription> d = io::read_robot_description(path);
+  if (!d.ok()) return d.status();
+  auto progress = [&](const std::string& s) {
+    if (stages) stages->push_back(s);
+  };
+  if (Status s = resolve_robot_fea_springs(*d, progress); !s.ok()) return s;
+  return make_robot_model(std::move(*d));
+}
+
+// The platform's 6x6 at home and at two other postures (translated, turned).
+std::vector<Mat6> stiffness_at_postures(const RobotModel& m) {
+  std::vector<Mat6> out;
+  RobotData data = make_robot_data(m);
+  for (const Vec3& t : {Vec3(0, 0, 0), Vec3(0.015, -0.01, 0), Vec3(-0.01, 0.005, 8 * units::kDeg)}) {
+    RobotPosture p = m.home();
+    const KinematicsResult k = solve_posture(m, t, p, data);
+    EXPECT_EQ(k.status, KinematicsStatus::kOk) << k.message;
+    StatusOr<CartesianStiffness> K = vjm::platform_unloaded_stiffness(robot_vjm_chains(m, p));
+    EXPECT_TRUE(K.ok()) << K.status().message();
+    out.push_back(K.ok() ? K->stiffness : Mat6::Zero());
+  }
+  return out;
+}
+
+const Mat6& link_stiffness(const RobotModel& m, int leg) {
+  for (const auto& item : m.description().legs[leg].items)
+    if (const auto* l = std::get_if<RobotLink>(&item)) return l->spring->stiffness;
+  ADD_FAILURE() << "no link";
+  static const Mat6 none = Mat6::Zero();
+  return none;
+}
+
+TEST(RobotFeaSpring, MatchesTheBeamRobotAndTheMatrixRobot) {
+  const fs::path dir = fresh_dir("robot_fea_spring");
+  fs::copy_file(kBar, dir / "bar.off");
+  std::ofstream(dir / "fea.yaml") << robot(kFea);
+  std::vector<std::string> stages;
+  StatusOr<RobotModel> fea = build((dir / "fea.yaml").string(), &stages);
+  ASSERT_TRUE(fea.ok()) << fea.status().message();
+  // The three copies share one entry of the file: one mesh, one solve, the same 6x6.
+  int meshings = 0;
+  for (const std::string& s : stages) meshings += s.find("meshing") != std::string::npos;
+  EXPECT_EQ(meshings, 1) << fmt::format("{}", fmt::join(stages, " | "));
+  const Mat6 K_link = link_stiffness(*fea, 0);
+  EXPECT_EQ(link_stiffness(*fea, 1), K_link);
+  EXPECT_EQ(link_stiffness(*fea, 2), K_link);
+
+  // The same robot with the links as Timoshenko beams of the bar's section and length: the FEA's
+  // diagonal is within 3 % of the beam's (vjm_fea_spring_test, docs/fea.md: 1.008 .. 1.023), and so
+  // is the platform's stiffness made of three of them.
+  std::ofstream(dir / "beam.yaml") << robot("beam: {material: steel, section: bar, theory: timoshenko}");
+  StatusOr<RobotModel> beam = io::read_robot_model((dir / "beam.yaml").string());
+  ASSERT_TRUE(beam.ok()) << beam.status().message();
+  const Mat6 K_beam_link = link_stiffness(*beam, 0);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(K_link(i, i) / K_beam_link(i, i), 1.0, 0.03) << "dof " << i;
+  const std::vector<Mat6> K_fea = stiffness_at_postures(*fea), K_beam = stiffness_at_postures(*beam);
+  for (std::size_t p = 0; p < K_fea.size(); ++p) {
+    // Measured: 1.008 (ux, uy, rz) .. 1.018 (uz); 0.8 % in the Frobenius norm.
+    for (int i = 0; i < 6; ++i) {
+      EXPECT_NEAR(K_fea[p](i, i) / K_beam[p](i, i), 1.0, 0.03) << "posture " << p << " dof " << i;
+      EXPECT_GT(K_fea[p](i, i), K_beam[p](i, i)) << "posture " << p << " dof " << i;  // the FEA's stiffening
+    }
+    EXPECT_LT((K_fea[p] - K_beam[p]).norm() / K_beam[p].norm(), 0.03) << "posture " << p;
+  }
+
+  // The FEA's 6x6 written as the links' `matrix:` (N/mm, N, N mm/rad): the same robot to round-off.
+  std::string rows;
+  for (int i = 0; i < 6; ++i) {
+    rows += i ? ", [" : "[";
+    for (int j = 0; j < 6; ++j) {
+      const double scale = (i < 3 && j < 3) ? 1e-3 : (i >= 3 && j >= 3) ? 1e3 : 1.0;
+      rows += fmt::format("{}{:.17g}", j ? ", " : "", K_link(i, j) * scale);
+    }
+    rows += "]";
+  }
+  std::ofstream(dir / "matrix.yaml") << robot("spring: {matrix: [" + rows + "]}");
+  StatusOr<RobotModel> matrix = io::read_robot_model((dir / "matrix.yaml").string());
+  ASSERT_TRUE(matrix.ok()) << matrix.status().message();
+  const std::vector<Mat6> K_matrix = stiffness_at_postures(*matrix);
+  for (std::size_t p = 0; p < K_fea.size(); ++p)
+    EXPECT_LT((K_fea[p] - K_matrix[p]).norm() / K_fea[p].norm(), 1e-12) << "posture " << p;
+
+  // A second read comes from the cache (no meshing) and gives the same robot.
+  stages.clear();
+  StatusOr<RobotModel> again = build((dir / "fea.yaml").string(), &stages);
+  ASSERT_TRUE(again.ok()) << again.status().message();
+  for (const std::string& s : stages) EXPECT_EQ(s.find("meshing"), std::string::npos) << s;
+  EXPECT_EQ(link_stiffness(*again, 0), K_link);
+
+  // The MSA's joints are diagonal: it refuses the full 6x6, naming the spring and the VJM.
+  StatusOr<msa::Structure> s = robot_msa_structure(*fea, fea->home());
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.status().message().find(fmt::format("{}:{}: leg 1 link 1 spring fea", (dir / "fea.yaml").string(),
+                                                  kLinkLine)),
+            std::string::npos)
+      << s.status().message();
+  EXPECT_NE(s.status().message().find("--method vjm"), std::string::npos) << s.status().message();
+}
+
+// Reading records the spring (NaN until resolved): make_robot_model refuses it by FILE:LINE and
+// says to resolve it; a missing mesh is refused at read time, by FILE:LINE.
+TEST(RobotFeaSpring, UnresolvedAndMissingMeshNamedByFileAndLine) {
+  const fs::path dir = fresh_dir("robot_fea_spring_errors");
+  const std::string path = (dir / "robot.yaml").string();
+  std::ofstream(path) << robot("spring: {fea: {mesh: " + kBar.string() + ", material: steel, clamp: x=0, "
+                               "reference: x=200, size: 20}}");
+  StatusOr<RobotDescription> d = io::read_robot_description(path);
+  ASSERT_TRUE(d.ok()) << d.status().message();
+  StatusOr<RobotModel> m = make_robot_model(*d);
+  ASSERT_FALSE(m.ok());
+  EXPECT_EQ(m.status().code(), StatusCode::kInvalidInput);
+  EXPECT_NE(m.status().message().find(fmt::format("{}:{}: leg 1 link 1 spring fea", path, kLinkLine)),
+            std::string::npos)
+      << m.status().message();
+  EXPECT_NE(m.status().message().find("resolve_robot_fea_springs"), std::string::npos) << m.status().message();
+  EXPECT_FALSE(io::read_robot_model(path).ok());  // the same through the io shortcut
+
+  std::ofstream(path, std::ios::trunc) << robot("spring: {fea: {mesh: missing.off, material: steel, clamp: x=0, "
+                                                "reference: x=200}}");
+  StatusOr<RobotDescription> missing = io::read_robot_description(path);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.status().message().find(fmt::format("{}:{}:", path, kLinkLine)), std::string::npos)
+      << missing.status().message();
+  EXPECT_NE(missing.status().message().find("missing.off: no such mesh file"), std::string::npos)
+      << missing.status().message();
+
+  // A joint's spring is not a mesh's.
+  std::string text = robot("beam: {material: steel, section: bar}");
+  text.replace(text.find("axis: [0, 0, 1]}"), 16,
+               "axis: [0, 0, 1], spring: {fea: {mesh: " + kBar.string() + ", material: steel, clamp: x=0, "
+               "reference: x=200}}}");
+  std::ofstream(path, std::ios::trunc) << text;
+  StatusOr<RobotDescription> joint = io::read_robot_description(path);
+  ASSERT_FALSE(joint.ok());
+  EXPECT_NE(joint.status().message().find("a link's"), std::string::npos) << joint.status().message();
+}
+
+}  // namespace
+}  // namespace kinestat
