@@ -1,4 +1,6 @@
-// kinestat modes FILE [--count N] [--lumped] [--vtk DIR] [--json FILE|-] [--quiet]
+// kinestat modes FILE [--units FORCE-LENGTH] [--count N] [--lumped] [--vtk DIR] [--json FILE|-] [--quiet]
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <ostream>
 
@@ -6,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/msa_output.hpp"
+#include "kinestat/io/frame3dd.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/structure_yaml.hpp"
 #include "kinestat/io/vtk_output.hpp"
@@ -15,6 +18,12 @@ namespace kinestat::cli {
 namespace {
 
 constexpr std::size_t kMaxPrintedNodes = 50;  // larger models: --json or --vtk
+
+bool is_frame3dd(const std::string& file) {
+  std::string ext = std::filesystem::path(file).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".3dd";
+}
 
 std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lumped) {
   std::string t = fmt::format("Natural frequencies (K phi = omega^2 M phi, {} beam masses, {} free dofs)\n",
@@ -51,35 +60,76 @@ std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lump
 
 void register_modes_command(CLI::App& app, Context& ctx) {
   struct Args {
-    std::string file, vtk_dir;
+    std::string file, vtk_dir, units;
     int count = 6;
     bool lumped = false;
     OutputOptions out;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
-      "modes", "natural frequencies and mode shapes of a YAML structure file (docs/stability-and-modes.md; materials "
-               "need a density); report, JSON and VTK in SI units");
-  cmd->add_option("file", args->file, "structure file (.yaml)")->required();
-  cmd->add_option("--count", args->count, "how many of the lowest frequencies (1 to 100, default 6)")
+      "modes", "natural frequencies and mode shapes of a YAML structure file or a Frame3DD .3dd file (with --units; "
+               "docs/stability-and-modes.md; materials need a density); report, JSON and VTK in SI units");
+  cmd->add_option("file", args->file, "structure file (.yaml) or Frame3DD input file (.3dd)")->required();
+  cmd->add_option("--units", args->units,
+                  "FORCE-LENGTH of a .3dd file, which states none (required there, refused for YAML): force N, kN, "
+                  "lbf or kip, length m, mm, cm, in or ft, e.g. kip-in or N-mm");
+  cmd->add_option("--count", args->count,
+                  "how many of the lowest frequencies (1 to 100, default 6, or a .3dd file's number of modes)")
       ->check(CLI::Range(1, 100));
-  cmd->add_flag("--lumped", args->lumped, "lumped beam masses instead of consistent ones");
+  cmd->add_flag("--lumped", args->lumped, "lumped beam masses instead of consistent ones (a .3dd file's lumped flag 1 "
+                                          "asks for them too)");
   cmd->add_option("--vtk", args->vtk_dir, "write ParaView files (.vtu per mode + .pvd) into this folder");
   add_output_options(*cmd, args->out, "kinestat-modes-results");
-  cmd->callback([args, &ctx] {
-    auto s = io::read_structure_yaml(args->file);
-    if (!s.ok()) {
-      ctx.exit_code = report_failure(ctx, "modes", s.status());
-      return;
+  cmd->callback([args, cmd, &ctx] {
+    auto fail = [&](const Status& st) { ctx.exit_code = report_failure(ctx, "modes", st); };
+    StatusOr<msa::Structure> s = Status::Invalid("");
+    std::vector<std::string> notes;
+    if (is_frame3dd(args->file)) {
+      if (args->units.empty())
+        return fail(Status::Invalid(args->file + ": a .3dd file states no units; give them with --units FORCE-LENGTH, "
+                                                 "e.g. --units kip-in or --units N-mm"));
+      const StatusOr<io::FileUnits> units = io::units_from_name(args->units, "--units");
+      if (!units.ok()) return fail(units.status());
+      io::Frame3ddAnalysis analysis;
+      s = io::read_frame3dd(args->file, *units, &notes, &analysis);
+      if (!s.ok()) return fail(s.status());
+      // The file's modal data: its number of modes and mass matrix unless the options say otherwise.
+      if (analysis.modes > 0 && cmd->count("--count") == 0) {
+        if (analysis.modes > 100)
+          return fail(Status::Invalid(fmt::format("{}: {} dynamic modes: kinestat modes computes 1 to 100; write "
+                                                  "fewer there, or give --count",
+                                                  analysis.modes_source, analysis.modes)));
+        args->count = analysis.modes;
+      }
+      if (analysis.lumped && !args->lumped) {
+        args->lumped = true;
+        notes.push_back(analysis.lumped_source + ": lumped mass flag 1: kinestat's lumped beam masses (no rotary "
+                                                 "inertia of the bending rotations, unlike Frame3DD's)");
+      }
+      // Frame3DD's modal analysis takes the stiffness its static analysis leaves, which with this flag
+      // holds the geometric stiffness of the last load case: its frequencies are the prestressed ones.
+      if (analysis.geometric_stiffness)
+        notes.push_back(analysis.geometric_stiffness_source +
+                        ": geometric stiffness flag 1: kinestat modes gives the unstressed structure's frequencies; "
+                        "Frame3DD's are those of the structure prestressed by its last load case "
+                        "(docs/stability-and-modes.md)");
+      if (analysis.modes == 0)
+        notes.push_back(analysis.modes_source + ": 0 dynamic modes and no modal data: beam masses from the densities, "
+                                                "count from --count");
+    } else {
+      if (!args->units.empty())
+        return fail(Status::Invalid("--units is for Frame3DD .3dd files; a YAML structure file states its units in "
+                                    "its 'units:' key (docs/structure-format.md); remove --units"));
+      s = io::read_structure_yaml(args->file);
+      if (!s.ok()) return fail(s.status());
     }
+    if (!args->out.quiet)
+      for (const std::string& note : notes) ctx.err << "kinestat modes: note: " << note << "\n";
     msa::ModalOptions opt;
     opt.count = args->count;
     opt.lumped = args->lumped;
     const msa::ModalResult r = msa::modal_analysis(*s, opt);
-    if (!r.status.ok()) {
-      ctx.exit_code = report_failure(ctx, "modes", r.status);
-      return;
-    }
+    if (!r.status.ok()) return fail(r.status);
     std::vector<io::VtkModeShape> modes;
     for (std::size_t k = 0; k < r.modes.size(); ++k)
       modes.push_back({fmt::format("mode {}: f = {:.6g} Hz", k + 1, r.modes[k].frequency), r.modes[k].shape});

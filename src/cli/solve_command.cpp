@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "cli/msa_output.hpp"
 #include "kinestat/io/frame3dd.hpp"
@@ -74,6 +75,10 @@ void register_solve_command(CLI::App& app, Context& ctx) {
       }
       io::Frame3ddAnalysis analysis;
       s = io::read_frame3dd(args->file, *units, &notes, &analysis);
+      if (s.ok() && analysis.modes > 0)
+        notes.push_back(fmt::format("{}: {} dynamic modes asked for: kinestat solve is static and computes none; "
+                                    "kinestat modes computes them with the file's modal data",
+                                    analysis.modes_source, analysis.modes));
       // Frame3DD's geometric stiffness flag asks for its second-order analysis: honoured, said.
       if (s.ok() && analysis.geometric_stiffness && !args->second_order) {
         args->second_order = true;

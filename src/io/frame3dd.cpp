@@ -81,10 +81,9 @@ class Reader {
                        "cases at line {}",
                        cases_line));
     const auto [modes, modes_line] = count("number of dynamic modes", {"static load cases", cases_line});
-    if (modes > 0 && notes)
-      notes->push_back(fmt::format("{}:{}: {} dynamic modes asked for: kinestat solve is static and computes none; the "
-                                   "modal data after this line is not read",
-                                   file_, modes_line, modes));
+    analysis_.modes = modes;
+    analysis_.modes_source = source(modes_line);
+    if (modes > 0) read_modal_data(modes_line, notes);
     return std::move(s_);
   }
 
@@ -320,6 +319,95 @@ class Reader {
       b.source = source(e.line);
       s_.add_beam(b);
       lengths_[id] = s_.beam_length(s_.beams().back());
+    }
+  }
+
+  // Frame3DD's modal data after a mode count > 0: method, lumped flag, tolerance, shift and
+  // exaggeration; the nodes with extra mass and inertia; the elements with extra mass; the modes to
+  // animate and the pan rate (plot settings); optionally the matrix condensation method and its data.
+  void read_modal_data(int modes_line, std::vector<std::string>* notes) {
+    const Block modes_block{"dynamic modes", modes_line,
+                            "after a number of dynamic modes > 0 come the modal data: method, lumped mass flag, "
+                            "tolerance, shift, exaggeration, the nodes with extra inertia, the elements with extra "
+                            "mass, the modes to animate and the pan rate (write 0 modes to give none)"};
+    const Line& m = next("modal analysis method", 1, "1 (subspace Jacobi) or 2 (Stodola)", modes_block);
+    analysis_.method = integer(m.tokens[0], m.number, "modal analysis method");
+    if (analysis_.method != 1 && analysis_.method != 2)
+      fail(m.number, "modal analysis method",
+           fmt::format("{} is not a method; write 1 (subspace Jacobi) or 2 (Stodola)", analysis_.method));
+    const Line& lump = next("lumped mass flag", 1, "0 (consistent masses) or 1 (lumped masses)", modes_block);
+    analysis_.lumped = flag(lump.tokens[0], lump.number, "lumped mass flag") == 1;
+    analysis_.lumped_source = source(lump.number);
+    const Line& tol = next("mode shape tolerance", 1, "one number > 0, the convergence tolerance", modes_block);
+    analysis_.tolerance = real(tol.tokens[0], tol.number, "mode shape tolerance");
+    if (!(analysis_.tolerance > 0.0))
+      fail(tol.number, "mode shape tolerance",
+           fmt::format("{:g} is not a tolerance; write a number > 0 such as 1e-9", analysis_.tolerance));
+    const Line& sh = next("frequency shift", 1, "one number, the shift (0 for a supported structure)", modes_block);
+    analysis_.shift = real(sh.tokens[0], sh.number, "frequency shift");  // 1/s^2 in any units
+    const Line& ex = next("exaggeration of mode shapes", 1, "one number, the exaggeration of mode shapes", modes_block);
+    real(ex.tokens[0], ex.number, "exaggeration of mode shapes");
+
+    // Extra node masses: n M Ixx Iyy Izz, the inertias about global axes (Frame3DD adds them to the
+    // diagonal of its mass matrix, as kinestat's nodal masses are).
+    auto [n, line] = count("number of nodes with extra inertia", modes_block);
+    Block block{"nodes with extra inertia", line};
+    for (int i = 0; i < n; ++i) {
+      const Line& l = next("extra node inertia", 5, "n M Ixx Iyy Izz", block);
+      const int node = index(l.tokens[0], l.number, "extra node inertia", nodes_, "node");
+      const std::string item = fmt::format("extra inertia of node {}", node);
+      msa::NodalMass nm;
+      nm.node = node - 1;
+      nm.source = source(l.number);
+      nm.mass = value(l.tokens[1], l.number, item + " M", Quantity::kMass, Sign::kNonNegative);
+      static constexpr std::array<const char*, 3> kKeys = {"Ixx", "Iyy", "Izz"};
+      for (int d = 0; d < 3; ++d)
+        nm.inertia[d] = value(l.tokens[static_cast<std::size_t>(2 + d)], l.number,
+                              fmt::format("{} {}", item, kKeys[static_cast<std::size_t>(d)]), Quantity::kMassInertia,
+                              Sign::kNonNegative);
+      s_.add_mass(nm);
+    }
+
+    // Extra element masses: e mass. Frame3DD adds half of it to each end node's translations (its
+    // consistent_M and lumped_M, "rotatory inertia of extra mass is neglected"): two nodal masses.
+    std::tie(n, line) = count("number of frame elements with extra mass", block);
+    block = {"frame elements with extra mass", line};
+    for (int i = 0; i < n; ++i) {
+      const Line& l = next("extra element mass", 2, "e mass", block);
+      const int e = element(l, "extra element mass");
+      const double mass =
+          value(l.tokens[1], l.number, fmt::format("extra mass of element {}", e), Quantity::kMass, Sign::kNonNegative);
+      if (mass == 0.0) continue;
+      const ElementRecord& r = elements_.at(e);
+      for (const int node : {r.n1, r.n2}) s_.add_mass({node - 1, mass / 2.0, Vec3::Zero(), source(l.number)});
+    }
+
+    // Plot settings: the modes to animate (their list omitted when there are none), the pan rate.
+    std::tie(n, line) = count("number of modes to animate", block);
+    block = {"modes to animate", line};
+    if (n > 0) {
+      const Line& l = next("modes to animate", static_cast<std::size_t>(n), fmt::format("{} mode numbers", n), block);
+      for (const std::string& t : l.tokens) integer(t, l.number, "modes to animate");
+    }
+    const Line& pan = next("pan rate", 1, "one number, the pan rate of the animation", block);
+    real(pan.tokens[0], pan.number, "pan rate");
+
+    // Matrix condensation (optional, newer Frame3DD files): its method; a condensed model is not
+    // computed, so the data after a method > 0 is not read.
+    if (pos_ >= lines_.size()) return;
+    const Line& c = next("matrix condensation method", 1, "0 (none), 1 (static), 2 (Guyan) or 3 (dynamic)", {});
+    analysis_.condensation = integer(c.tokens[0], c.number, "matrix condensation method");
+    if (analysis_.condensation < 0 || analysis_.condensation > 3)
+      fail(c.number, "matrix condensation method",
+           fmt::format("{} is not a method; write 0 (none), 1 (static), 2 (Guyan) or 3 (dynamic)",
+                       analysis_.condensation));
+    if (analysis_.condensation > 0) {
+      if (notes)
+        notes->push_back(fmt::format("{}:{}: matrix condensation method {} asked for: kinestat computes no condensed "
+                                     "model (the modes are those of the full model); the condensation data after this "
+                                     "line is not read",
+                                     file_, c.number, analysis_.condensation));
+      pos_ = lines_.size();
     }
   }
 

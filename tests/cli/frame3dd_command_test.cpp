@@ -27,7 +27,8 @@ std::string write_temp(const std::string& name, const std::string& text) {
   return path.string();
 }
 
-// A 100 in cantilever, E I = 29000 ksi x 100 in^4, 1 kip down at the tip, in kip and inch.
+// A 100 in cantilever, E I = 29000 ksi x 100 in^4, 1 kip down at the tip, in kip and inch; massless
+// (density 0) with 0.01 kip s^2/in at the tip in its modal data.
 constexpr const char* kCantilever = R"(cantilever in kip and inch
 2   # nodes
 1  0 0 0  0
@@ -51,6 +52,16 @@ constexpr const char* kCantilever = R"(cantilever in kip and inch
 0   # temperature loads
 0   # prescribed displacements
 2   # dynamic modes
+1   # subspace Jacobi
+0   # consistent masses
+1e-9  # tolerance
+0   # shift
+1   # exaggeration
+1   # nodes with extra inertia
+2  0.01  0 0 0
+0   # elements with extra mass
+0   # modes to animate
+1   # pan rate
 )";
 
 TEST(SolveFrame3dd, ReadsWithUnitsAndReportsSi) {
@@ -68,6 +79,33 @@ TEST(SolveFrame3dd, ReadsWithUnitsAndReportsSi) {
   EXPECT_NEAR(tip.at("translation").at(2).get<double>(), expected, 1e-12 * std::abs(expected));
   // The rotation P L^2 / (2 E I) rad, the same in any units: 1e4 / (2 x 29000 x 100).
   EXPECT_NEAR(tip.at("rotation").at(1).get<double>(), 1e4 / (2.0 * 29000.0 * 100.0), 1e-15);
+}
+
+// kinestat modes FILE.3dd: the file's number of modes and its extra node mass. The massless
+// cantilever with a tip mass m vibrates at sqrt(3 E I / (m L^3)) = sqrt(3 x 29000 x 100 / (0.01 x
+// 100^3)) = sqrt(870) rad/s in both bending planes (Iy = Iz), in any units; round-off of a 6-dof
+// eigenproblem, 1e-10 relative (Modes.TipMassOnMasslessCantilever).
+TEST(ModesFrame3dd, ModalDataGivesTheCountAndTheTipMass) {
+  const std::string file = write_temp("tipmass.3dd", kCantilever);
+  CliRun r = run_cli({"modes", file, "--units", "kip-in", "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("mass_matrix"), "consistent");
+  ASSERT_EQ(j.at("modes").size(), 2u);  // the file's 2 modes
+  const double omega = std::sqrt(870.0);
+  for (const auto& mode : j.at("modes")) EXPECT_NEAR(mode.at("omega").get<double>(), omega, 1e-10 * omega);
+  // 0.01 kip s^2/in in kg: 4448.2216 N / 0.0254 m x 0.01.
+  EXPECT_NEAR(j.at("total_mass")[1].get<double>(), 0.01 * 4448.2216152605 / 0.0254, 1e-9);
+  // --count overrides the file's count; --units is required as for solve.
+  r = run_cli({"modes", file, "--units", "kip-in", "--count", "1", "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("modes").size(), 1u);
+  r = run_cli({"modes", file});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "states no units; give them with --units");
+  r = run_cli({"modes", kModels + "euler_column.yaml", "--units", "N-m"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "--units is for Frame3DD .3dd files");
 }
 
 TEST(SolveFrame3dd, UnitsRequiredForFrame3ddAndRefusedForYaml) {
@@ -127,6 +165,16 @@ std::string with_flag(int flag) {
 double top_sway(const std::string& json_text) {
   const nlohmann::json j = nlohmann::json::parse(json_text);
   return j.at("load_cases")[0].at("displacements")[4].at("translation")[0].get<double>();
+}
+
+// kinestat modes says that it ignores the flag (Frame3DD's frequencies would be prestressed), and
+// refuses the massless column (density 0, no modal data) as for YAML.
+TEST(ModesFrame3dd, GeometricStiffnessFlagIsSaidNotUsed) {
+  const CliRun r = run_cli({"modes", write_temp("modes_pdelta.3dd", with_flag(1)), "--units", "N-mm"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "modes_pdelta.3dd:16: geometric stiffness flag 1: kinestat modes gives the unstressed");
+  expect_contains(r.err, "modes_pdelta.3dd:29: 0 dynamic modes and no modal data");
+  expect_contains(r.err, "has no density");
 }
 
 TEST(SolveFrame3dd, GeometricStiffnessFlagGivesTheSecondOrderSolve) {

@@ -19,6 +19,22 @@ struct Frame3ddAnalysis {
   // honours with msa::solve_second_order (docs/structure-format.md, "Frame3DD files").
   bool geometric_stiffness = false;
   std::string geometric_stiffness_source;  // "FILE:LINE" of the flag
+
+  // The modal data that ends the file (Frame3DD's dynamic modes), for `kinestat modes`. The extra
+  // node masses and inertias are in the Structure (its nodal masses), and so are the extra element
+  // masses, as Frame3DD treats them: half on each end node's translations.
+  int modes = 0;                  // the number of desired dynamic modes (0: no modal data)
+  std::string modes_source;       // "FILE:LINE" of the count
+  bool lumped = false;            // the lumped mass flag is 1 (0: consistent masses)
+  std::string lumped_source;      // "FILE:LINE" of the flag
+  // Read and checked, not used by kinestat's eigensolver (docs/stability-and-modes.md): Frame3DD's
+  // method (1 subspace Jacobi, 2 Stodola), its convergence tolerance, its shift (1/s^2, for
+  // unrestrained structures), and its matrix condensation method (0 none, 1 static, 2 Guyan,
+  // 3 dynamic; the condensation data after it is not read).
+  int method = 1;
+  double tolerance = 0.0;
+  double shift = 0.0;
+  int condensation = 0;
 };
 
 // Parses and validates a .3dd file whose numbers are in `units` (force and length; time in s, so
@@ -26,8 +42,8 @@ struct Frame3ddAnalysis {
 // the expansion coefficient in the file's own degrees). Any problem, or anything kinestat cannot
 // solve as written (node radii), gives kInvalidInput "FILE:LINE: ITEM: what is
 // wrong; what to do". `notes` (when given) receives "FILE:LINE: ..." remarks on what was read but is
-// not used by a static solve (dynamic modes); `analysis` (when given) what the file asks of the
-// analysis (the geometric stiffness flag).
+// used by no kinestat analysis (Frame3DD's matrix condensation); `analysis` (when given) what the
+// file asks of the analysis (the geometric stiffness flag, the modal data).
 StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units,
                                        std::vector<std::string>* notes = nullptr,
                                        Frame3ddAnalysis* analysis = nullptr);
