@@ -19,12 +19,6 @@ namespace {
 
 constexpr std::size_t kMaxPrintedNodes = 50;  // larger models: --json or --vtk
 
-bool is_frame3dd(const std::string& file) {
-  std::string ext = std::filesystem::path(file).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".3dd";
-}
-
 std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lumped) {
   std::string t = fmt::format("Natural frequencies (K phi = omega^2 M phi, {} beam masses, {} free dofs)\n",
                               lumped ? "lumped" : "consistent", r.num_free_dofs);
@@ -84,7 +78,7 @@ void register_modes_command(CLI::App& app, Context& ctx) {
     auto fail = [&](const Status& st) { ctx.exit_code = report_failure(ctx, "modes", st); };
     StatusOr<msa::Structure> s = Status::Invalid("");
     std::vector<std::string> notes;
-    if (is_frame3dd(args->file)) {
+    if (io::is_frame3dd_file(args->file)) {
       if (args->units.empty())
         return fail(Status::Invalid(args->file + ": a .3dd file states no units; give them with --units FORCE-LENGTH, "
                                                  "e.g. --units kip-in or --units N-mm"));

@@ -13,16 +13,6 @@
 #include "kinestat/io/structure_yaml.hpp"
 
 namespace kinestat::cli {
-namespace {
-
-bool is_frame3dd(const std::string& file) {
-  std::string ext = std::filesystem::path(file).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".3dd";
-}
-
-}  // namespace
-
 void register_solve_command(CLI::App& app, Context& ctx) {
   struct Args {
     std::string file;
@@ -57,7 +47,7 @@ void register_solve_command(CLI::App& app, Context& ctx) {
                   "stations along every beam, with their extremes (2 to 10000)")
       ->check(CLI::Range(2, 10000));
   cmd->callback([args, cmd, &ctx] {
-    const bool frame3dd = is_frame3dd(args->file);
+    const bool frame3dd = io::is_frame3dd_file(args->file);
     StatusOr<msa::Structure> s = Status::Invalid("");
     std::vector<std::string> notes;
     if (frame3dd) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -629,6 +630,12 @@ StatusOr<msa::Structure> read_frame3dd_string(const std::string& text, const std
   } catch (const Frame3ddError& e) {
     return Status::Invalid(e.message);
   }
+}
+
+bool is_frame3dd_file(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".3dd";
 }
 
 StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units,

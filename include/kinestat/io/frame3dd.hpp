@@ -44,6 +44,9 @@ struct Frame3ddAnalysis {
 // wrong; what to do". `notes` (when given) receives "FILE:LINE: ..." remarks on what was read but is
 // used by no kinestat analysis (Frame3DD's matrix condensation); `analysis` (when given) what the
 // file asks of the analysis (the geometric stiffness flag, the modal data).
+// True for a Frame3DD input file by its extension, .3dd in any case (the commands' choice of reader).
+bool is_frame3dd_file(const std::string& path);
+
 StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units,
                                        std::vector<std::string>* notes = nullptr,
                                        Frame3ddAnalysis* analysis = nullptr);
