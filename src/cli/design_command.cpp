@@ -203,6 +203,23 @@ struct FiveBarDesignArgs {
 constexpr const char* kFiveBarCommand = "design fivebar";
 constexpr int kPostureSideDefault = 100;  // region points along its longer side without --step
 
+// A sweep's JSON with its timing: on stdout for "-" (nothing else goes there), else into `path`,
+// added to `written`.
+Status write_sweep_json(nlohmann::json j, const std::string& path, double seconds, std::size_t postures, int threads,
+                        Context& ctx, std::vector<std::string>& written) {
+  j["timing"] = {{"seconds", seconds},
+                 {"postures", postures},
+                 {"postures_per_second", static_cast<double>(postures) / seconds},
+                 {"threads", threads == 0 ? "all cores" : std::to_string(threads)}};
+  if (path == "-") {
+    ctx.out << j.dump() << "\n";
+    return Status::Ok();
+  }
+  if (Status s = io::write_json(path, j); !s.ok()) return s;
+  written.push_back(path);
+  return Status::Ok();
+}
+
 std::string mm_range(const mechanisms::MapRange& r) {
   return r.lo == r.hi ? fmt::format("{:g} mm", r.lo / kMm) : fmt::format("{:g}:{:g} mm", r.lo / kMm, r.hi / kMm);
 }
@@ -300,19 +317,10 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
     written.push_back(a.png);
   }
   const bool json_to_stdout = a.json == "-";
-  if (!a.json.empty()) {
-    nlohmann::json j = io::design_sweep_to_json(*sweep);
-    j["timing"] = {{"seconds", seconds},
-                   {"postures", postures},
-                   {"postures_per_second", postures / seconds},
-                   {"threads", a.threads == 0 ? "all cores" : std::to_string(a.threads)}};
-    if (json_to_stdout) {
-      ctx.out << j.dump() << "\n";
-    } else {
-      if (Status s = io::write_json(a.json, j); !s.ok()) return fail(s);
-      written.push_back(a.json);
-    }
-  }
+  if (!a.json.empty())
+    if (Status s = write_sweep_json(io::design_sweep_to_json(*sweep), a.json, seconds, postures, a.threads, ctx, written);
+        !s.ok())
+      return fail(s);
   if (json_to_stdout) return kExitOk;
 
   auto& out = ctx.out;
@@ -523,30 +531,12 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
       return fail(Status::Invalid(fmt::format("{} commands no {}: give a single value for it in --box (e.g. {}0)",
                                               d.name, "xyz"[i], i == 0 ? "" : i == 1 ? "x0:x1," : "x0:x1,y0:y1,")));
   }
-  if (!a.load.empty()) {
-    auto load = parse_displacement_option(a.load, "--load");
-    if (!load.ok()) return fail(load.status());
-    o.kernel.displacement = *load;
-  } else if (!a.wrench.empty()) {
-    auto wrench = parse_wrench_option(a.wrench, "--wrench");
-    if (!wrench.ok()) return fail(wrench.status());
-    o.kernel.wrench = *wrench;
-  }
+  if (Status st = parse_load_options(a.load, a.wrench, o.kernel.displacement, o.kernel.wrench); !st.ok())
+    return fail(st);
   if (!a.orientation.empty()) {
-    if (a.orientation.size() != 3) return fail(Status::Invalid("--orientation takes three angles rx,ry,rz (deg)"));
     o.kernel.task = VecX::Zero(static_cast<int>(d.task.size()));  // positions: the grid's; angles: these
-    bool any = false;
-    for (std::size_t t = 0; t < d.task.size(); ++t)
-      if (d.task[t] >= TaskCoordinate::kRx) {
-        const double deg = a.orientation[static_cast<std::size_t>(d.task[t]) - 3];
-        if (!std::isfinite(deg)) return fail(Status::Invalid("--orientation: an angle is not finite"));
-        o.kernel.task(static_cast<int>(t)) = deg * units::kDeg;
-        any = true;
-      }
-    if (!any)
-      return fail(Status::Invalid(fmt::format("--orientation: {} commands no orientation (its task has no rx, ry or "
-                                              "rz)",
-                                              d.name)));
+    if (Status st = set_robot_task_values(d, a.orientation, 3, "--orientation", o.kernel.task); !st.ok())
+      return fail(st);
   }
   const std::size_t max_points = MapOptions{}.max_points;
   double points = 1.0;
@@ -618,19 +608,11 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
     written.push_back(a.vti);
   }
   const bool json_to_stdout = a.json == "-";
-  if (!a.json.empty()) {
-    nlohmann::json j = io::robot_design_sweep_to_json(s, a.target, units);
-    j["timing"] = {{"seconds", seconds},
-                   {"postures", postures},
-                   {"postures_per_second", postures / seconds},
-                   {"threads", a.threads == 0 ? "all cores" : std::to_string(a.threads)}};
-    if (json_to_stdout) {
-      ctx.out << j.dump() << "\n";
-    } else {
-      if (Status st = io::write_json(a.json, j); !st.ok()) return fail(st);
-      written.push_back(a.json);
-    }
-  }
+  if (!a.json.empty())
+    if (Status st = write_sweep_json(io::robot_design_sweep_to_json(s, a.target, units), a.json, seconds, postures,
+                                     a.threads, ctx, written);
+        !st.ok())
+      return fail(st);
   if (json_to_stdout) return kExitOk;
 
   auto& out = ctx.out;

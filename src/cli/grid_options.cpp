@@ -56,6 +56,45 @@ StatusOr<Vec3> parse_point_option(const std::vector<double>& v, const char* opti
   return vector_option<3>(v, option, "x,y,z (mm)", {kMillimetre, kMillimetre, kMillimetre});
 }
 
+Status parse_load_options(const std::vector<double>& load, const std::vector<double>& wrench,
+                          std::optional<Vec6>& displacement, std::optional<Vec6>& wrench_si) {
+  if (!load.empty()) {
+    auto d = parse_displacement_option(load, "--load");
+    if (!d.ok()) return d.status();
+    displacement = *d;
+  } else if (!wrench.empty()) {
+    auto w = parse_wrench_option(wrench, "--wrench");
+    if (!w.ok()) return w.status();
+    wrench_si = *w;
+  }
+  return Status::Ok();
+}
+
+std::string task_text(const mechanisms::RobotDescription& d) {
+  std::string out;
+  for (mechanisms::TaskCoordinate c : d.task) out += fmt::format("{}{}", out.empty() ? "" : ", ", to_string(c));
+  return "[" + out + "]";
+}
+
+Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::vector<double>& values, int first,
+                             const char* option, VecX& task) {
+  if (values.empty()) return Status::Ok();
+  if (values.size() != 3) return Status::Invalid(fmt::format("{} takes three values", option));
+  const double scale = first == 3 ? units::kDeg : units::kMm;
+  bool any = false;
+  for (std::size_t t = 0; t < d.task.size(); ++t) {
+    const int c = static_cast<int>(d.task[t]) - first;
+    if (c < 0 || c > 2) continue;
+    if (!std::isfinite(values[c])) return Status::Invalid(fmt::format("{}: a value is not finite", option));
+    task(static_cast<int>(t)) = values[c] * scale;
+    any = true;
+  }
+  if (!any)
+    return Status::Invalid(fmt::format("{}: {} commands no {} (its task is {})", option, d.name,
+                                       first == 3 ? "orientation" : "position", task_text(d)));
+  return Status::Ok();
+}
+
 std::optional<double> parse_number(const std::string& s) {
   double v = 0.0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);

@@ -11,6 +11,7 @@
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
+#include "kinestat/mechanisms/robot_model.hpp"
 #include "kinestat/mechanisms/workspace_map.hpp"
 
 namespace kinestat::cli {
@@ -32,6 +33,21 @@ StatusOr<std::vector<mechanisms::MapRange>> parse_ranges_mm(const std::vector<st
 StatusOr<Vec6> parse_wrench_option(const std::vector<double>& v, const char* option);
 StatusOr<Vec6> parse_displacement_option(const std::vector<double>& v, const char* option);
 StatusOr<Vec3> parse_point_option(const std::vector<double>& v, const char* option);
+
+// The loaded mode of map and design: --load (a prescribed displacement) into `displacement`, else
+// --wrench into `wrench`; neither set when both are empty.
+Status parse_load_options(const std::vector<double>& load, const std::vector<double>& wrench,
+                          std::optional<Vec6>& displacement, std::optional<Vec6>& wrench_si);
+
+// A robot's task coordinates for messages: "[z, rx, ry]".
+std::string task_text(const mechanisms::RobotDescription& d);
+
+// Three values of `option` into a robot's task vector: with `first` 0 its x, y, z (mm), with 3 its
+// rx, ry, rz (deg); the others it does not command are ignored. Nothing to do for no values;
+// kInvalidInput naming the option when there are not three, one is not finite, or the task commands
+// none of them.
+Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::vector<double>& values, int first,
+                             const char* option, VecX& task);
 
 // --mode ++|+-|-+|--, --assembly up|down, --method msa|vjm into `o`.
 Status parse_five_bar_modes(const std::string& mode, const std::string& assembly, const std::string& method,

@@ -76,20 +76,6 @@ Status refuse_if_given(const CLI::Option* o, const std::string& why) {
   return Status::Ok();
 }
 
-// The loaded mode of --load (a displacement) or --wrench, shared by model and robot files.
-Status parse_load(const MapArgs& a, std::optional<Vec6>& displacement, std::optional<Vec6>& wrench) {
-  if (!a.load.empty()) {
-    auto d = parse_displacement_option(a.load, "--load");
-    if (!d.ok()) return d.status();
-    displacement = *d;
-  } else if (!a.wrench.empty()) {
-    auto w = parse_wrench_option(a.wrench, "--wrench");
-    if (!w.ok()) return w.status();
-    wrench = *w;
-  }
-  return Status::Ok();
-}
-
 StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
   for (const CLI::Option* o : {a.box_opt, a.wrench_opt, a.orientation_opt, a.angles_opt, a.position_opt,
                                a.angle_step_opt})
@@ -144,7 +130,7 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   if (!r.ok()) return r.status();
   s.ranges = {(*r)[0], (*r)[1], (*r)[2]};
   OrthoglideKernelOptions o;
-  if (Status st = parse_load(a, o.displacement, o.wrench); !st.ok()) return st;
+  if (Status st = parse_load_options(a.load, a.wrench, o.displacement, o.wrench); !st.ok()) return st;
   s.with_load = o.displacement || o.wrench;
   // Read after the options, so that a bad option is reported first (reading meshes nothing: `fea:`
   // springs are computed by io::resolve_fea_springs, which the Orthoglide kernel does not call).
@@ -163,13 +149,6 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   return s;
 }
 
-// "[z, rx, ry]"
-std::string task_text(const RobotDescription& d) {
-  std::string out;
-  for (TaskCoordinate c : d.task) out += fmt::format("{}{}", out.empty() ? "" : ", ", to_string(c));
-  return "[" + out + "]";
-}
-
 // A robot file (docs/robots.md): the box from --box or the file's `workspace:`, the orientation
 // task coordinates from --orientation.
 StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
@@ -185,7 +164,7 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
       return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", a.method));
     o.method = a.method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
   }
-  if (Status st = parse_load(a, o.displacement, o.wrench); !st.ok()) return st;
+  if (Status st = parse_load_options(a.load, a.wrench, o.displacement, o.wrench); !st.ok()) return st;
   auto model = load_robot_model(ctx, "map", a.target, a.quiet);
   if (!model.ok()) return model.status();
   auto shared = std::make_shared<const RobotModel>(std::move(*model));
@@ -193,24 +172,8 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
   o.model = shared;
   o.task = shared->home_task();
   // Fixed task values: the orientation (deg) and the position (mm) of the coordinates not mapped.
-  auto set_fixed = [&](const std::vector<double>& values, int first, double scale, const char* option) -> Status {
-    if (values.empty()) return Status::Ok();
-    if (values.size() != 3) return Status::Invalid(fmt::format("{} takes three values", option));
-    bool any = false;
-    for (std::size_t t = 0; t < d.task.size(); ++t) {
-      const int c = static_cast<int>(d.task[t]) - first;
-      if (c < 0 || c > 2) continue;
-      if (!std::isfinite(values[c])) return Status::Invalid(fmt::format("{}: a value is not finite", option));
-      o.task(static_cast<int>(t)) = values[c] * scale;
-      any = true;
-    }
-    if (!any)
-      return Status::Invalid(fmt::format("{}: {} commands no {} (its task is {})", option, d.name,
-                                         first == 3 ? "orientation" : "position", task_text(d)));
-    return Status::Ok();
-  };
-  if (Status st = set_fixed(a.orientation, 3, kDeg, "--orientation"); !st.ok()) return st;
-  if (Status st = set_fixed(a.position, 0, kMm, "--position"); !st.ok()) return st;
+  if (Status st = set_robot_task_values(d, a.orientation, 3, "--orientation", o.task); !st.ok()) return st;
+  if (Status st = set_robot_task_values(d, a.position, 0, "--position", o.task); !st.ok()) return st;
   MapSetup s;
   s.angular = !a.angles.empty() || (a.box.empty() && d.workspace && d.workspace_angular);
   if (s.angular && !a.orientation.empty())

@@ -76,17 +76,11 @@ void register_modes_command(CLI::App& app, Context& ctx) {
   add_output_options(*cmd, args->out, "kinestat-modes-results");
   cmd->callback([args, cmd, &ctx] {
     auto fail = [&](const Status& st) { ctx.exit_code = report_failure(ctx, "modes", st); };
-    StatusOr<msa::Structure> s = Status::Invalid("");
     std::vector<std::string> notes;
+    io::Frame3ddAnalysis analysis;
+    const StatusOr<msa::Structure> s = read_structure_file(args->file, args->units, notes, analysis);
+    if (!s.ok()) return fail(s.status());
     if (io::is_frame3dd_file(args->file)) {
-      if (args->units.empty())
-        return fail(Status::Invalid(args->file + ": a .3dd file states no units; give them with --units FORCE-LENGTH, "
-                                                 "e.g. --units kip-in or --units N-mm"));
-      const StatusOr<io::FileUnits> units = io::units_from_name(args->units, "--units");
-      if (!units.ok()) return fail(units.status());
-      io::Frame3ddAnalysis analysis;
-      s = io::read_frame3dd(args->file, *units, &notes, &analysis);
-      if (!s.ok()) return fail(s.status());
       // The file's modal data: its number of modes and mass matrix unless the options say otherwise.
       if (analysis.modes > 0 && cmd->count("--count") == 0) {
         if (analysis.modes > 100)
@@ -110,12 +104,6 @@ void register_modes_command(CLI::App& app, Context& ctx) {
       if (analysis.modes == 0)
         notes.push_back(analysis.modes_source + ": 0 dynamic modes and no modal data: beam masses from the densities, "
                                                 "count from --count");
-    } else {
-      if (!args->units.empty())
-        return fail(Status::Invalid("--units is for Frame3DD .3dd files; a YAML structure file states its units in "
-                                    "its 'units:' key (docs/structure-format.md); remove --units"));
-      s = io::read_structure_yaml(args->file);
-      if (!s.ok()) return fail(s.status());
     }
     if (!args->out.quiet)
       for (const std::string& note : notes) ctx.err << "kinestat modes: note: " << note << "\n";

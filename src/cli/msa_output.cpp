@@ -5,9 +5,26 @@
 #include <CLI/CLI.hpp>
 
 #include "kinestat/io/results_json.hpp"
+#include "kinestat/io/structure_yaml.hpp"
 #include "kinestat/io/vtk_output.hpp"
 
 namespace kinestat::cli {
+
+StatusOr<msa::Structure> read_structure_file(const std::string& file, const std::string& units,
+                                             std::vector<std::string>& notes, io::Frame3ddAnalysis& analysis) {
+  if (!io::is_frame3dd_file(file)) {
+    if (!units.empty())
+      return Status::Invalid("--units is for Frame3DD .3dd files; a YAML structure file states its units in its "
+                             "'units:' key (docs/structure-format.md); remove --units");
+    return io::read_structure_yaml(file);
+  }
+  if (units.empty())
+    return Status::Invalid(file + ": a .3dd file states no units; give them with --units FORCE-LENGTH, e.g. "
+                                  "--units kip-in or --units N-mm");
+  const StatusOr<io::FileUnits> u = io::units_from_name(units, "--units");
+  if (!u.ok()) return u.status();
+  return io::read_frame3dd(file, *u, &notes, &analysis);
+}
 
 void add_msa_output_options(CLI::App& cmd, MsaOutputOptions& o) {
   cmd.add_option("--vtk", o.vtk_dir, "write ParaView files (.vtu per load case + .pvd, SI units) into this folder");

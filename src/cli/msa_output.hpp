@@ -10,10 +10,17 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command_output.hpp"
+#include "kinestat/io/frame3dd.hpp"
 #include "kinestat/io/vtk_output.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::cli {
+
+// The structure of `file` for solve and modes: a Frame3DD .3dd file read with `units` (FORCE-LENGTH,
+// required: a .3dd file states none), its notes and analysis settings into `notes` and `analysis`;
+// or a YAML structure file, which states its own units (`units` refused).
+StatusOr<msa::Structure> read_structure_file(const std::string& file, const std::string& units,
+                                             std::vector<std::string>& notes, io::Frame3ddAnalysis& analysis);
 
 struct MsaOutputOptions {
   OutputOptions out;      // --json, --quiet

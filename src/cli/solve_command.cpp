@@ -47,44 +47,19 @@ void register_solve_command(CLI::App& app, Context& ctx) {
                   "stations along every beam, with their extremes (2 to 10000)")
       ->check(CLI::Range(2, 10000));
   cmd->callback([args, cmd, &ctx] {
-    const bool frame3dd = io::is_frame3dd_file(args->file);
-    StatusOr<msa::Structure> s = Status::Invalid("");
     std::vector<std::string> notes;
-    if (frame3dd) {
-      if (args->units.empty()) {
-        ctx.exit_code = report_failure(
-            ctx, "solve",
-            Status::Invalid(args->file + ": a .3dd file states no units; give them with --units FORCE-LENGTH, e.g. "
-                                         "--units kip-in or --units N-mm"));
-        return;
-      }
-      const StatusOr<io::FileUnits> units = io::units_from_name(args->units, "--units");
-      if (!units.ok()) {
-        ctx.exit_code = report_failure(ctx, "solve", units.status());
-        return;
-      }
-      io::Frame3ddAnalysis analysis;
-      s = io::read_frame3dd(args->file, *units, &notes, &analysis);
-      if (s.ok() && analysis.modes > 0)
-        notes.push_back(fmt::format("{}: {} dynamic modes asked for: kinestat solve is static and computes none; "
-                                    "kinestat modes computes them with the file's modal data",
-                                    analysis.modes_source, analysis.modes));
-      // Frame3DD's geometric stiffness flag asks for its second-order analysis: honoured, said.
-      if (s.ok() && analysis.geometric_stiffness && !args->second_order) {
-        args->second_order = true;
-        notes.push_back(analysis.geometric_stiffness_source +
-                        ": geometric stiffness flag 1: solved as a second-order (P-Delta) analysis, as --second-order "
-                        "does (write 0 there for a linear one)");
-      }
-    } else {
-      if (!args->units.empty()) {
-        ctx.exit_code = report_failure(
-            ctx, "solve",
-            Status::Invalid("--units is for Frame3DD .3dd files; a YAML structure file states its units in its "
-                            "'units:' key (docs/structure-format.md); remove --units"));
-        return;
-      }
-      s = io::read_structure_yaml(args->file);
+    io::Frame3ddAnalysis analysis;
+    StatusOr<msa::Structure> s = read_structure_file(args->file, args->units, notes, analysis);
+    if (s.ok() && analysis.modes > 0)
+      notes.push_back(fmt::format("{}: {} dynamic modes asked for: kinestat solve is static and computes none; "
+                                  "kinestat modes computes them with the file's modal data",
+                                  analysis.modes_source, analysis.modes));
+    // Frame3DD's geometric stiffness flag asks for its second-order analysis: honoured, said.
+    if (s.ok() && analysis.geometric_stiffness && !args->second_order) {
+      args->second_order = true;
+      notes.push_back(analysis.geometric_stiffness_source +
+                      ": geometric stiffness flag 1: solved as a second-order (P-Delta) analysis, as --second-order "
+                      "does (write 0 there for a linear one)");
     }
     if (!s.ok()) {
       ctx.exit_code = report_failure(ctx, "solve", s.status());
