@@ -115,7 +115,9 @@ TEST(VjmFeaSpring, BarMatchesTimoshenkoCantileverAndSecondReadComesFromTheCache)
   StatusOr<std::vector<vjm::Chain>> chains = vjm_model_chains(*model, std::nullopt);
   ASSERT_TRUE(chains.ok());
   const Mat6 K_recomputed = vjm::platform_unloaded_stiffness(*chains)->stiffness;
-  EXPECT_LT((K_recomputed - K_fea).norm() / K_fea.norm(), 1e-9);  // the FEA's, not the damaged file's
+  // The FEA's again: a second run adds shared entries in another thread order (docs/fea.md, Assembly), so
+  // it repeats the first to round-off, not bit for bit: 3.7e-9 relative in a CI run under ASan. 1e-7.
+  EXPECT_LT((K_recomputed - K_fea).norm() / K_fea.norm(), 1e-7);
 }
 
 // Each bad spring names the model file, the line of the offending key and what to fix.
