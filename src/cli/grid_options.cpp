@@ -95,6 +95,21 @@ Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::v
   return Status::Ok();
 }
 
+StatusOr<std::array<int, 3>> robot_grid_axes(const mechanisms::RobotDescription& d,
+                                             const std::array<mechanisms::MapRange, 3>& ranges, bool angular,
+                                             const char* range_option) {
+  std::array<int, 3> axes{-1, -1, -1};
+  for (std::size_t t = 0; t < d.task.size(); ++t) {
+    const int c = static_cast<int>(d.task[t]) - (angular ? 3 : 0);
+    if (c >= 0 && c < 3) axes[c] = static_cast<int>(t);
+  }
+  for (int i = 0; i < 3; ++i)
+    if (axes[i] < 0 && ranges[i].lo != ranges[i].hi)
+      return Status::Invalid(fmt::format("{} commands no {}{} (its task is {}): give a single value for it in {}",
+                                         d.name, angular ? "r" : "", "xyz"[i], task_text(d), range_option));
+  return axes;
+}
+
 std::optional<double> parse_number(const std::string& s) {
   double v = 0.0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);

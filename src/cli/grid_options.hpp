@@ -2,6 +2,7 @@
 // line's units, the five-bar's modes, and the progress line on stderr.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <iosfwd>
@@ -48,6 +49,13 @@ std::string task_text(const mechanisms::RobotDescription& d);
 // none of them.
 Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::vector<double>& values, int first,
                              const char* option, VecX& task);
+
+// Which task coordinate each grid axis sets, x, y, z (or rx, ry, rz when `angular`): its index in the
+// task, -1 for an axis the task lacks, whose range must then be one value (kInvalidInput naming the
+// axis and `range_option` otherwise).
+StatusOr<std::array<int, 3>> robot_grid_axes(const mechanisms::RobotDescription& d,
+                                             const std::array<mechanisms::MapRange, 3>& ranges, bool angular,
+                                             const char* range_option);
 
 // --mode ++|+-|-+|--, --assembly up|down, --method msa|vjm into `o`.
 Status parse_five_bar_modes(const std::string& mode, const std::string& assembly, const std::string& method,

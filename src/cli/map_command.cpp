@@ -203,17 +203,9 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
                                        s.angular ? "--angles rx0:rx1,ry0:ry1,rz0:rz1 (deg)"
                                                  : "--box x0:x1,y0:y1,z0:z1 (mm)"));
   }
-  // The grid's axes set the task's x, y, z (or rx, ry, rz); an axis that sets none must be flat.
-  std::array<int, 3> axes{-1, -1, -1};
-  for (std::size_t t = 0; t < d.task.size(); ++t) {
-    const int c = static_cast<int>(d.task[t]) - (s.angular ? 3 : 0);
-    if (c >= 0 && c < 3) axes[c] = static_cast<int>(t);
-  }
-  o.map_axes = axes;
-  for (int i = 0; i < 3; ++i)
-    if (axes[i] < 0 && s.ranges[i].lo != s.ranges[i].hi)
-      return Status::Invalid(fmt::format("{} commands no {}{} (its task is {}): give a single value for it in {}",
-                                         d.name, s.angular ? "r" : "", "xyz"[i], task_text(d), s.range_option));
+  auto axes = robot_grid_axes(d, s.ranges, s.angular, s.range_option);
+  if (!axes.ok()) return axes.status();
+  o.map_axes = *axes;
   s.with_load = o.displacement || o.wrench;
   s.workspace_hint = fmt::format("no posture of {} closes there on the home posture's branch", d.name);
   if (Status st = validate(o); !st.ok()) return st;

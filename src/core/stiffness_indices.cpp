@@ -7,10 +7,12 @@
 
 namespace kinestat {
 
-StiffnessIndices stiffness_indices(const MatX& K) {
-  StiffnessIndices s;
-  s.size = static_cast<int>(K.rows());
-  if (K.rows() == 0 || K.rows() != K.cols()) return s;
+namespace {
+
+// Eq. (7)-(13) of K, for both sizes; the eigenvectors into `vectors` unless it is null.
+template <int N>
+void compute_indices(const Eigen::Matrix<double, N, N>& K, MatrixIndices<N>& s, Eigen::Matrix<double, N, N>* vectors) {
+  using Matrix = Eigen::Matrix<double, N, N>;
   const double fro = K.norm();
   s.norm_frobenius = fro;
   s.symmetry_error = fro > 0 ? (K - K.transpose()).norm() / fro : 0.0;
@@ -19,22 +21,21 @@ StiffnessIndices stiffness_indices(const MatX& K) {
   s.norm_inf = K.cwiseAbs().rowwise().sum().maxCoeff();
   s.max_abs_entry = K.cwiseAbs().maxCoeff();
 
-  const MatX Ks = 0.5 * (K + K.transpose());
-  Eigen::SelfAdjointEigenSolver<MatX> eig(Ks);
+  const Matrix Ks = 0.5 * (K + K.transpose());
+  const Eigen::SelfAdjointEigenSolver<Matrix> eig(Ks, vectors ? Eigen::ComputeEigenvectors : Eigen::EigenvaluesOnly);
   s.eigenvalues = eig.eigenvalues();
-  s.eigenvectors = eig.eigenvectors();
-  const VecX a = s.eigenvalues.cwiseAbs();
+  if (vectors) *vectors = eig.eigenvectors();
+  const auto a = s.eigenvalues.cwiseAbs();
   s.norm_2 = a.maxCoeff();
   const double amin = a.minCoeff();
   s.condition_number = amin > 0 ? s.norm_2 / amin : std::numeric_limits<double>::infinity();
 
   // Determinant through an LU factorization with partial pivoting, accumulated in logs.
-  Eigen::PartialPivLU<MatX> lu(K);
-  const MatX& LU = lu.matrixLU();
-  int sign = lu.permutationP().determinant();
+  const Eigen::PartialPivLU<Matrix> lu(K);
+  int sign = static_cast<int>(lu.permutationP().determinant());
   double log10_det = 0.0;
-  for (Eigen::Index i = 0; i < LU.rows(); ++i) {
-    const double d = LU(i, i);
+  for (Eigen::Index i = 0; i < K.rows(); ++i) {
+    const double d = lu.matrixLU()(i, i);
     if (d == 0.0) {
       sign = 0;
       break;
@@ -51,6 +52,26 @@ StiffnessIndices stiffness_indices(const MatX& K) {
   } else {
     s.determinant = sign * std::pow(10.0, log10_det);
   }
+}
+
+}  // namespace
+
+StiffnessIndices stiffness_indices(const MatX& K) {
+  StiffnessIndices s;
+  s.size = static_cast<int>(K.rows());
+  if (K.rows() == 0 || K.rows() != K.cols()) return s;
+  compute_indices<Eigen::Dynamic>(K, s, &s.eigenvectors);
+  return s;
+}
+
+CartesianIndices cartesian_indices(const Mat6& K) {
+  CartesianIndices s;
+  compute_indices<6>(K, s, nullptr);  // the sweep path needs the spectrum, not the directions
+  const Mat6 Ks = 0.5 * (K + K.transpose());
+  s.translational_eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Mat3>(Ks.topLeftCorner<3, 3>(), Eigen::EigenvaluesOnly).eigenvalues();
+  s.rotational_eigenvalues =
+      Eigen::SelfAdjointEigenSolver<Mat3>(Ks.bottomRightCorner<3, 3>(), Eigen::EigenvaluesOnly).eigenvalues();
   return s;
 }
 
@@ -68,47 +89,6 @@ std::string indices_report(const StiffnessIndices& ix) {
   out += fmt::format("    max |k_ij|        {:.4e}\n", ix.max_abs_entry);
   out += fmt::format("    condition number  {:.4e}\n", ix.condition_number);
   return out;
-}
-
-}  // namespace kinestat
-
-namespace kinestat {
-
-CartesianIndices cartesian_indices(const Mat6& K) {
-  CartesianIndices s;
-  const double fro = K.norm();
-  s.norm_frobenius = fro;
-  s.symmetry_error = fro > 0 ? (K - K.transpose()).norm() / fro : 0.0;
-  s.trace = K.trace();
-  s.norm_1 = K.cwiseAbs().colwise().sum().maxCoeff();
-  s.norm_inf = K.cwiseAbs().rowwise().sum().maxCoeff();
-  s.max_abs_entry = K.cwiseAbs().maxCoeff();
-  const Mat6 Ks = 0.5 * (K + K.transpose());
-  // Eigenvalues only (no vectors): the sweep path needs the spectrum, not the directions.
-  s.eigenvalues = Eigen::SelfAdjointEigenSolver<Mat6>(Ks, Eigen::EigenvaluesOnly).eigenvalues();
-  s.translational_eigenvalues =
-      Eigen::SelfAdjointEigenSolver<Mat3>(Ks.topLeftCorner<3, 3>(), Eigen::EigenvaluesOnly).eigenvalues();
-  s.rotational_eigenvalues =
-      Eigen::SelfAdjointEigenSolver<Mat3>(Ks.bottomRightCorner<3, 3>(), Eigen::EigenvaluesOnly).eigenvalues();
-  const Vec6 a = s.eigenvalues.cwiseAbs();
-  s.norm_2 = a.maxCoeff();
-  const double amin = a.minCoeff();
-  s.condition_number = amin > 0 ? s.norm_2 / amin : std::numeric_limits<double>::infinity();
-  const Eigen::PartialPivLU<Mat6> lu(K);
-  int sign = lu.permutationP().determinant();
-  double log10_det = 0.0;
-  for (int i = 0; i < 6; ++i) {
-    const double d = lu.matrixLU()(i, i);
-    if (d == 0.0) {
-      sign = 0;
-      break;
-    }
-    if (d < 0) sign = -sign;
-    log10_det += std::log10(std::abs(d));
-  }
-  s.det_sign = sign;
-  s.log10_abs_det = sign == 0 ? -std::numeric_limits<double>::infinity() : log10_det;
-  return s;
 }
 
 }  // namespace kinestat

@@ -49,10 +49,10 @@ json workspace_map_to_json(const WorkspaceMap& map) {
   j["units"] = std::move(units);
 
   json status = json::array(), codes = json::object(), counts = json::object();
-  for (MapPointStatus s : map.status) status.push_back(static_cast<int>(s));
-  for (int s = 0; s < kNumMapPointStatuses; ++s) {
-    codes[std::to_string(s)] = to_string(static_cast<MapPointStatus>(s));
-    counts[to_string(static_cast<MapPointStatus>(s))] = map.status_counts[s];
+  for (PostureStatus s : map.status) status.push_back(static_cast<int>(s));
+  for (int s = 0; s < kNumPostureStatuses; ++s) {
+    codes[std::to_string(s)] = to_string(static_cast<PostureStatus>(s));
+    counts[to_string(static_cast<PostureStatus>(s))] = map.status_counts[s];
   }
   j["status"] = std::move(status);
   j["status_codes"] = std::move(codes);

@@ -12,7 +12,7 @@
 
 namespace kinestat::io {
 
-using mechanisms::MapPointStatus;
+using mechanisms::PostureStatus;
 
 std::string vti_array_name(mechanisms::MapField f) { return mechanisms::field_info(f).name; }
 
@@ -58,8 +58,8 @@ Status write_map_vti(const std::string& path, const mechanisms::WorkspaceMap& ma
   add_vti_string(image, "axis_units", fmt::format("{},{},{}", mechanisms::axis_unit(grid, 0), mechanisms::axis_unit(grid, 1), mechanisms::axis_unit(grid, 2)));
   add_vti_string(image, "description", map.description);
   std::string codes;
-  for (int s = 0; s < mechanisms::kNumMapPointStatuses; ++s)
-    codes += fmt::format("{}{} {}", s ? ", " : "", s, to_string(static_cast<MapPointStatus>(s)));
+  for (int s = 0; s < mechanisms::kNumPostureStatuses; ++s)
+    codes += fmt::format("{}{} {}", s ? ", " : "", s, to_string(static_cast<PostureStatus>(s)));
   add_vti_string(image, "status_values", codes);
   for (const mechanisms::FieldValues& f : map.fields) {
     const mechanisms::MapFieldInfo& info = mechanisms::field_info(f.field);

@@ -103,10 +103,10 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
     const std::vector<double>& k_t_min = map->find(MapField::kTranslationalMin)->values;
     double worst = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n_region; ++i) {
-      const MapPointStatus s = map->status[i];
-      if (s == MapPointStatus::kUnreachable) continue;
+      const PostureStatus s = map->status[i];
+      if (s == PostureStatus::kUnreachable) continue;
       ++r.reachable;
-      if (s != MapPointStatus::kOk) continue;
+      if (s != PostureStatus::kOk) continue;
       ++r.singularity_free;
       worst = std::min(worst, k_t_min[i]);
       if (!o.min_stiffness || k_t_min[i] >= *o.min_stiffness) ++r.stiff;

@@ -18,6 +18,7 @@ const char* to_string(PostureStatus s) {
     case PostureStatus::kUnreachable: return "unreachable";
     case PostureStatus::kSingular: return "singular";
     case PostureStatus::kFailed: return "failed";
+    case PostureStatus::kNearSingular: return "near-singular";
   }
   return "unknown";
 }

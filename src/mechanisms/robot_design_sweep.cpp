@@ -50,7 +50,7 @@ RobotDesignResult measure(const WorkspaceMap& map, double min_stiffness) {
   RobotDesignResult r;
   r.reachable_measure = map.reachable_measure;
   r.stiff_measure = map.stiff_measure;
-  r.reachable_points = map.status.size() - map.status_counts[static_cast<int>(MapPointStatus::kUnreachable)];
+  r.reachable_points = map.status.size() - map.status_counts[static_cast<int>(PostureStatus::kUnreachable)];
   const std::vector<double>& kt = map.find(MapField::kTranslationalMin)->values;
   bool any = false;
   for (std::size_t i = 0; i < kt.size(); ++i) {

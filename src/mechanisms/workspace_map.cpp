@@ -145,17 +145,6 @@ StatusOr<MapGrid> make_map_grid(const std::array<MapRange, 3>& ranges, double st
   return grid;
 }
 
-const char* to_string(MapPointStatus s) {
-  switch (s) {
-    case MapPointStatus::kOk: return "ok";
-    case MapPointStatus::kUnreachable: return "unreachable";
-    case MapPointStatus::kSingular: return "singular";
-    case MapPointStatus::kFailed: return "failed";
-    case MapPointStatus::kNearSingular: return "near-singular";
-  }
-  return "unknown";
-}
-
 const MapFieldInfo& field_info(MapField f) { return kFields[static_cast<int>(f)]; }
 
 std::optional<MapField> field_from_name(const std::string& name) {
@@ -232,7 +221,7 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
   map.description = kernel.description();
   map.near_singular_threshold = options.near_singular_threshold;
   map.min_stiffness = options.min_stiffness;
-  map.status.assign(n, MapPointStatus::kUnreachable);
+  map.status.assign(n, PostureStatus::kUnreachable);
   static_assert(static_cast<int>(MapField::kSingularityMeasure) == kNumMapFields - 2 &&
                 static_cast<int>(MapField::kNewtonIterations) == kNumMapFields - 1);
   for (int i = 0; i < kNumMapFields; ++i) {
@@ -270,9 +259,9 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
       const PostureResult& r = results[k - begin];
       if (r.status == PostureStatus::kUnreachable) continue;
       if (FieldValues* it = iterations) it->values[i] = r.newton_iterations;
-      MapPointStatus s = static_cast<MapPointStatus>(r.status);
-      if (s == MapPointStatus::kOk && !(r.singularity_measure >= options.near_singular_threshold))
-        s = MapPointStatus::kNearSingular;
+      PostureStatus s = static_cast<PostureStatus>(r.status);
+      if (s == PostureStatus::kOk && !(r.singularity_measure >= options.near_singular_threshold))
+        s = PostureStatus::kNearSingular;
       map.status[i] = s;
       if (has_values(s)) {
         const std::array<double, kNumMapFields> v = point_fields(r);
@@ -283,9 +272,9 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
     }
   }
 
-  for (MapPointStatus s : map.status) ++map.status_counts[static_cast<int>(s)];
+  for (PostureStatus s : map.status) ++map.status_counts[static_cast<int>(s)];
   for (FieldValues& f : map.fields) summarize(f, grid);
-  const std::size_t reachable = n - map.status_counts[static_cast<int>(MapPointStatus::kUnreachable)];
+  const std::size_t reachable = n - map.status_counts[static_cast<int>(PostureStatus::kUnreachable)];
   map.reachable_measure = static_cast<double>(reachable) * grid.cell_measure();
   if (options.min_stiffness) {
     const std::vector<double>& kt = map.find(MapField::kTranslationalMin)->values;

@@ -6,6 +6,28 @@
 
 namespace kinestat::python {
 
+namespace {
+
+// The fields of MatrixIndices, shared by both index classes (one implementation over the size).
+template <class Indices>
+void def_matrix_indices(py::class_<Indices>& c) {
+  c.def(py::init<>())
+      .def_readonly("det_sign", &Indices::det_sign)
+      .def_readonly("log10_abs_det", &Indices::log10_abs_det)
+      .def_readonly("determinant", &Indices::determinant, "eq. (7); +-inf on overflow (use log10_abs_det)")
+      .def_readonly("trace", &Indices::trace, "eq. (8)")
+      .def_readonly("norm_1", &Indices::norm_1, "eq. (9): max column sum of |k_ij|")
+      .def_readonly("norm_2", &Indices::norm_2, "eq. (10): spectral norm")
+      .def_readonly("norm_frobenius", &Indices::norm_frobenius, "eq. (11)")
+      .def_readonly("norm_inf", &Indices::norm_inf, "max row sum of |k_ij|")
+      .def_readonly("max_abs_entry", &Indices::max_abs_entry, "eq. (12)")
+      .def_readonly("condition_number", &Indices::condition_number, "eq. (13), 2-norm; inf if singular")
+      .def_readonly("eigenvalues", &Indices::eigenvalues, "of the symmetric part, ascending")
+      .def_readonly("symmetry_error", &Indices::symmetry_error, "||K - K^T||_F / ||K||_F");
+}
+
+}  // namespace
+
 void bind_core(py::module_& m) {
   m.attr("DOFS_PER_NODE") = kDofsPerNode;
   m.def("dof_name", &dof_name, py::arg("dof"), "Name of a nodal dof 0..5: 'ux', 'uy', 'uz', 'rx', 'ry', 'rz'.");
@@ -44,24 +66,11 @@ void bind_core(py::module_& m) {
   m.def("axis_angle", &axis_angle, py::arg("axis"), py::arg("angle"), "Rotation matrix about a unit axis by an angle (rad).");
 
   // stiffness_indices.hpp (Goncalves et al. 2010, eq. 7-13)
-  py::class_<StiffnessIndices>(m, "StiffnessIndices",
-                               "Stiffness indices of a symmetric matrix (Goncalves et al. 2010, eq. 7-13), in the "
-                               "matrix's units. eigenvalues ascending, eigenvectors as columns.")
-      .def(py::init<>())
-      .def_readonly("size", &StiffnessIndices::size)
-      .def_readonly("det_sign", &StiffnessIndices::det_sign)
-      .def_readonly("log10_abs_det", &StiffnessIndices::log10_abs_det)
-      .def_readonly("determinant", &StiffnessIndices::determinant, "eq. (7); +-inf on overflow (use log10_abs_det)")
-      .def_readonly("trace", &StiffnessIndices::trace, "eq. (8)")
-      .def_readonly("norm_1", &StiffnessIndices::norm_1, "eq. (9): max column sum of |k_ij|")
-      .def_readonly("norm_2", &StiffnessIndices::norm_2, "eq. (10): spectral norm")
-      .def_readonly("norm_frobenius", &StiffnessIndices::norm_frobenius, "eq. (11)")
-      .def_readonly("norm_inf", &StiffnessIndices::norm_inf, "max row sum of |k_ij|")
-      .def_readonly("max_abs_entry", &StiffnessIndices::max_abs_entry, "eq. (12)")
-      .def_readonly("condition_number", &StiffnessIndices::condition_number, "eq. (13), 2-norm; inf if singular")
-      .def_readonly("eigenvalues", &StiffnessIndices::eigenvalues)
-      .def_readonly("eigenvectors", &StiffnessIndices::eigenvectors)
-      .def_readonly("symmetry_error", &StiffnessIndices::symmetry_error, "||K - K^T||_F / ||K||_F");
+  py::class_<StiffnessIndices> indices(m, "StiffnessIndices",
+                                       "Stiffness indices of a symmetric matrix (Goncalves et al. 2010, eq. 7-13), in "
+                                       "the matrix's units. eigenvalues ascending, eigenvectors as columns.");
+  def_matrix_indices(indices);
+  indices.def_readonly("size", &StiffnessIndices::size).def_readonly("eigenvectors", &StiffnessIndices::eigenvectors);
   m.def(
       "stiffness_indices",
       [](const MatX& K) {
@@ -71,23 +80,13 @@ void bind_core(py::module_& m) {
       },
       py::arg("K"), "Every index of a dense symmetric matrix K.");
 
-  py::class_<CartesianIndices>(m, "CartesianIndices",
-                               "Indices of a 6x6 Cartesian stiffness (ux uy uz rx ry rz; N/m, N, N m/rad), with the "
-                               "eigenvalues of the translational (N/m) and rotational (N m/rad) 3x3 blocks.")
-      .def(py::init<>())
-      .def_readonly("det_sign", &CartesianIndices::det_sign)
-      .def_readonly("log10_abs_det", &CartesianIndices::log10_abs_det)
-      .def_readonly("trace", &CartesianIndices::trace)
-      .def_readonly("norm_1", &CartesianIndices::norm_1)
-      .def_readonly("norm_2", &CartesianIndices::norm_2)
-      .def_readonly("norm_frobenius", &CartesianIndices::norm_frobenius)
-      .def_readonly("norm_inf", &CartesianIndices::norm_inf)
-      .def_readonly("max_abs_entry", &CartesianIndices::max_abs_entry)
-      .def_readonly("condition_number", &CartesianIndices::condition_number)
-      .def_readonly("eigenvalues", &CartesianIndices::eigenvalues, "of the 6x6, ascending (mixed units)")
-      .def_readonly("translational_eigenvalues", &CartesianIndices::translational_eigenvalues, "of K[:3, :3], N/m")
-      .def_readonly("rotational_eigenvalues", &CartesianIndices::rotational_eigenvalues, "of K[3:, 3:], N m/rad")
-      .def_readonly("symmetry_error", &CartesianIndices::symmetry_error);
+  py::class_<CartesianIndices> cartesian(m, "CartesianIndices",
+                                         "Indices of a 6x6 Cartesian stiffness (ux uy uz rx ry rz; N/m, N, N m/rad), "
+                                         "with the eigenvalues of the translational (N/m) and rotational (N m/rad) "
+                                         "3x3 blocks; eigenvalues of the 6x6 mix units.");
+  def_matrix_indices(cartesian);
+  cartesian.def_readonly("translational_eigenvalues", &CartesianIndices::translational_eigenvalues, "of K[:3, :3], N/m")
+      .def_readonly("rotational_eigenvalues", &CartesianIndices::rotational_eigenvalues, "of K[3:, 3:], N m/rad");
   m.def(
       "cartesian_indices",
       [](const Mat6& K) {

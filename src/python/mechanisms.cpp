@@ -458,6 +458,9 @@ PostureResult make_posture_result(PostureStatus status, const std::optional<Mat6
                                   const std::optional<Mat6>& compliance, double singularity_measure,
                                   const std::optional<Vec6>& deflection, int newton_iterations) {
   PostureResult r;
+  if (status == PostureStatus::kNearSingular)
+    raise_status(Status::Invalid("PostureResult: NEAR_SINGULAR is a map's verdict; a kernel returns OK with its "
+                                 "singularity_measure"));
   r.status = status;
   if (!std::isfinite(singularity_measure))
     raise_status(Status::Invalid("PostureResult: singularity_measure is not finite"));
@@ -487,11 +490,14 @@ PostureResult make_posture_result(PostureStatus status, const std::optional<Mat6
 }
 
 void bind_posture_kernels(py::module_& m) {
-  py::enum_<PostureStatus>(m, "PostureStatus")
+  py::enum_<PostureStatus>(m, "PostureStatus",
+                           "Status of a posture; a map's status arrays hold its value (uint8). NEAR_SINGULAR is "
+                           "set by maps only.")
       .value("OK", PostureStatus::kOk)
       .value("UNREACHABLE", PostureStatus::kUnreachable)
       .value("SINGULAR", PostureStatus::kSingular)
-      .value("FAILED", PostureStatus::kFailed);
+      .value("FAILED", PostureStatus::kFailed)
+      .value("NEAR_SINGULAR", PostureStatus::kNearSingular);
   py::class_<PostureResult>(m, "PostureResult",
                             "The stiffness at one posture (tool point, global axes, SI units). A Python kernel "
                             "returns PostureResult(status, stiffness=K, singularity_measure=...): compliance (when "

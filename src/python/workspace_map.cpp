@@ -124,12 +124,6 @@ void bind_grid(py::module_& m) {
 }
 
 void bind_map(py::module_& m) {
-  py::enum_<MapPointStatus>(m, "MapPointStatus", "Status of a map point; status arrays hold its value (uint8).")
-      .value("OK", MapPointStatus::kOk)
-      .value("UNREACHABLE", MapPointStatus::kUnreachable)
-      .value("SINGULAR", MapPointStatus::kSingular)
-      .value("FAILED", MapPointStatus::kFailed)
-      .value("NEAR_SINGULAR", MapPointStatus::kNearSingular);
   py::enum_<MapField>(m, "MapField", "A map field; its name (field_info(f).name, e.g. 'k_t_min') is accepted wherever "
                                      "a MapField is (docs/maps.md lists formulas and units).")
       .value("TRANSLATIONAL_MIN", MapField::kTranslationalMin)
@@ -199,11 +193,11 @@ void bind_map(py::module_& m) {
       .def_readonly("stiff_measure", &WorkspaceMap::stiff_measure, "m^2 or m^3 with k_t_min >= min_stiffness")
       .def_property_readonly("shape", [](const WorkspaceMap& w) { return py::tuple(py::cast(grid_shape(w.grid))); })
       .def_property_readonly("status", [](const WorkspaceMap& w) { return grid_array<std::uint8_t>(w.grid, w.status); },
-                             "(nz, ny, nx) uint8, MapPointStatus values")
+                             "(nz, ny, nx) uint8, PostureStatus values")
       .def_property_readonly(
           "mask", [](const WorkspaceMap& w) {
             std::vector<bool> none;
-            for (MapPointStatus s : w.status) none.push_back(!has_values(s));
+            for (PostureStatus s : w.status) none.push_back(!has_values(s));
             return grid_array<bool>(w.grid, none);
           },
           "(nz, ny, nx) bool, True where the point has no stiffness values (for numpy.ma)")
@@ -228,7 +222,7 @@ void bind_map(py::module_& m) {
           "status_counts",
           [](const WorkspaceMap& w) {
             py::dict d;
-            for (int s = 0; s < kNumMapPointStatuses; ++s) d[to_string(static_cast<MapPointStatus>(s))] = w.status_counts[s];
+            for (int s = 0; s < kNumPostureStatuses; ++s) d[to_string(static_cast<PostureStatus>(s))] = w.status_counts[s];
             return d;
           },
           "{'ok': n, 'unreachable': n, ...}")

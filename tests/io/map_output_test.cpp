@@ -42,8 +42,8 @@ WorkspaceMap small_map() {
 TEST(MapVti, ReadBackWithVtkGridArraysStatusAndHiddenPoints) {
   const WorkspaceMap map = small_map();
   ASSERT_EQ(map.fields.size(), static_cast<std::size_t>(kNumMapFields - 1));  // all but newton_iterations
-  ASSERT_GT(map.status_counts[static_cast<int>(MapPointStatus::kUnreachable)], 0u);
-  ASSERT_GT(map.status_counts[static_cast<int>(MapPointStatus::kOk)], 0u);
+  ASSERT_GT(map.status_counts[static_cast<int>(PostureStatus::kUnreachable)], 0u);
+  ASSERT_GT(map.status_counts[static_cast<int>(PostureStatus::kOk)], 0u);
   const std::string path = (std::filesystem::temp_directory_path() / "kinestat_map_test.vti").string();
   ASSERT_TRUE(write_map_vti(path, map).ok());
 
@@ -102,7 +102,7 @@ TEST(MapVti, ReadBackWithVtkGridArraysStatusAndHiddenPoints) {
     EXPECT_EQ(status->GetComponent(i, 0), static_cast<double>(map.status[i]));
     const int hidden = vtkDataSetAttributes::HIDDENPOINT;
     EXPECT_EQ(ghost->GetComponent(i, 0), has_values(map.status[i]) ? 0 : hidden);
-    if (map.status[i] == MapPointStatus::kUnreachable) {
+    if (map.status[i] == PostureStatus::kUnreachable) {
       EXPECT_TRUE(std::isnan(pd->GetArray("k_t_min")->GetComponent(i, 0)));
     }
   }

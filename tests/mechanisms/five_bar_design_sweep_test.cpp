@@ -49,8 +49,8 @@ TEST(FiveBarDesignSweep, CountsEqualThoseOfASeparateMapOfEachDesign) {
     std::size_t reachable = 0, free = 0, stiff = 0;
     const std::vector<double>& kt = map->find(MapField::kTranslationalMin)->values;
     for (std::size_t i = 0; i < map->status.size(); ++i) {
-      reachable += map->status[i] != MapPointStatus::kUnreachable;
-      const bool ok = map->status[i] == MapPointStatus::kOk;
+      reachable += map->status[i] != PostureStatus::kUnreachable;
+      const bool ok = map->status[i] == PostureStatus::kOk;
       free += ok;
       stiff += ok && kt[i] >= *o.min_stiffness;
       some_weak = some_weak || (ok && kt[i] < *o.min_stiffness);
@@ -96,7 +96,7 @@ TEST(FiveBarDesignSweep, WeakestPointIsTheMinimumOverTheSingularityFreePoints) {
   double worst = std::numeric_limits<double>::infinity();
   const std::vector<double>& kt = map->find(MapField::kTranslationalMin)->values;
   for (std::size_t i = 0; i < kt.size(); ++i)
-    if (map->status[i] == MapPointStatus::kOk) worst = std::min(worst, kt[i]);
+    if (map->status[i] == PostureStatus::kOk) worst = std::min(worst, kt[i]);
   // The weakest point lies by the near-singular band, where the sweep and reference kernels agree to
   // a few 1e-9 (not 1e-12).
   EXPECT_NEAR(sweep->results[0].k_t_min_worst, worst, 1e-7 * worst);

@@ -26,9 +26,9 @@ struct Comparison {
   double warm_steps = 0.0, scratch_steps = 0.0;  // Newton steps summed over the reachable points
 };
 
-MapPointStatus expected_status(const PostureResult& r, double near_singular) {
-  MapPointStatus s = static_cast<MapPointStatus>(r.status);
-  if (s == MapPointStatus::kOk && !(r.singularity_measure >= near_singular)) s = MapPointStatus::kNearSingular;
+PostureStatus expected_status(const PostureResult& r, double near_singular) {
+  PostureStatus s = static_cast<PostureStatus>(r.status);
+  if (s == PostureStatus::kOk && !(r.singularity_measure >= near_singular)) s = PostureStatus::kNearSingular;
   return s;
 }
 
@@ -48,13 +48,13 @@ Comparison compare_with_scratch(const OrthoglideKernelOptions& o, const MapGrid&
   if (iterations == nullptr) return c;
   for (std::size_t i = 0; i < grid.num_points(); ++i) {
     const PostureResult r = kernel->clone()->evaluate(grid.point(i));
-    const MapPointStatus s = expected_status(r, mo.near_singular_threshold);
+    const PostureStatus s = expected_status(r, mo.near_singular_threshold);
     EXPECT_EQ(map->status[i], s) << kernel->description() << " at " << grid.point(i).transpose();
-    if (s == MapPointStatus::kUnreachable) continue;
+    if (s == PostureStatus::kUnreachable) continue;
     c.scratch_steps += r.newton_iterations;
     c.warm_steps += iterations->values[i];
     EXPECT_GT(iterations->values[i], 0.0) << i;
-    if (s == MapPointStatus::kFailed) ++c.failed;
+    if (s == PostureStatus::kFailed) ++c.failed;
     if (!has_values(s) || map->status[i] != s) continue;
     if (r.indices.eigenvalues.minCoeff() < 0) ++c.unstable;
     const std::array<double, kNumMapFields> want = point_fields(r);

@@ -118,6 +118,7 @@ Tally compare(PostureKernel& fast, PostureKernel& ref, const std::vector<Vec3>& 
       case PostureStatus::kSingular: ++t.singular; break;
       case PostureStatus::kUnreachable: ++t.unreachable; break;
       case PostureStatus::kFailed: ++t.failed; break;
+      case PostureStatus::kNearSingular: ADD_FAILURE() << where << ": a kernel never returns near-singular"; break;
     }
     if (r.status != PostureStatus::kOk) {
       EXPECT_TRUE(f.stiffness.isZero() && f.compliance.isZero() && f.deflection.isZero()) << where << ": values";

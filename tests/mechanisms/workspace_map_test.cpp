@@ -103,20 +103,20 @@ TEST(FiveBarMap, EqualsSingleMsaSolvesAndMarksUnreachablePoints) {
     const Vec3 x = grid.point(i);
     auto q = inverse_kinematics(o.params, Vec2(x.x(), x.y()), o.mode);
     if (!q.ok() || q->assembly != o.assembly) {
-      EXPECT_EQ(map->status[i], MapPointStatus::kUnreachable) << i;
+      EXPECT_EQ(map->status[i], PostureStatus::kUnreachable) << i;
       expect_no_values(*map, i, false);
       ++unreachable;
       continue;
     }
     const msa::Solution sol = msa::solve(make_five_bar_structure(o.params, *q));
     if (!sol.status.ok() || !sol.cartesian || !sol.cartesian->stiffness_defined) {
-      EXPECT_EQ(map->status[i], MapPointStatus::kSingular) << i;
+      EXPECT_EQ(map->status[i], PostureStatus::kSingular) << i;
       expect_no_values(*map, i, true);
       continue;
     }
     const FiveBarJacobians jac = five_bar_jacobians(*q);
     const double measure = std::min(jac.parallel_measure, jac.serial_measure);
-    EXPECT_EQ(map->status[i], measure < mo.near_singular_threshold ? MapPointStatus::kNearSingular : MapPointStatus::kOk);
+    EXPECT_EQ(map->status[i], measure < mo.near_singular_threshold ? PostureStatus::kNearSingular : PostureStatus::kOk);
     const auto want = expected_fields(sol.cartesian->stiffness, sol.cartesian->compliance * o.load, measure);
     expect_point_fields(*map, i, want, 1e-9);
     ++ok;
@@ -287,15 +287,15 @@ TEST(FiveBarLoci, AgreeWithTheMapToTheGridStep) {
       int flagged = 0, boundary_pairs = 0;
       for (std::size_t i = 0; i < grid.num_points(); ++i) {
         const Vec2 x = grid.point(i).head<2>();
-        const MapPointStatus s = map->status[i];
-        if (s == MapPointStatus::kNearSingular || s == MapPointStatus::kSingular) {
+        const PostureStatus s = map->status[i];
+        if (s == PostureStatus::kNearSingular || s == PostureStatus::kSingular) {
           ++flagged;
           EXPECT_LE(distance_to_curves(loci, x), step) << "flagged point (" << x.x() << ", " << x.y() << ")";
         }
         // Right and upper neighbours.
         for (const std::size_t k : {i + 1, i + nx}) {
           if (k >= grid.num_points() || (k == i + 1 && (i + 1) % nx == 0)) continue;
-          if ((s == MapPointStatus::kUnreachable) == (map->status[k] == MapPointStatus::kUnreachable)) continue;
+          if ((s == PostureStatus::kUnreachable) == (map->status[k] == PostureStatus::kUnreachable)) continue;
           ++boundary_pairs;
           const double d = std::min(distance_to_curves(loci, x), distance_to_curves(loci, grid.point(k).head<2>()));
           EXPECT_LE(d, step) << "boundary at (" << x.x() << ", " << x.y() << ")";
@@ -305,7 +305,7 @@ TEST(FiveBarLoci, AgreeWithTheMapToTheGridStep) {
       EXPECT_GT(boundary_pairs, 40);
       // The first grid row lies a step below the box: all unreachable.
       const auto& st = map->status;
-      EXPECT_EQ(std::count(st.begin(), st.begin() + nx, MapPointStatus::kUnreachable), nx);
+      EXPECT_EQ(std::count(st.begin(), st.begin() + nx, PostureStatus::kUnreachable), nx);
     }
 }
 
@@ -330,7 +330,7 @@ TEST(OrthoglideMap, LoadedModeEqualsPerPointLoadedSolves) {
     ASSERT_TRUE(vt.ok());
     auto state = vjm::platform_equilibrium_under_wrench(*chains, *o.wrench);
     if (!state.ok()) {  // no equilibrium: failed, with the singularity measure only
-      EXPECT_EQ(map->status[i], MapPointStatus::kFailed) << x.transpose();
+      EXPECT_EQ(map->status[i], PostureStatus::kFailed) << x.transpose();
       expect_no_values(*map, i, true);
       continue;
     }

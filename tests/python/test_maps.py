@@ -43,14 +43,14 @@ def test_map_arrays_have_the_grid_shape(five_bar_map):
         m.field("stiffness")
     counts = m.status_counts
     assert sum(counts.values()) == m.grid.num_points()
-    assert counts["ok"] == np.count_nonzero(m.status == mech.MapPointStatus.OK.value)
+    assert counts["ok"] == np.count_nonzero(m.status == mech.PostureStatus.OK.value)
 
 
 def test_map_values_equal_single_posture_solves(five_bar_map):
     m, params = five_bar_map, mech.FiveBarParams()
     x, y, _ = m.grid.axes
     kt, trace = m.field("k_t_min")[0], m.field("trace")[0]
-    ok = np.argwhere(m.status[0] == mech.MapPointStatus.OK.value)
+    ok = np.argwhere(m.status[0] == mech.PostureStatus.OK.value)
     assert len(ok) > 100
     # The reference kernel is the nodal MSA path itself; the sweep kernel solves the same model without
     # the ~7 digits the nodal form loses to the 2e11 N/m joint springs (five_bar_kernel.hpp), so it
@@ -75,12 +75,12 @@ def test_unreachable_points_are_nan_and_masked(five_bar_map):
     # P is out of reach where it is farther than r1 + r2 from a base joint A_i = (-+r3, 0).
     far = (np.hypot(X + params.r3, Y) > params.r1 + params.r2 + 1e-9) | (np.hypot(X - params.r3, Y) > params.r1 + params.r2 + 1e-9)
     assert far.any()
-    unreachable = m.status[0] == mech.MapPointStatus.UNREACHABLE.value
+    unreachable = m.status[0] == mech.PostureStatus.UNREACHABLE.value
     assert unreachable[far].all()
     for name in m.field_names:
         assert np.isnan(m.field(name)[0][unreachable]).all(), name
     # Points with values have them; the mask is exactly the points without.
-    has = (m.status[0] == mech.MapPointStatus.OK.value) | (m.status[0] == mech.MapPointStatus.NEAR_SINGULAR.value)
+    has = (m.status[0] == mech.PostureStatus.OK.value) | (m.status[0] == mech.PostureStatus.NEAR_SINGULAR.value)
     np.testing.assert_array_equal(m.mask[0], ~has)
     assert np.isfinite(m.field("k_t_min")[0][has]).all()
     assert m.reachable_measure == pytest.approx(np.count_nonzero(~unreachable) * 0.01 * 0.01)
@@ -161,8 +161,8 @@ def test_design_sweep_counts_equal_separate_maps(sweep):
             design = mech.FiveBarKernelOptions()
             design.params.r1, design.params.r2 = sweep.r1[j, i], sweep.r2[j, i]
             m = mech.compute_workspace_map(mech.make_five_bar_kernel(design), o.region)  # the sweep's kernel
-            ok = m.status == mech.MapPointStatus.OK.value
-            assert sweep.reachable_share[j, i] == np.count_nonzero(m.status != mech.MapPointStatus.UNREACHABLE.value) / n
+            ok = m.status == mech.PostureStatus.OK.value
+            assert sweep.reachable_share[j, i] == np.count_nonzero(m.status != mech.PostureStatus.UNREACHABLE.value) / n
             assert sweep.singularity_free_share[j, i] == np.count_nonzero(ok) / n
             assert sweep.share[j, i] == np.count_nonzero(ok & (m.field("k_t_min") >= o.min_stiffness)) / n
             if ok.any():

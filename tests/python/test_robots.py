@@ -269,6 +269,8 @@ def test_python_kernel_errors_reach_the_caller():
         mech.compute_workspace_map(Raises(), grid)
     with pytest.raises(ks.InputError, match="needs the stiffness"):
         mech.evaluate_postures(ForgetsStiffness(), np.zeros((1, 3)))
+    with pytest.raises(ks.InputError, match="NEAR_SINGULAR is a map's verdict"):
+        mech.PostureResult(mech.PostureStatus.NEAR_SINGULAR, stiffness=np.eye(6))
     with pytest.raises(TypeError, match="__init__"):
         NoInit()
 

@@ -2,7 +2,7 @@
 //   grid:    origin, spacing (m), dimensions, units, order (x fastest)
 //   fields:  {name: flat array over the grid points, x fastest, null where the point has no value}
 //   units:   {name: SI unit}
-//   status:  flat array of MapPointStatus codes; status_codes: {code: word}
+//   status:  flat array of PostureStatus codes; status_codes: {code: word}
 //   summary: per field count, min, max, mean, argmin (m); status counts; reachable and stiff area
 //            (m^2) or volume (m^3)
 //   curves:  {label: [polyline [[x, y, z], ...] (m), ...]}

@@ -3,7 +3,7 @@
 // The grid's origin, spacing and dimensions are the map's (m). Point data: one double array per field,
 // named by the field alone ("k_t_min": no spaces or brackets, so ParaView's Calculator takes it
 // unquoted), its unit in the field data "FIELD_unit"; NaN where a point has no value (never a filler
-// number); "status" (unsigned char, MapPointStatus: 0 ok, 1 unreachable, 2 singular, 3 failed,
+// number); "status" (unsigned char, PostureStatus: 0 ok, 1 unreachable, 2 singular, 3 failed,
 // 4 near-singular); k_t_min is the active scalars. With hide_masked_points, points without stiffness
 // values (unreachable, singular, failed) are marked HIDDENPOINT in the point "vtkGhostType" and the
 // cells that touch them HIDDENCELL in the cell "vtkGhostType", so ParaView leaves them blank. Field

@@ -19,13 +19,19 @@
 
 namespace kinestat::mechanisms {
 
+// The one status of a posture, for kernels, maps and design sweeps.
 enum class PostureStatus : std::uint8_t {
   kOk = 0,           // stiffness, compliance and indices computed
   kUnreachable = 1,  // outside the workspace of the chosen working/assembly mode: no values
   kSingular = 2,     // reachable, but the stiffness is not defined there (a free motion): no values
   kFailed = 3,       // reachable, no answer (e.g. no loaded equilibrium: the load buckles the robot)
+  // Set by maps only (a kernel returns kOk there): values, and a singularity measure below
+  // MapOptions::near_singular_threshold.
+  kNearSingular = 4,
 };
-const char* to_string(PostureStatus s);  // "ok", "unreachable", "singular", "failed"
+inline constexpr int kNumPostureStatuses = 5;
+const char* to_string(PostureStatus s);  // "ok", "unreachable", "singular", "failed", "near-singular"
+inline bool has_values(PostureStatus s) { return s == PostureStatus::kOk || s == PostureStatus::kNearSingular; }
 
 // How a kernel computes the stiffness (the five-bar's and the robot files' kernels offer both).
 enum class StiffnessMethod { kMsa, kVjm };

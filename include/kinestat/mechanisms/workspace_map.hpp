@@ -64,19 +64,6 @@ double map_axis_points(const MapRange& r, double step);
 // grid has at most `max_points` points. kInvalidInput names the axis ("the x range") or the limit.
 StatusOr<MapGrid> make_map_grid(const std::array<MapRange, 3>& ranges, double step, std::size_t max_points);
 
-// Status of a map point: PostureStatus, plus kNearSingular for a point with values whose
-// singularity measure is below MapOptions::near_singular_threshold.
-enum class MapPointStatus : std::uint8_t {
-  kOk = 0,
-  kUnreachable = 1,
-  kSingular = 2,
-  kFailed = 3,
-  kNearSingular = 4,
-};
-inline constexpr int kNumMapPointStatuses = 5;
-const char* to_string(MapPointStatus s);  // "ok", "unreachable", "singular", "failed", "near-singular"
-inline bool has_values(MapPointStatus s) { return s == MapPointStatus::kOk || s == MapPointStatus::kNearSingular; }
-
 // The fields of a map point, from the 6x6 tool-point stiffness K and compliance C = K^-1 (blocks
 // _tt translational, _rr rotational). Units SI; the indices of the whole 6x6 mix units (Goncalves
 // et al. 2010 section 3 computes them all the same). The directional stiffnesses are those a force
@@ -162,9 +149,9 @@ struct WorkspaceMap {
   std::string description;  // the kernel's (robot, mode, method)
   double near_singular_threshold = 0.0;
   std::optional<double> min_stiffness;  // N/m
-  std::vector<MapPointStatus> status;   // per grid point
+  std::vector<PostureStatus> status;   // per grid point
   std::vector<FieldValues> fields;      // every MapField, the deflections only with a load
-  std::array<std::size_t, kNumMapPointStatuses> status_counts{};
+  std::array<std::size_t, kNumPostureStatuses> status_counts{};
   double reachable_measure = 0.0;  // m^2 or m^3: points not kUnreachable, times cell_measure()
   double stiff_measure = 0.0;      // points with k_t_min >= min_stiffness, times cell_measure(); 0 without
   std::vector<MapCurve> curves;    // set by the caller (e.g. five_bar_singular_loci); written to JSON and PNG
