@@ -32,7 +32,8 @@ struct LegItemFactors {
 
 // Appends the leg's factors to `chain` (robot_model.cpp); with `items`, records where each item's
 // factors are.
+// With `vjm_leg` (not kinematic), records the factors that a posture moves (RobotVjmChains::Leg).
 void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain& chain, const Vec3& tool,
-                std::vector<LegItemFactors>* items = nullptr);
+                std::vector<LegItemFactors>* items = nullptr, RobotVjmChains::Leg* vjm_leg = nullptr);
 
 }  // namespace kinestat::mechanisms

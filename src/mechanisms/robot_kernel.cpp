@@ -65,19 +65,45 @@ class RobotKernel final : public PostureKernel {
   explicit RobotKernel(const RobotKernelOptions& o)
       : o_(o), axes_(o.map_axes ? *o.map_axes : default_map_axes(*o.model)), data_(make_robot_data(*o.model)) {
     if (o_.task.size() == 0) o_.task = o_.model->home_task();
+    task_ = o_.task;
+    posture_ = start_ = previous_ = o_.model->home();
+    if (o_.method == StiffnessMethod::kVjm) {
+      chains_ = make_robot_vjm_chains(*o_.model);
+      // Unloaded: the regular path's data (K_theta factored once); a model whose chains do not
+      // validate leaves it empty, and every posture takes the reference path, which says why.
+      if (!o_.wrench && !o_.displacement && !vjm::prepare_regular_stiffness(chains_.chains, regular_).ok())
+        regular_.chains.clear();
+    }
   }
 
   PostureResult evaluate(const Vec3& point) override {
     posture_ = o_.model->home();
-    return finish(solve_posture(*o_.model, task_at(point), posture_, data_, true));
+    set_task(point);
+    predictable_ = false;
+    point_ = point;
+    return finish(solve_posture(*o_.model, task_, posture_, data_, true));
   }
 
+  // Newton from the previous point's posture; along a row of the map's path (the same grid step as
+  // the last one) from the linear extrapolation of the last two postures, whose error is second
+  // order in the step (a Newton iteration fewer). A start that fails is retried from the previous
+  // posture, then by the walk from home: the same branch tests accept the answer either way.
   PostureResult evaluate_next(const Vec3& point) override {
     if (!solved_) return evaluate(point);
-    RobotPosture start = posture_;
-    const KinematicsResult k = solve_posture(*o_.model, task_at(point), posture_, data_, false);
-    if (k.status == KinematicsStatus::kOk) return finish(k);
-    posture_ = start;
+    start_ = posture_;
+    set_task(point);
+    const bool predict = predictable_ && (point - 2.0 * point_ + previous_point_).norm() <= 1e-9 * (point - point_).norm();
+    if (predict) {
+      posture_.q = 2.0 * start_.q - previous_.q;
+      posture_.tool.translation() = 2.0 * start_.tool.translation() - previous_.tool.translation();
+      posture_.tool.linear() = start_.tool.linear() * previous_.tool.linear().transpose() * start_.tool.linear();
+      const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
+      if (k.status == KinematicsStatus::kOk) return next(point, k);
+      posture_ = start_;
+    }
+    const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
+    if (k.status == KinematicsStatus::kOk) return next(point, k);
+    posture_ = start_;
     return evaluate(point);
   }
 
@@ -89,11 +115,18 @@ class RobotKernel final : public PostureKernel {
   }
 
  private:
-  VecX task_at(const Vec3& point) const {
-    VecX t = o_.task;
+  void set_task(const Vec3& point) {
     for (int a = 0; a < 3; ++a)
-      if (axes_[a] >= 0) t(axes_[a]) = point(a);
-    return t;
+      if (axes_[a] >= 0) task_(axes_[a]) = point(a);
+  }
+
+  // A solved neighbour: start_ (the previous posture) becomes the one before.
+  PostureResult next(const Vec3& point, const KinematicsResult& k) {
+    previous_ = start_;
+    previous_point_ = point_;
+    point_ = point;
+    predictable_ = true;
+    return finish(k);
   }
 
   PostureResult finish(const KinematicsResult& k) {
@@ -104,8 +137,17 @@ class RobotKernel final : public PostureKernel {
     r.status = PostureStatus::kSingular;
     if (k.status == KinematicsStatus::kSingular) return r;
     StatusOr<CartesianStiffness> K = Status::Internal("not computed");
-    const std::vector<vjm::Chain> chains =
-        o_.method == StiffnessMethod::kVjm ? robot_vjm_chains(*o_.model, posture_) : std::vector<vjm::Chain>();
+    if (o_.method == StiffnessMethod::kVjm) set_robot_vjm_posture(*o_.model, posture_, chains_);
+    const std::vector<vjm::Chain>& chains = chains_.chains;
+    if (o_.method == StiffnessMethod::kVjm && !o_.wrench && !o_.displacement &&
+        vjm::regular_platform_unloaded_stiffness(chains, regular_, regular_result_)) {
+      // A regular posture (vjm/stiffness.hpp): platform_unloaded_stiffness's answer, found faster.
+      r.stiffness = regular_result_.stiffness;
+      r.compliance = regular_result_.compliance;
+      r.indices = cartesian_indices(r.stiffness);
+      r.status = PostureStatus::kOk;
+      return r;
+    }
     if (o_.method == StiffnessMethod::kMsa) {
       const StatusOr<msa::Structure> s = robot_msa_structure(*o_.model, posture_);
       if (!s.ok()) {
@@ -144,7 +186,15 @@ class RobotKernel final : public PostureKernel {
   RobotKernelOptions o_;
   std::array<int, 3> axes_;
   RobotData data_;
-  RobotPosture posture_;
+  VecX task_;  // the task at the current point
+  RobotPosture posture_, start_;
+  // The path's last two points and the posture before posture_ (extrapolation, evaluate_next).
+  RobotPosture previous_;
+  Vec3 point_ = Vec3::Zero(), previous_point_ = Vec3::Zero();
+  bool predictable_ = false;
+  RobotVjmChains chains_;  // VJM: the legs' chains, moved to each posture
+  vjm::RegularStiffnessData regular_;
+  CartesianStiffness regular_result_;
   bool solved_ = false;
   msa::Workspace workspace_;  // MSA: the factorization's symbolic analysis, kept across postures
 };

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "kinestat/core/small_qr.hpp"
 #include "kinestat/mechanisms/robot_model.hpp"
 #include "robot_equations.hpp"
 
@@ -58,10 +59,11 @@ void evaluate(const RobotModel& m, const RobotPosture& p, const VecX& task, Robo
   const auto& d = m.description();
   data.residual.setZero();
   data.jacobian.setZero();
-  const VecX no_theta;
   for (int l = 0; l < m.num_legs(); ++l) {
     const int off = m.leg_offset(l), nl = m.leg_coordinates(l);
-    const vjm::ChainJacobians J = vjm::jacobians(m.kinematic_chain(l), p.q.segment(off, nl), no_theta);
+    data.leg_q[l] = p.q.segment(off, nl);
+    vjm::ChainJacobians& J = data.leg_jacobians[l];
+    vjm::jacobians(m.kinematic_chain(l), data.leg_q[l], data.no_theta, J);
     const Vec6 diff = vjm::pose_difference(J.pose, p.tool);
     for (int i = 0; i < e; ++i) {
       const int comp = d.planar ? kPlanarComponents[i] : i;
@@ -110,10 +112,191 @@ void apply_step(const RobotModel& m, const VecX& dx, RobotPosture& p) {
   p.tool = vjm::displace(p.tool, twist);
 }
 
-// Damped Newton from `p` to the target; the inverse Jacobian's LU at the solution stays in data.lu.
-// A residual that does not at least halve after a full (undamped) step, from the third on, is not
-// converging (Newton from a good start converges quadratically): the caller shortens its step
-// instead of iterating on.
+// The block factorization of RobotBlockFactors (robot_model.hpp) of a matrix A of its structure.
+// Its equations are A's: the same unknowns, the same solution to round-off, a cost linear in the
+// legs (a dense LU of the Delta's 21 or the hexapod's 42 unknowns was a quarter of a map's time).
+void block_layout(RobotBlockFactors& f, int equations, int platform, const std::vector<int>& counts) {
+  f.equations = equations;
+  f.platform = platform;
+  f.legs.assign(counts.size(), {});
+  int column = 0;
+  for (std::size_t l = 0; l < counts.size(); ++l) {
+    f.legs[l].column = column;
+    f.legs[l].count = counts[l];
+    column += counts[l];
+  }
+  f.size = column + platform;
+  f.S = RobotBlockFactors::Small::Zero(platform, platform);
+  f.lu = Eigen::PartialPivLU<RobotBlockFactors::Small>(platform);
+  f.x = f.v = f.sign = f.old_sign = VecX::Zero(f.size);
+}
+
+// False (and f.regular false) when a pivot is zero: A is singular (det A = +-prod det R det S).
+bool block_factor(const MatX& A, RobotBlockFactors& f) {
+  const int e = f.equations, np = f.platform, pc = f.size - np;
+  const int closure = static_cast<int>(f.legs.size()) * e;
+  f.regular = false;
+  int row = 0;
+  for (std::size_t l = 0; l < f.legs.size(); ++l) {
+    RobotBlockFactors::Leg& g = f.legs[l];
+    const int k = g.count, r0 = static_cast<int>(l) * e;
+    if (k > e || row + e - k > np) return false;  // not a valid model's structure (refused at home)
+    g.R.setZero();
+    g.R.topLeftCorner(e, k) = A.block(r0, g.column, e, k);
+    g.reflections = householder_qr(g.R, e, k, g.Q);
+    for (int i = 0; i < k; ++i)
+      if (!(g.R(i, i) != 0.0)) return false;
+    g.G.setZero();
+    g.G.topLeftCorner(e, np).noalias() = g.Q.topLeftCorner(e, e).transpose() * A.block(r0, pc, e, np);
+    f.S.middleRows(row, e - k) = g.G.block(k, 0, e - k, np);
+    row += e - k;
+  }
+  f.S.bottomRows(np - row) = A.block(closure, pc, np - row, np);
+  f.lu.compute(f.S);
+  const auto& U = f.lu.matrixLU();
+  for (int i = 0; i < np; ++i)
+    if (!(U(i, i) != 0.0)) return false;
+  // ||A||_1, the largest column sum of |A| (PartialPivLU's l1 norm).
+  f.norm = A.cwiseAbs().colwise().sum().maxCoeff();
+  f.regular = true;
+  return true;
+}
+
+// A x = b, x into b.
+void block_solve(RobotBlockFactors& f, VecX& b) {
+  const int e = f.equations, np = f.platform;
+  const int closure = static_cast<int>(f.legs.size()) * e;
+  RobotBlockFactors::SmallVector rhs(np);
+  int row = 0;
+  // Q^T b per leg: the first count rows stay in b's leg rows (they become the leg's unknowns), the
+  // others are S's right-hand side.
+  for (std::size_t l = 0; l < f.legs.size(); ++l) {
+    RobotBlockFactors::Leg& g = f.legs[l];
+    const int k = g.count, r0 = static_cast<int>(l) * e;
+    for (int i = 0; i < e; ++i) {
+      double t = 0.0;
+      for (int j = 0; j < e; ++j) t += g.Q(j, i) * b(r0 + j);
+      f.v(r0 + i) = t;
+      if (i >= k) rhs(row + i - k) = t;
+    }
+    row += e - k;
+  }
+  rhs.tail(np - row) = b.segment(closure, np - row);
+  const RobotBlockFactors::SmallVector xp = f.lu.solve(rhs);
+  b.tail(np) = xp;
+  for (std::size_t l = 0; l < f.legs.size(); ++l) {
+    RobotBlockFactors::Leg& g = f.legs[l];
+    const int k = g.count, r0 = static_cast<int>(l) * e;
+    double y[6];
+    for (int i = k - 1; i >= 0; --i) {  // R x_l = Q1^T b_l - G1 x_p
+      double t = f.v(r0 + i);
+      for (int j = 0; j < np; ++j) t -= g.G(i, j) * xp(j);
+      for (int j = i + 1; j < k; ++j) t -= g.R(i, j) * y[j];
+      y[i] = t / g.R(i, i);
+    }
+    for (int i = 0; i < k; ++i) b(g.column + i) = y[i];
+  }
+}
+
+// A^T y = c, y into c: per leg R^T z1 = c_l, then S^T (z2 per leg, y_task) = c_p - sum G1^T z1,
+// and y_l = Q z.
+void block_solve_transpose(RobotBlockFactors& f, VecX& c) {
+  const int e = f.equations, np = f.platform;
+  const int closure = static_cast<int>(f.legs.size()) * e;
+  RobotBlockFactors::SmallVector cp = c.tail(np);
+  for (std::size_t l = 0; l < f.legs.size(); ++l) {
+    RobotBlockFactors::Leg& g = f.legs[l];
+    const int k = g.count, r0 = static_cast<int>(l) * e;
+    double z[6];
+    for (int i = 0; i < k; ++i) {  // R^T z1 = c_l
+      double t = c(g.column + i);
+      for (int j = 0; j < i; ++j) t -= g.R(j, i) * z[j];
+      z[i] = t / g.R(i, i);
+    }
+    for (int j = 0; j < np; ++j)
+      for (int i = 0; i < k; ++i) cp(j) -= g.G(i, j) * z[i];
+    for (int i = 0; i < k; ++i) f.v(r0 + i) = z[i];
+  }
+  const RobotBlockFactors::SmallVector w = f.lu.transpose().solve(cp);
+  int row = 0;
+  for (std::size_t l = 0; l < f.legs.size(); ++l) {
+    RobotBlockFactors::Leg& g = f.legs[l];
+    const int k = g.count, r0 = static_cast<int>(l) * e;
+    double z[6];
+    for (int i = 0; i < e; ++i) z[i] = i < k ? f.v(r0 + i) : w(row + i - k);
+    row += e - k;
+    for (int i = 0; i < e; ++i) {
+      double t = 0.0;
+      for (int j = 0; j < e; ++j) t += g.Q(i, j) * z[j];
+      c(r0 + i) = t;
+    }
+  }
+  c.segment(closure, np - row) = w.tail(np - row);
+}
+
+// The sign of det A: the legs' reflections (det Q = -1 each), the row order that makes the
+// transformed A block upper triangular (each leg's e - count Schur rows move past the later legs'
+// R rows), det R and det S.
+int block_det_sign(const RobotBlockFactors& f) {
+  int sign = 1, later = 0;
+  for (auto g = f.legs.rbegin(); g != f.legs.rend(); ++g) {
+    if (g->reflections % 2) sign = -sign;
+    if (((f.equations - g->count) * later) % 2) sign = -sign;
+    later += g->count;
+    for (int i = 0; i < g->count; ++i)
+      if (g->R(i, i) < 0) sign = -sign;
+  }
+  return f.lu.determinant() < 0 ? -sign : sign;
+}
+
+// The reciprocal condition number in the 1-norm of A, by Eigen's estimator of ||A^-1||_1 (Higham
+// 1988, algorithms 4.1 and 5.1, as PartialPivLU::rcond) on the block solves; 0 when singular.
+double block_rcond(RobotBlockFactors& f) {
+  if (!f.regular || !(f.norm > 0.0)) return 0.0;
+  const int n = f.size;
+  VecX& v = f.x;
+  v.setConstant(1.0 / n);
+  block_solve(f, v);
+  double lower = v.lpNorm<1>();
+  if (n == 1) return 1.0 / (f.norm * lower);
+  double old_lower = lower;
+  Eigen::Index jmax = -1, old_jmax = -1;
+  for (int k = 0; k < 4; ++k) {
+    for (int i = 0; i < n; ++i) f.sign(i) = v(i) < 0 ? -1.0 : 1.0;
+    if (k > 0 && f.sign == f.old_sign) break;
+    v = f.sign;
+    block_solve_transpose(f, v);
+    v.cwiseAbs().maxCoeff(&jmax);
+    if (jmax == old_jmax) break;
+    v.setZero();
+    v(jmax) = 1.0;
+    block_solve(f, v);
+    lower = v.lpNorm<1>();
+    if (lower <= old_lower) break;
+    f.old_sign = f.sign;
+    old_jmax = jmax;
+    old_lower = lower;
+  }
+  double alternating = 1.0;
+  for (int i = 0; i < n; ++i) {
+    v(i) = alternating * (1.0 + static_cast<double>(i) / (n - 1));
+    alternating = -alternating;
+  }
+  block_solve(f, v);
+  const double estimate = std::max(lower, 2.0 * v.lpNorm<1>() / (3.0 * n));
+  return 1.0 / (f.norm * estimate);
+}
+
+// Newton's matrix: the inverse Jacobian, length-scaled (rows and columns), factored by blocks.
+void factor_scaled_inverse(RobotData& data) {
+  data.scaled_inverse.noalias() = data.row_scale.asDiagonal() * data.jacobian * data.column_scale.asDiagonal();
+  block_factor(data.scaled_inverse, data.inverse_factors);
+}
+
+// Damped Newton from `p` to the target; the scaled inverse Jacobian's factors at the solution stay
+// in data.inverse_factors. A residual that does not at least halve after a full (undamped) step,
+// from the third on, is not converging (Newton from a good start converges quadratically): the
+// caller shortens its step instead of iterating on.
 bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& data, int& iterations) {
   double previous = std::numeric_limits<double>::infinity();
   bool damped = true;
@@ -121,12 +304,16 @@ bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& d
     evaluate(m, p, task, data);
     if (!data.residual.allFinite()) return false;
     const double r = scaled_norm(m, data.residual, true);
-    data.lu.compute(data.jacobian);
+    factor_scaled_inverse(data);
     if (r < kTolerance) return true;
     if (it >= 2 && !damped && r > 0.5 * previous) return false;
     previous = r;
     ++iterations;
-    data.step = -data.lu.solve(data.residual);
+    if (!data.inverse_factors.regular) return false;
+    // (Dr J Dc) y = -Dr r, dx = Dc y.
+    data.step = -data.row_scale.cwiseProduct(data.residual);
+    block_solve(data.inverse_factors, data.step);
+    data.step.array() *= data.column_scale.array();
     if (!data.step.allFinite()) return false;
     const double s = scaled_norm(m, data.step, false);
     damped = s > kMaxNewtonStep;
@@ -136,18 +323,43 @@ bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& d
   return false;
 }
 
-int sign_of(double x) { return x > 0 ? 1 : -1; }
+// The sign of det of factored blocks; -1 for a singular matrix (the dense LU's zero determinant).
+int sign_of(const RobotBlockFactors& f) { return f.regular ? block_det_sign(f) : -1; }
 
 }  // namespace
 
 RobotData make_robot_data(const RobotModel& model) {
   const int size = model.num_coordinates() + platform_components(model);
   RobotData d;
-  d.x = VecX::Zero(size);
   d.residual = VecX::Zero(size);
   d.step = VecX::Zero(size);
   d.jacobian = MatX::Zero(size, size);
-  d.lu = Eigen::PartialPivLU<MatX>(size);
+  std::vector<int> coordinates, passive;
+  for (int l = 0; l < model.num_legs(); ++l) {
+    d.leg_q.push_back(VecX::Zero(model.leg_coordinates(l)));
+    vjm::ChainJacobians J;
+    J.Jq = MatX::Zero(6, model.leg_coordinates(l));
+    d.leg_jacobians.push_back(std::move(J));
+    coordinates.push_back(model.leg_coordinates(l));
+    passive.push_back(0);
+    for (int k = model.leg_offset(l); k < model.leg_offset(l + 1); ++k)
+      if (!model.actuated(model.coordinates()[k])) ++passive.back();
+  }
+  d.row_scale.resize(size);
+  d.column_scale.resize(size);
+  for (int i = 0; i < size; ++i) {
+    d.row_scale(i) = equation_is_length(model, i) ? 1.0 / model.length_scale() : 1.0;
+    d.column_scale(i) = unknown_is_length(model, i) ? model.length_scale() : 1.0;
+    if (i >= model.num_coordinates() || !model.actuated(model.coordinates()[i])) d.direct_columns.push_back(i);
+  }
+  const int closure = model.num_legs() * model.equations_per_leg(), direct = static_cast<int>(d.direct_columns.size());
+  d.scaled_inverse = MatX::Zero(size, size);
+  d.direct = MatX::Zero(closure, direct);
+  block_layout(d.inverse_factors, model.equations_per_leg(), platform_components(model), coordinates);
+  block_layout(d.direct_factors, model.equations_per_leg(), platform_components(model), passive);
+  const int tasks = static_cast<int>(model.description().task.size());
+  d.start = d.delta = d.target = VecX::Zero(tasks);
+  d.trial = model.home();
   return d;
 }
 
@@ -169,41 +381,47 @@ std::string column_name(const RobotModel& model, int unknown) {
   return fmt::format("the platform's {}", kNames[platform_component(model, unknown - n)]);
 }
 
+namespace {
+
+// The length-scaled inverse and direct Jacobians at (posture, task) into data.scaled_inverse and
+// data.direct (robot_jacobians).
+void scaled_jacobians(const RobotModel& model, const RobotPosture& posture, RobotData& data, const VecX& task) {
+  evaluate(model, posture, task, data);
+  // Length-scaled, so that singular values compare m and rad.
+  data.scaled_inverse.noalias() = data.row_scale.asDiagonal() * data.jacobian * data.column_scale.asDiagonal();
+  const int closure = model.num_legs() * model.equations_per_leg();
+  for (std::size_t k = 0; k < data.direct_columns.size(); ++k)
+    data.direct.col(static_cast<int>(k)) = data.scaled_inverse.col(data.direct_columns[k]).head(closure);
+}
+
+}  // namespace
+
 RobotJacobians robot_jacobians(const RobotModel& model, const RobotPosture& posture, RobotData& data,
                                const VecX& task) {
-  evaluate(model, posture, task, data);
+  scaled_jacobians(model, posture, data, task);
   RobotJacobians J;
   J.residual = data.residual;
-  // Length-scaled, so that singular values compare m and rad.
-  const int size = static_cast<int>(data.jacobian.rows());
-  VecX rows(size), cols(size);
-  for (int i = 0; i < size; ++i) {
-    rows(i) = equation_is_length(model, i) ? 1.0 / model.length_scale() : 1.0;
-    cols(i) = unknown_is_length(model, i) ? model.length_scale() : 1.0;
-    J.inverse_columns.push_back(i);
-  }
-  J.inverse = rows.asDiagonal() * data.jacobian * cols.asDiagonal();
-  const int closure = model.num_legs() * model.equations_per_leg();
-  for (int u = 0; u < size; ++u)
-    if (u >= model.num_coordinates() || !model.actuated(model.coordinates()[u])) J.direct_columns.push_back(u);
-  J.direct.resize(closure, static_cast<int>(J.direct_columns.size()));
-  for (std::size_t k = 0; k < J.direct_columns.size(); ++k)
-    J.direct.col(static_cast<int>(k)) = J.inverse.col(J.direct_columns[k]).head(closure);
+  J.inverse = data.scaled_inverse;
+  J.direct = data.direct;
+  for (int i = 0; i < J.inverse.cols(); ++i) J.inverse_columns.push_back(i);
+  J.direct_columns = data.direct_columns;
   return J;
 }
 
 KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotPosture& posture, RobotData& data,
                                bool continuation) {
   KinematicsResult out;
-  auto same_branch = [&] { return sign_of(data.lu.determinant()) == model.home_inverse_sign(); };
+  auto same_branch = [&] { return sign_of(data.inverse_factors) == model.home_inverse_sign(); };
   if (!continuation) {
     if (!newton(model, task, posture, data, out.iterations) || !same_branch()) {
       out.message = "no closure from the neighbouring posture on its branch";
       return out;
     }
   } else {
-    const VecX start = task_values(model, posture.tool);
-    VecX delta = task - start;
+    VecX& start = data.start;
+    VecX& delta = data.delta;
+    start = task_values(model, posture.tool);
+    delta = task - start;
     for (int t = 0; t < delta.size(); ++t)
       if (is_angle(model.description().task[t])) delta(t) = std::remainder(delta(t), 2.0 * M_PI);
     double distance = 0.0;
@@ -214,11 +432,12 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
     distance = std::sqrt(distance);
     const double max_h = distance > kContinuationStep ? kContinuationStep / distance : 1.0;
     double s = 0.0, h = max_h;
-    RobotPosture trial;
+    RobotPosture& trial = data.trial;
     while (s < 1.0) {
       const double next = std::min(1.0, s + h);
       trial = posture;
-      if (newton(model, start + next * delta, trial, data, out.iterations) && same_branch()) {
+      data.target = start + next * delta;
+      if (newton(model, data.target, trial, data, out.iterations) && same_branch()) {
         posture = trial;
         s = next;
         h = std::min(2.0 * h, max_h);
@@ -243,19 +462,23 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
       return out;
     }
   }
-  const RobotJacobians J = robot_jacobians(model, posture, data, task);
-  // The reciprocal condition numbers (LAPACK's 1-norm estimate on the LU, O(n^2)) of the
-  // length-scaled Jacobians: a singular value decomposition per posture would cost more than the
-  // rest of the kinematics.
-  const Eigen::PartialPivLU<MatX> inverse(J.inverse), direct(J.direct);
-  out.singularity_measure = std::min(inverse.rcond(), direct.rcond());
+  // Newton's last evaluation is at this posture (a converged Newton returns right after it): its
+  // scaled inverse Jacobian and factors are the solution's; the direct Jacobian is its columns.
+  const int closure = model.num_legs() * model.equations_per_leg();
+  for (std::size_t k = 0; k < data.direct_columns.size(); ++k)
+    data.direct.col(static_cast<int>(k)) = data.scaled_inverse.col(data.direct_columns[k]).head(closure);
+  block_factor(data.direct, data.direct_factors);
+  // The reciprocal condition numbers (LAPACK's 1-norm estimate, O(n^2) solves) of the length-scaled
+  // Jacobians: a singular value decomposition per posture would cost more than the rest of the
+  // kinematics.
+  out.singularity_measure = std::min(block_rcond(data.inverse_factors), block_rcond(data.direct_factors));
   if (!(out.singularity_measure >= 1e-12)) {
     out.singularity_measure = 0.0;
     out.status = KinematicsStatus::kSingular;
     out.message = "the closure equations lose rank here";
     return out;
   }
-  if (sign_of(direct.determinant()) != model.home_direct_sign()) {
+  if (sign_of(data.direct_factors) != model.home_direct_sign()) {
     out.status = KinematicsStatus::kOtherBranch;
     out.message = "the platform is on another assembly mode than at home";
     return out;

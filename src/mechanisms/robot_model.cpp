@@ -78,7 +78,7 @@ void add_spring(vjm::Chain& c, const RobotSpring& s) {
 // passive variable and leaves the springs out; otherwise actuated coordinates become actuators at
 // their values (rigid ones locked) and passive ones passive joints, springs in place.
 void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain& chain, const Vec3& tool,
-                std::vector<LegItemFactors>* items) {
+                std::vector<LegItemFactors>* items, RobotVjmChains::Leg* vjm_leg) {
   Vec3 at = Vec3::Zero();
   auto move_to = [&](const Vec3& p, const std::string& label) {
     if (p != at) chain.add_translation(p - at, label);
@@ -102,9 +102,14 @@ void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain
     auto motion = [&](JointType type, const Vec3& axis, int index, const std::string& label) {
       const double value = q[k++];
       if (!kinematic && j.actuated && index == 0) {
+        if (vjm_leg) {
+          vjm_leg->actuator_factor.push_back(count());
+          vjm_leg->actuator_coordinate.push_back(k - 1);
+        }
         chain.add_actuator(type, axis, value, j.actuator_stiffness, label + " (actuator)");
         return -1;
       }
+      if (vjm_leg) vjm_leg->passive_coordinate.push_back(k - 1);
       return chain.add_passive(type, axis, value, label);
     };
     switch (j.type) {
@@ -284,21 +289,45 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
   return m;
 }
 
-std::vector<vjm::Chain> robot_vjm_chains(const RobotModel& model, const RobotPosture& posture) {
-  std::vector<vjm::Chain> chains;
-  chains.reserve(model.num_legs());
+RobotVjmChains make_robot_vjm_chains(const RobotModel& model) {
+  RobotVjmChains out;
   const RobotDescription& d = model.description();
-  // Each chain ends at the tool point with base axes: its tool transform takes the leg's end
-  // (the platform frame at this posture) back to base axes.
+  const RobotPosture& home = model.home();
   for (int l = 0; l < model.num_legs(); ++l) {
     vjm::Chain c(d.legs[l].name);
-    append_leg(d.legs[l], posture.q.data() + model.leg_offset(l), false, c, d.tool);
-    vjm::Transform back = vjm::Transform::Identity();
-    back.linear() = posture.tool.linear().transpose();
-    c.add_transform(back, "tool (base axes)");
-    chains.push_back(std::move(c));
+    RobotVjmChains::Leg leg;
+    append_leg(d.legs[l], home.q.data() + model.leg_offset(l), false, c, d.tool, nullptr, &leg);
+    // Each chain ends at the tool point with base axes: its tool transform takes the leg's end
+    // (the platform frame at the posture) back to base axes (identity at home).
+    leg.tool_factor = static_cast<int>(c.factors().size());
+    c.add_transform(vjm::Transform::Identity(), "tool (base axes)");
+    leg.passive = VecX::Zero(static_cast<int>(leg.passive_coordinate.size()));
+    out.chains.push_back(std::move(c));
+    out.legs.push_back(std::move(leg));
   }
-  return chains;
+  return out;
+}
+
+void set_robot_vjm_posture(const RobotModel& model, const RobotPosture& posture, RobotVjmChains& chains) {
+  vjm::Transform back = vjm::Transform::Identity();
+  back.linear() = posture.tool.linear().transpose();
+  for (int l = 0; l < model.num_legs(); ++l) {
+    vjm::Chain& c = chains.chains[l];
+    RobotVjmChains::Leg& leg = chains.legs[l];
+    const double* q = posture.q.data() + model.leg_offset(l);
+    for (std::size_t a = 0; a < leg.actuator_factor.size(); ++a)
+      c.set_offset(leg.actuator_factor[a], q[leg.actuator_coordinate[a]]);
+    for (std::size_t i = 0; i < leg.passive_coordinate.size(); ++i)
+      leg.passive(static_cast<Eigen::Index>(i)) = q[leg.passive_coordinate[i]];
+    c.set_nominal_passive(leg.passive);
+    c.set_transform(leg.tool_factor, back);
+  }
+}
+
+std::vector<vjm::Chain> robot_vjm_chains(const RobotModel& model, const RobotPosture& posture) {
+  RobotVjmChains c = make_robot_vjm_chains(model);
+  set_robot_vjm_posture(model, posture, c);
+  return std::move(c.chains);
 }
 
 }  // namespace kinestat::mechanisms

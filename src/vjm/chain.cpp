@@ -66,6 +66,16 @@ Status Chain::set_spring_stiffness(int index, const Mat6& K) {
   return Status::Ok();
 }
 
+void Chain::set_offset(int factor, double offset) {
+  if (factor >= 0 && factor < static_cast<int>(factors_.size()) && factors_[factor].is_motion)
+    factors_[factor].offset = offset;
+}
+
+void Chain::set_transform(int factor, const Transform& T) {
+  if (factor >= 0 && factor < static_cast<int>(factors_.size()) && !factors_[factor].is_motion)
+    factors_[factor].transform = T;
+}
+
 int Chain::add_passive(JointType type, const Vec3& axis, double nominal, std::string label) {
   const int index = num_passive();
   nominal_q_.push_back(nominal);
@@ -207,18 +217,41 @@ std::vector<Transform> factor_poses(const Chain& chain, const VecX& q, const Vec
 }
 
 ChainJacobians jacobians(const Chain& chain, const VecX& q, const VecX& theta) {
-  std::vector<FactorTwist> tw;
   ChainJacobians J;
-  J.pose = walk(chain, q, theta, &tw);
-  J.Jq = MatX::Zero(6, chain.num_passive());
-  J.Jtheta = MatX::Zero(6, chain.num_virtual());
-  const Vec3 p = J.pose.translation();
-  for (const FactorTwist& t : tw) {
-    MatX& M = t.var.kind == VariableKind::kPassive ? J.Jq : J.Jtheta;
-    M.col(t.var.index).head<3>() += t.v + t.w.cross(p);  // velocity of the tool point
-    M.col(t.var.index).tail<3>() += t.w;
-  }
+  jacobians(chain, q, theta, J);
   return J;
+}
+
+void jacobians(const Chain& chain, const VecX& q, const VecX& theta, ChainJacobians& J) {
+  J.Jq.setZero(6, chain.num_passive());
+  J.Jtheta.setZero(6, chain.num_virtual());
+  // The walk of (1) with each moving factor's twist summed into its coordinate's column as it goes
+  // (spatial form: the linear part is the velocity of the point at the origin); the tool point's
+  // velocity v + w x p needs the tool point, so the w x p part is added once at the end (linear in
+  // w: the same sum).
+  Transform T = Transform::Identity();
+  for (const Factor& f : chain.factors()) {
+    if (!f.is_motion) {
+      T = T * f.transform;
+      continue;
+    }
+    if (f.variable) {
+      const Vec3 a = T.linear() * f.axis;
+      const double c = f.variable->coefficient;
+      auto col = (f.variable->kind == VariableKind::kPassive ? J.Jq : J.Jtheta).col(f.variable->index);
+      if (f.type == JointType::kRevolute) {
+        col.head<3>() += c * T.translation().cross(a);
+        col.tail<3>() += c * a;
+      } else {
+        col.head<3>() += c * a;
+      }
+    }
+    T = T * elementary(f, coordinate(f, q, theta));
+  }
+  J.pose = T;
+  const Vec3 p = T.translation();
+  for (MatX* M : {&J.Jq, &J.Jtheta})
+    for (Eigen::Index k = 0; k < M->cols(); ++k) M->col(k).head<3>() += M->col(k).tail<3>().cross(p);
 }
 
 ChainHessians hessians(const Chain& chain, const VecX& q, const VecX& theta, const Vec6& F) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/core/small_qr.hpp"
 #include "kinestat/vjm/platform.hpp"
 #include "vjm/bordered_system.hpp"
 
@@ -184,6 +185,133 @@ StatusOr<CartesianStiffness> platform_loaded_stiffness(const std::vector<Chain>&
     return Status::Invalid(
         fmt::format("the platform state has {} chains, the platform {}", state.chains.size(), chains.size()));
   return platform_stiffness(chains, opt, [&](size_t i) { return loaded_stiffness(chains[i], state.chains[i], opt); });
+}
+
+}  // namespace kinestat::vjm
+
+namespace kinestat::vjm {
+
+namespace {
+
+// Up to 6 x 6, on the stack.
+using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+
+// The inverse of the lower triangle of `L` (n x n), by forward substitution.
+Small lower_inverse(const Small& L) {
+  const Eigen::Index n = L.rows();
+  Small X = Small::Identity(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
+    X.row(i) /= L(i, i);
+  }
+  return X;
+}
+
+// Eq. (10) of one chain, K = W N (N^T S~ N)^-1 N^T W, when the reference's two rank decisions are
+// certainly full (factor_bordered_system: J_q's rank, no rigid direction); false otherwise.
+bool regular_chain_stiffness(const Chain& chain, RegularStiffnessData::ChainData& d, double tol, Mat6& K) {
+  const int n = d.passive;
+  if (n > 6) return false;  // a self-motion: the reference names it
+  for (int i = 0; i < n; ++i) d.q(i) = chain.nominal_passive(i);
+  jacobians(chain, d.q, d.theta, d.J);
+  // S = J_theta K_theta^-1 J_theta^T, as spring_compliance.
+  Mat6 S = Mat6::Zero();
+  if (d.virtual_ > 0) {
+    d.compliance_rhs = d.J.Jtheta.transpose();
+    d.spring_factor.solveInPlace(d.compliance_rhs);
+    S.noalias() = d.J.Jtheta * d.compliance_rhs;
+    S = 0.5 * (S + S.transpose()).eval();
+  }
+  const double L = chain.length_scale();
+  const Vec6 w = twist_scale(L);
+  // J_q scaled, unit columns (factor_bordered_system); sigma_max <= ||Jn||_F = sqrt(n).
+  Mat6 A = Mat6::Zero();
+  for (int j = 0; j < n; ++j) {
+    A.col(j) = w.asDiagonal() * d.J.Jq.col(j);
+    const double c = A.col(j).norm();
+    if (!(c > 0.0)) return false;
+    A.col(j) /= c;
+  }
+  Mat6 Q;
+  householder_qr(A, 6, n, Q);
+  if (n > 0) {
+    Small R = A.topLeftCorner(n, n).triangularView<Eigen::Upper>();
+    // sigma_min >= 1 / ||R^-1||_F; R^-1 = (R^T)^-T, R^T lower.
+    const Small Rinv = lower_inverse(R.transpose());
+    if (!Rinv.allFinite() || !(1.0 / Rinv.norm() > 10.0 * tol * std::max(1.0, std::sqrt(double(n))))) return false;
+  }
+  const int c = 6 - n;
+  K.setZero();
+  if (c == 0) return true;  // the passive joints give every direction for free: K = 0
+  const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> N = Q.rightCols(c);
+  const Mat6 St = w.asDiagonal() * S * w.asDiagonal();
+  const Small C = N.transpose() * St * N;
+  const Eigen::LLT<Small> llt(C);
+  if (llt.info() != Eigen::Success) return false;
+  const Small Li = lower_inverse(llt.matrixL());
+  // lambda_min >= 1 / trace(C^-1) = 1 / ||L^-1||_F^2, lambda_max <= trace(C).
+  if (!Li.allFinite() || !(1.0 / Li.squaredNorm() > 10.0 * tol * C.trace())) return false;
+  const Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> Y = Li * N.transpose();
+  const Mat6 Kt = Y.transpose() * Y;
+  K = w.asDiagonal() * Kt * w.asDiagonal();
+  K = 0.5 * (K + K.transpose()).eval();
+  return true;
+}
+
+}  // namespace
+
+Status prepare_regular_stiffness(const std::vector<Chain>& chains, RegularStiffnessData& data,
+                                 const StiffnessOptions& opt) {
+  if (Status s = validate_platform(chains, opt.max_chain_coordinates); !s.ok()) return s;
+  data.chains.assign(chains.size(), {});
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    RegularStiffnessData::ChainData& d = data.chains[i];
+    d.passive = chains[i].num_passive();
+    d.virtual_ = chains[i].num_virtual();
+    if (d.virtual_ > 0) d.spring_factor.compute(chains[i].spring_stiffness());
+    d.q = VecX::Zero(d.passive);
+    d.theta = VecX::Zero(d.virtual_);
+    d.J.Jq = MatX::Zero(6, d.passive);
+    d.J.Jtheta = MatX::Zero(6, d.virtual_);
+    d.compliance_rhs = MatX::Zero(d.virtual_, 6);
+  }
+  return Status::Ok();
+}
+
+bool regular_platform_unloaded_stiffness(const std::vector<Chain>& chains, RegularStiffnessData& data,
+                                         CartesianStiffness& out, const StiffnessOptions& opt) {
+  if (chains.empty() || chains.size() != data.chains.size()) return false;
+  const double tol = opt.rank_tolerance;
+  Mat6 K = Mat6::Zero();
+  for (std::size_t i = 0; i < chains.size(); ++i) {
+    RegularStiffnessData::ChainData& d = data.chains[i];
+    if (chains[i].num_passive() != d.passive || chains[i].num_virtual() != d.virtual_) return false;
+    Mat6 Ki;
+    if (!regular_chain_stiffness(chains[i], d, tol, Ki)) return false;
+    // validate_platform's assembly check on the walks just made.
+    const double gap = (d.J.pose.translation() - data.chains[0].J.pose.translation()).norm();
+    if (!(gap <= 1e-9 * std::max(chains[i].length_scale(), chains[0].length_scale()))) return false;
+    K += Ki;
+  }
+  // aggregate's finish without rigid directions: K~ = W^-1 K W^-1 of full rank, C = K^-1.
+  const Vec6 w = twist_scale(platform_length_scale(chains));
+  const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
+  const Eigen::LLT<Mat6> llt(Kt);
+  if (llt.info() != Eigen::Success) return false;
+  const Small Li = lower_inverse(Small(llt.matrixL()));
+  if (!Li.allFinite() || !(1.0 / Li.squaredNorm() > 10.0 * tol * Kt.trace())) return false;
+  const Mat6 Ct = Li.transpose() * Li;
+  out.point = data.chains[0].J.pose.translation();
+  out.stiffness = K;
+  out.compliance = w.cwiseInverse().asDiagonal() * Ct * w.cwiseInverse().asDiagonal();
+  out.stiffness_defined = true;
+  out.compliance_defined = true;
+  out.free_directions.clear();
+  out.rigid_directions.clear();
+  out.indices.reset();
+  out.note.clear();
+  out.status = Status::Ok();
+  return true;
 }
 
 }  // namespace kinestat::vjm

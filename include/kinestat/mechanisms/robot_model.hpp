@@ -132,12 +132,47 @@ struct RobotPosture {
   vjm::Transform tool = vjm::Transform::Identity();
 };
 
-// Per-thread scratch of the kinematics (sized once by make_robot_data).
+// A Jacobian of the loop closure's structure factored leg by leg (robot_kinematics.cpp): leg l's
+// e equations (rows l e ..) involve only its own columns (`column` .. + `count`) and the platform's
+// np (the last columns); the rows after the legs' (the task's) the platform's only. Each leg's
+// e x count block is factored by a Householder QR, B = Q [R; 0]: its first `count` transformed rows
+// give the leg's unknowns from the platform's, the other e - count rows join the task's rows in
+// the np x np Schur complement S (S x_p = ..., an LU). The inverse kinematics Jacobian and the
+// direct one (the passive columns and the platform) have this structure. Solves (and solves with
+// the transpose, for the condition estimate) cost O(legs e^2) instead of a dense LU's O(size^3).
+struct RobotBlockFactors {
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+  using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+  struct Leg {
+    int column = 0, count = 0, reflections = 0;
+    Mat6 Q, R;  // R: the top-left count x count
+    Mat6 G;     // Q^T times the leg's platform columns (e x np)
+  };
+  std::vector<Leg> legs;
+  int equations = 6, platform = 6, size = 0;
+  Small S;
+  Eigen::PartialPivLU<Small> lu;
+  bool regular = false;  // every R and S of non-zero pivots
+  double norm = 0.0;     // the matrix's 1-norm
+  VecX x, v, sign, old_sign;  // scratch of the solves and the condition estimate
+};
+
+// Per-thread scratch of the kinematics, everything that changes per posture (sized once by
+// make_robot_data: solve_posture allocates nothing along a map's path).
 struct RobotData {
-  VecX x, residual, step;
+  VecX residual, step;
   MatX jacobian;
-  Eigen::PartialPivLU<MatX> lu;
-  std::vector<VecX> leg_q;
+  std::vector<VecX> leg_q;                        // each leg's coordinates
+  std::vector<vjm::ChainJacobians> leg_jacobians;  // each leg's kinematic chain at them
+  VecX no_theta;                                  // the kinematic chains have no springs
+  // The length-scaled Jacobians (Newton's and robot_jacobians') and their factorizations.
+  VecX row_scale, column_scale;
+  std::vector<int> direct_columns;
+  MatX scaled_inverse, direct;
+  RobotBlockFactors inverse_factors, direct_factors;
+  // Continuation: the start's task values, the walk's direction, a trial posture.
+  VecX start, delta, target;
+  RobotPosture trial;
 };
 RobotData make_robot_data(const RobotModel& model);
 
@@ -245,5 +280,21 @@ std::vector<RobotItemFrames> robot_leg_frames(const RobotModel& model, int leg, 
 // with their springs (rigid: locked), passive joints at their values, the springs in place; each
 // chain ends at the tool point with base axes.
 std::vector<vjm::Chain> robot_vjm_chains(const RobotModel& model, const RobotPosture& posture);
+
+// The same chains built once (make_robot_vjm_chains: at home) and moved to a posture in place
+// (set_robot_vjm_posture: the actuators' values, the passive joints' nominal values and the tool
+// transform; no allocation), as a posture kernel keeps them. robot_vjm_chains is the two in a row.
+struct RobotVjmChains {
+  std::vector<vjm::Chain> chains;
+  struct Leg {
+    std::vector<int> actuator_factor, actuator_coordinate;  // the leg's coordinate index of each actuator
+    std::vector<int> passive_coordinate;                    // of each passive joint, in the chain's order
+    int tool_factor = -1;                                   // the transform back to base axes
+    VecX passive;                                           // scratch: the passive joints' values
+  };
+  std::vector<Leg> legs;
+};
+RobotVjmChains make_robot_vjm_chains(const RobotModel& model);
+void set_robot_vjm_posture(const RobotModel& model, const RobotPosture& posture, RobotVjmChains& chains);
 
 }  // namespace kinestat::mechanisms

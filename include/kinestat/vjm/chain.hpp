@@ -99,7 +99,14 @@ class Chain {
   int num_coordinates() const { return num_passive() + num_virtual(); }
   int num_virtual() const { return num_virtual_; }
   VecX nominal_passive() const { return Eigen::Map<const VecX>(nominal_q_.data(), num_passive()); }
+  double nominal_passive(int index) const { return nominal_q_[index]; }
   void set_nominal_passive(const VecX& q) { nominal_q_.assign(q.data(), q.data() + q.size()); }
+  // Posture updates of a chain built once (a posture kernel moves its chains from posture to
+  // posture, no factor added or removed): the constant part of motion factor `factor` (an actuated
+  // coordinate's value), the transform of constant factor `factor`. Out of range or the wrong kind
+  // of factor: ignored (the builder knows its indices).
+  void set_offset(int factor, double offset);
+  void set_transform(int factor, const Transform& T);
 
   // K_theta = diag(K_theta,1 ... ), m x m (eq. 6).
   MatX spring_stiffness() const;
@@ -130,6 +137,9 @@ struct ChainJacobians {
   MatX Jtheta;
 };
 ChainJacobians jacobians(const Chain& chain, const VecX& q, const VecX& theta);
+// The same into `J`, whose matrices keep their storage when already sized (a posture kernel's
+// preallocated data): no heap allocation then.
+void jacobians(const Chain& chain, const VecX& q, const VecX& theta, ChainJacobians& J);
 
 // The partial products of (1) at (q, theta): the pose before each factor, then the tool pose
 // (factors().size() + 1 poses). A factor's axis in base axes is poses[i].linear() * factor.axis.

@@ -46,6 +46,33 @@ CartesianStiffness aggregate(const std::vector<CartesianStiffness>& chains, doub
 
 StatusOr<CartesianStiffness> platform_unloaded_stiffness(const std::vector<Chain>& chains,
                                                          const StiffnessOptions& options = {});
+
+// platform_unloaded_stiffness for a posture kernel, which moves the same chains from posture to
+// posture (Chain::set_offset, set_transform, set_nominal_passive): the chains' structure is checked
+// and K_theta factored once (prepare_regular_stiffness), and each posture computes eq. (10) with
+// preallocated data and no rank-revealing decomposition, K = N (N^T S N)^-1 N^T (bordered_system.hpp)
+// with N from a Householder QR of the scaled J_q, N^T S N and the platform's sum by Cholesky.
+// It answers only where platform_unloaded_stiffness would find every rank full: each decision of
+// the reference (rank of J_q, rigid directions of a chain, free directions of the platform: a
+// singular value or eigenvalue below rank_tolerance of the largest) is certified with a margin of
+// 10 by the bounds sigma_min >= 1 / ||R^-1||_F, lambda_max <= trace, lambda_min >= 1 / trace(inverse).
+// Anywhere else (a singular posture or near one, chains changed in size, tool points apart) it
+// returns false and the caller calls platform_unloaded_stiffness, which diagnoses as always.
+struct RegularStiffnessData {
+  struct ChainData {
+    int passive = 0, virtual_ = 0;
+    Eigen::LLT<MatX> spring_factor;  // of K_theta
+    VecX q, theta;
+    ChainJacobians J;
+    MatX compliance_rhs;  // K_theta^-1 J_theta^T
+  };
+  std::vector<ChainData> chains;
+};
+// kInvalidInput: what validate_platform says.
+Status prepare_regular_stiffness(const std::vector<Chain>& chains, RegularStiffnessData& data,
+                                 const StiffnessOptions& options = {});
+bool regular_platform_unloaded_stiffness(const std::vector<Chain>& chains, RegularStiffnessData& data,
+                                         CartesianStiffness& out, const StiffnessOptions& options = {});
 StatusOr<CartesianStiffness> platform_loaded_stiffness(const std::vector<Chain>& chains, const PlatformState& state,
                                                        const StiffnessOptions& options = {});
 
