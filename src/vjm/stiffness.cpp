@@ -196,14 +196,10 @@ namespace {
 // Up to 6 x 6, on the stack.
 using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
 
-// The inverse of the lower triangle of `L` (n x n), by forward substitution.
+// The inverse of the lower triangle of `L` (n x n), by Eigen's triangular solve.
 Small lower_inverse(const Small& L) {
-  const Eigen::Index n = L.rows();
-  Small X = Small::Identity(n, n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    for (Eigen::Index k = 0; k < i; ++k) X.row(i) -= L(i, k) * X.row(k);
-    X.row(i) /= L(i, i);
-  }
+  Small X = Small::Identity(L.rows(), L.cols());
+  L.triangularView<Eigen::Lower>().solveInPlace(X);
   return X;
 }
 
