@@ -539,6 +539,9 @@ TEST(Frame3ddReader, EachRecordBecomesItsSiLoad) {
   const msa::Beam& b = s->beams().at(0);
   EXPECT_EQ(b.theory, BeamTheory::kTimoshenko);                 // shear flag 1
   EXPECT_NEAR(s->sections()[0].Asz, 60e-6, 1e-18);              // mm^2 -> m^2
+  // The twist's polar moment (rotary mass, K_G's Wagner term) is Jxx, as in Frame3DD's element, not
+  // Iy + Iz = 1700 mm^4.
+  EXPECT_NEAR(s->sections()[0].Ip, 2000e-12, 1e-24);
   EXPECT_NEAR(s->materials()[0].density, 7.85e-9 * 1e12, 1e-3);  // N s^2/mm^4 -> kg/m^3: 7850
   // Roll 30 deg about x = global X turns local y (global Y unrolled) towards local z (global Z).
   EXPECT_NEAR(b.orientation.y(), std::cos(std::numbers::pi / 6), 1e-15);
