@@ -137,7 +137,7 @@ Mat12 beam_local_geometric_stiffness(double N, double L, double polar_radius2) {
 
 Mat12 beam_local_mass(const Material& mat, const Section& s, double L, bool lumped, bool rotary_inertia) {
   Mat12 M = Mat12::Zero();
-  const double m = mat.density * s.A * L, mt = mat.density * (s.Iy + s.Iz) * L;
+  const double m = mat.density * s.A * L, mt = mat.density * polar_moment(s) * L;
   if (lumped) {
     for (int i : {0, 1, 2, 6, 7, 8}) M(i, i) = m / 2;
     M(3, 3) = M(9, 9) = mt / 2;

@@ -36,8 +36,11 @@ Section scaled_section(const Section& s, double factor) {
   out.Iy *= f4;
   out.Iz *= f4;
   out.J *= f4;
+  out.Ip *= f4;
   return out;
 }
+
+double polar_moment(const Section& s) { return s.Ip > 0.0 ? s.Ip : s.Iy + s.Iz; }
 
 double rectangle_torsion_constant(double b, double h) {
   const double a = std::max(b, h), c = std::min(b, h);  // long side a, short side c

@@ -304,9 +304,11 @@ class Reader {
                          "write 0 for the flag",
                          shear_line_));
       const int m = s_.add_material(Material{name, e.E, e.G, e.density});
-      // The shear areas count only with the shear flag, as in Frame3DD.
+      // The shear areas count only with the shear flag, as in Frame3DD. The polar moment of the twist
+      // (its rotary mass and K_G's Wagner term) is J: Frame3DD's mass and geometric stiffness matrices
+      // take Jxx there (docs/structure-format.md), where kinestat's default is Iy + Iz.
       const int sec = s_.add_section(
-          Section{name, e.A, e.Iy, e.Iz, e.J, shear_ ? e.Asy : 0.0, shear_ ? e.Asz : 0.0});
+          Section{name, e.A, e.Iy, e.Iz, e.J, shear_ ? e.Asy : 0.0, shear_ ? e.Asz : 0.0, e.J});
       msa::Beam b;
       b.id = name;
       b.node1 = e.n1 - 1;

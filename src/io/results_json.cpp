@@ -288,6 +288,19 @@ StatusOr<json> modes_to_json(const msa::Structure& s, const msa::ModalResult& r,
                 {"num_free_dofs", r.num_free_dofs}};
   j["status"] = status_json(r.status);
   j["mass_matrix"] = lumped ? "lumped" : "consistent";
+  // The stiffness the frequencies are of: the unstressed K (null) or K + K_G of a load case's axial forces.
+  j["prestress"] = nullptr;
+  if (r.prestress) {
+    const msa::ModalPrestressReport& p = *r.prestress;
+    if (p.axial_force.size() != s.beams().size())
+      return Status::Invalid(fmt::format("modal result: {} prestress axial forces for a structure of {} beams",
+                                         p.axial_force.size(), s.beams().size()));
+    json pre = {{"load_case", p.load_case_name}, {"load_case_index", p.load_case}, {"second_order", p.second_order}};
+    pre["axial_forces"] = json::array();
+    for (std::size_t i = 0; i < p.axial_force.size(); ++i)
+      pre["axial_forces"].push_back({{"beam", s.beams()[i].id}, {"N", p.axial_force[i]}});
+    j["prestress"] = std::move(pre);
+  }
   j["total_mass"] = to_array(r.total_mass);
   j["modes"] = json::array();
   for (std::size_t k = 0; k < r.modes.size(); ++k) {

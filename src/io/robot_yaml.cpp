@@ -299,7 +299,7 @@ class RobotReader : public YamlFields {
       if (b["count"].IsDefined()) {
         const double count = expr(b["count"], label, "count");
         if (!(count >= 1 && count == std::floor(count))) fail(b["count"], label, "'count' is a whole number >= 1");
-        for (double* p : {&bars.A, &bars.Asy, &bars.Asz, &bars.Iy, &bars.Iz, &bars.J}) *p *= count;
+        for (double* p : {&bars.A, &bars.Asy, &bars.Asz, &bars.Iy, &bars.Iz, &bars.J, &bars.Ip}) *p *= count;
       }
       RobotSpring cantilever;
       cantilever.label = l.label;

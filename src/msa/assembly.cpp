@@ -49,7 +49,7 @@ GeometricStiffness assemble_geometric_stiffness(const Structure& s, const std::v
   for (size_t i = 0; i < s.beams().size(); ++i) {
     const Beam& b = s.beams()[i];
     const Section& sec = s.sections()[b.section];
-    const double r2 = torsion_term ? (sec.Iy + sec.Iz) / sec.A : 0.0;
+    const double r2 = torsion_term ? polar_moment(sec) / sec.A : 0.0;
     g.local.push_back(beam_local_geometric_stiffness(axial_force[i], s.beam_length(b), r2));
     const Mat12 T = beam_transformation(s.beam_axes(b));
     const Mat12 kg = T.transpose() * g.local.back() * T;

@@ -25,7 +25,7 @@ StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s);
 // beam's local K_G (elements/beam_element.hpp) for its axial force `axial_force[i]` (N, tension
 // positive), and their sum rotated to global axes (6N x 6N, every beam's 12 x 12 blocks kept as
 // structural entries, so K + K_G has one sparsity pattern whatever the forces). `torsion_term`: the
-// Wagner term N (Iy + Iz) / (A L) (BucklingOptions::torsion_term says why).
+// Wagner term N Ip / (A L), Ip = polar_moment(section) (BucklingOptions::torsion_term says why).
 struct GeometricStiffness {
   std::vector<Mat12> local;     // per beam, local axes
   solver::SparseMatrix global;  // 6N x 6N, global axes, no supports applied

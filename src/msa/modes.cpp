@@ -47,9 +47,28 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
                                                        "nothing vibrates; add 'masses:' or beams with a density"));
     return res;
   }
-  res.linear = solve(s, opt.solve);
+  const int nc = static_cast<int>(s.load_cases().size());
+  const LoadCase* prestress_case = nullptr;
+  if (opt.prestress) {
+    const int c = opt.prestress->load_case;
+    if (c < 0 || c >= nc) {
+      res.status = Status::Invalid(at_source(
+          s.source(), nc == 0 ? std::string("a prestress needs a load case (its axial forces stress the structure), "
+                                            "and the structure has none; add one, or ask for no prestress")
+                              : fmt::format("prestress: load case index {} out of range (the structure has {}: 0..{})",
+                                            c, nc, nc - 1)));
+      return res;
+    }
+    prestress_case = &s.load_cases()[static_cast<std::size_t>(c)];
+  }
+  const bool second_order = opt.prestress && opt.prestress->second_order;
+  res.linear = second_order ? solve_second_order(s, opt.prestress->second_order_options, opt.solve) : solve(s, opt.solve);
   if (!res.linear.status.ok()) {
     res.status = res.linear.status;
+    // The second-order solve's own failures (loads at the critical load, no convergence) name their
+    // case; they are said to be the prestress's.
+    if (second_order && res.status.code() == StatusCode::kNotConverged)
+      res.status = Status::NotConverged("prestress: " + res.status.message());
     return res;
   }
   auto map = build_dof_map(s);
@@ -57,6 +76,19 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
   if (!map.ok() || !K.ok()) {  // cannot happen: solve() built both
     res.status = Status::Internal("modes: the assembly failed after the static solve succeeded");
     return res;
+  }
+  if (opt.prestress) {
+    // K + K_G(N): the tangent stiffness of the structure under the case's loads (the K_G of buckling
+    // and of the second-order solve, msa/assembly.hpp).
+    ModalPrestressReport pre;
+    pre.load_case = opt.prestress->load_case;
+    pre.load_case_name = prestress_case->name;
+    pre.second_order = second_order;
+    pre.axial_force = second_order ? res.linear.second_order->axial_force[static_cast<std::size_t>(pre.load_case)]
+                                   : beam_axial_forces(res.linear.cases[static_cast<std::size_t>(pre.load_case)]
+                                                           .beam_end_forces);
+    *K += assemble_geometric_stiffness(s, pre.axial_force, opt.prestress->second_order_options.torsion_term).global;
+    res.prestress = std::move(pre);
   }
   std::vector<Eigen::Triplet<double>> trip;
   trip.reserve(144 * s.beams().size());
@@ -94,6 +126,17 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
   // M q = mu K q, mu = 1/omega^2: the lowest frequencies are the largest mu (msa/generalized_eigen.hpp).
   auto chol = solver::make_sparse_cholesky(opt.solve.cholesky);
   if (Status st = chol->Factorize(Kr, nullptr); !st.ok()) {
+    // The elastic K passed the static solve's checks, so a failed K + K_G is the prestress's: by
+    // Sylvester's inertia along K + lambda K_G it is positive definite exactly below the case's first
+    // critical load factor, and the structure would buckle under that prestress, not vibrate.
+    if (opt.prestress && st.code() == StatusCode::kSingular)
+      st = Status::Invalid(at_source(
+          prestress_case->source.empty() ? s.source() : prestress_case->source,
+          fmt::format("prestress of load case '{}': its loads are at or past the critical (buckling) load: K + K_G "
+                      "is not positive definite ({}), so the prestressed structure has no natural frequencies (the "
+                      "first would be 0 or imaginary); reduce the loads or choose another case (`kinestat buckling` "
+                      "gives the critical load factor of a YAML file's case)",
+                      prestress_case->name, st.message())));
     res.status = st;
     return res;
   }

@@ -128,13 +128,14 @@ Status Structure::validate() const {
   }
   for (const auto& s : sections_) {
     const std::pair<const char*, double> values[] = {{"A", s.A}, {"Iy", s.Iy}, {"Iz", s.Iz}, {"J", s.J},
-                                                     {"Asy", s.Asy}, {"Asz", s.Asz}};
+                                                     {"Asy", s.Asy}, {"Asz", s.Asz}, {"Ip", s.Ip}};
     for (const auto& [name, value] : values) {
       const bool area = name[0] == 'A';
-      const bool shear = area && name[1] == 's';  // 0 = no shear deformation
+      // Shear areas: 0 = no shear deformation; Ip: 0 = Iy + Iz.
+      const bool zero_allowed = (area && name[1] == 's') || name[1] == 'p';
       if (Status st = check_quantity(value, area ? Quantity::kArea : Quantity::kInertia,
                                      fmt::format("section '{}': {}", s.id, name), {},
-                                     shear ? Sign::kNonNegative : Sign::kPositive);
+                                     zero_allowed ? Sign::kNonNegative : Sign::kPositive);
           !st.ok())
         return st;
     }

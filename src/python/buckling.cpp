@@ -13,7 +13,7 @@ void bind_msa_buckling(py::module_& m) {
       .def_readwrite("load_case", &BucklingOptions::load_case, "index of the load case (from 0)")
       .def_readwrite("count", &BucklingOptions::count, "how many of the smallest positive load factors")
       .def_readwrite("torsion_term", &BucklingOptions::torsion_term,
-                     "the Wagner term N (Iy + Iz) / (A L) of the geometric stiffness");
+                     "the Wagner term N Ip / (A L) of the geometric stiffness (Ip: Section.Ip, or Iy + Iz)");
 
   py::class_<BucklingMode>(m, "BucklingMode", "One critical load factor and its mode shape.")
       .def_readonly("load_factor", &BucklingMode::load_factor,

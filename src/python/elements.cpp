@@ -28,11 +28,11 @@ void bind_elements(py::module_& m) {
   py::class_<Section>(m, "Section",
                       "Cross-section of a prismatic beam in its local axes (x along the beam): areas in m^2, second "
                       "moments and torsion constant in m^4. Shear areas 0 = no shear deformation.")
-      .def(py::init([](std::string id, double A, double Iy, double Iz, double J, double Asy, double Asz) {
-             return Section{std::move(id), A, Iy, Iz, J, Asy, Asz};
+      .def(py::init([](std::string id, double A, double Iy, double Iz, double J, double Asy, double Asz, double Ip) {
+             return Section{std::move(id), A, Iy, Iz, J, Asy, Asz, Ip};
            }),
            py::arg("id") = "", py::arg("A") = 0.0, py::arg("Iy") = 0.0, py::arg("Iz") = 0.0, py::arg("J") = 0.0,
-           py::arg("Asy") = 0.0, py::arg("Asz") = 0.0)
+           py::arg("Asy") = 0.0, py::arg("Asz") = 0.0, py::arg("Ip") = 0.0)
       .def_readwrite("id", &Section::id)
       .def_readwrite("A", &Section::A, "area (m^2)")
       .def_readwrite("Iy", &Section::Iy, "second moment about local y (m^4)")
@@ -40,6 +40,8 @@ void bind_elements(py::module_& m) {
       .def_readwrite("J", &Section::J, "Saint-Venant torsion constant (m^4)")
       .def_readwrite("Asy", &Section::Asy, "shear area along local y (m^2)")
       .def_readwrite("Asz", &Section::Asz, "shear area along local z (m^2)")
+      .def_readwrite("Ip", &Section::Ip,
+                     "polar second moment of the twist: rotary mass and K_G's Wagner term (m^4); 0 = Iy + Iz")
       .def("__repr__", [](const Section& s) {
         return "Section(id='" + s.id + "', A=" + std::to_string(s.A) + ", Iy=" + std::to_string(s.Iy) +
                ", Iz=" + std::to_string(s.Iz) + ", J=" + std::to_string(s.J) + ")";

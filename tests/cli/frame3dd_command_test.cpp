@@ -2,7 +2,9 @@
 // required for .3dd and refused for YAML, a cantilever's tip deflection in SI.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -11,6 +13,7 @@
 
 #include "kinestat/cli/app.hpp"
 #include "cli_run.hpp"
+#include "../io/frame3dd_example_b2015.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -167,14 +170,108 @@ double top_sway(const std::string& json_text) {
   return j.at("load_cases")[0].at("displacements")[4].at("translation")[0].get<double>();
 }
 
-// kinestat modes says that it ignores the flag (Frame3DD's frequencies would be prestressed), and
-// refuses the massless column (density 0, no modal data) as for YAML.
-TEST(ModesFrame3dd, GeometricStiffnessFlagIsSaidNotUsed) {
+// kinestat modes says that the flag prestresses the structure by the last load case, as in
+// Frame3DD, and refuses the massless column (density 0, no modal data) as for YAML.
+TEST(ModesFrame3dd, GeometricStiffnessFlagPrestressesByTheLastCase) {
   const CliRun r = run_cli({"modes", write_temp("modes_pdelta.3dd", with_flag(1)), "--units", "N-mm"});
   EXPECT_EQ(r.code, kExitBadInput);
-  expect_contains(r.err, "modes_pdelta.3dd:16: geometric stiffness flag 1: kinestat modes gives the unstressed");
+  expect_contains(r.err, "modes_pdelta.3dd:16: geometric stiffness flag 1: as Frame3DD, the frequencies of the "
+                         "structure prestressed by its last load case, 'case 1'");
   expect_contains(r.err, "modes_pdelta.3dd:29: 0 dynamic modes and no modal data");
   expect_contains(r.err, "has no density");
+}
+
+// The column with steel's density (7.85e-9 t/mm^3) and a load past Euler's (3000 N > 2591 N): the
+// prestressed structure has no frequency. With the flag 1 the second-order solve finds no
+// equilibrium; with the flag 0 and --prestress, K + K_G is not positive definite. Both exit 2 naming
+// the case. Below it (the file's 2000 N), the compression lowers the first frequency.
+TEST(ModesFrame3dd, PrestressPastTheCriticalLoadIsRefused) {
+  std::string heavy = with_flag(1);
+  for (std::size_t at = heavy.find("81000  0  0"); at != std::string::npos; at = heavy.find("81000  0  0"))
+    heavy.replace(at, 11, "81000  0  7.85e-9");
+  const std::string light = heavy;
+  heavy.replace(heavy.find("-2000"), 5, "-3000");
+  CliRun r = run_cli({"modes", write_temp("modes_heavy1.3dd", heavy), "--units", "N-mm", "--count", "1"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "prestress: ");
+  expect_contains(r.err, "load case 'case 1': the loads reach or exceed the critical (buckling) load");
+  std::string heavy0 = heavy;
+  heavy0[heavy0.find("1   # geometric")] = '0';
+  r = run_cli({"modes", write_temp("modes_heavy0.3dd", heavy0), "--units", "N-mm", "--count", "1", "--prestress",
+               "case 1"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "prestress of load case 'case 1': its loads are at or past the critical (buckling) load");
+  // 2000 N = 0.77 P_cr: the sway frequency falls roughly as sqrt(1 - P/P_cr) = 0.48 (inexact: the
+  // vibration and buckling modes of a cantilever differ): measured 2.0574 / 4.1776 Hz = 0.49 of the
+  // unstressed one; asserted below 0.6.
+  const std::string file = write_temp("modes_light.3dd", light);
+  r = run_cli({"modes", file, "--units", "N-mm", "--count", "1", "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const nlohmann::json pre = nlohmann::json::parse(r.out);
+  r = run_cli({"modes", file, "--units", "N-mm", "--count", "1", "--json", "-", "--prestress", "none"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  expect_contains(r.err, "but --prestress none: the unstressed structure's frequencies");
+  const nlohmann::json none = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(none.at("prestress").is_null());
+  EXPECT_LT(pre.at("modes")[0].at("frequency").get<double>(), 0.6 * none.at("modes")[0].at("frequency").get<double>());
+}
+
+// Frame3DD's example B (2015) through the reader and `kinestat modes`, as a user runs it: the
+// geometric stiffness flag 1 prestresses the structure by case 3's second-order axial forces (the
+// members compressed by 20-76 N), as Frame3DD's modal analysis does with the K its static analysis
+// leaves, and the .3dd reader gives the twist Frame3DD's polar moment J (rotary mass and K_G).
+// Measured: modes 1-3 (apex sway, member bending) +2.00e-5, +2.12e-5, +1.97e-5, modes 4-6 -3.2e-6
+// relative to the printed frequencies; asserted within 4.5e-5, about twice the largest. Not to
+// the printed digits (1e-6 Hz): the case-3 axial forces of kinestat's second-order solve are 0.03 N
+// (0.04-0.14 %) smaller than the ones exB.out prints (the two iterations' conventions differ,
+// docs/stability-and-modes.md), and with exB.out's forces in K_G kinestat's matrices give all six
+// within 5.8e-6 (the rest: Frame3DD's shear terms in K_G, single-precision input). The linear
+// solve's forces would give 1.04e-4. Without the prestress (--prestress none) modes 1-3 are
+// 2.30-2.81 % above Frame3DD's: asserted above 2e-2, so the comparison tells the prestress apart.
+TEST(ModesFrame3dd, ExampleBGivesFrame3ddsPublishedFrequencies) {
+  const std::string file = write_temp("exB.3dd", io::kExampleB2015);
+  CliRun r = run_cli({"modes", file, "--units", "N-mm", "--json", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  expect_contains(r.err, "exB.3dd:19: geometric stiffness flag 1: as Frame3DD, the frequencies of the structure "
+                         "prestressed by its last load case, 'case 3'");
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json& pre = j.at("prestress");
+  EXPECT_EQ(pre.at("load_case"), "case 3");
+  EXPECT_EQ(pre.at("load_case_index"), 2);
+  EXPECT_EQ(pre.at("second_order"), true);
+  ASSERT_EQ(pre.at("axial_forces").size(), 4u);
+  // Total mass 1.020379e-01 t (exB.out): 0.1 t at the apex and the members' 2.037858e-03 t.
+  EXPECT_NEAR(j.at("total_mass")[0].get<double>(), 102.0379, 0.5e-3);
+  ASSERT_EQ(j.at("modes").size(), 6u);  // the file's 6 modes
+  constexpr double kTolerance = 4.5e-5;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < 6; ++k) {
+    const double published = io::kExampleB2015Frequencies[k], ours = j.at("modes")[k].at("frequency").get<double>();
+    std::printf("exB mode %zu: Frame3DD %.6f Hz, kinestat modes %.6f Hz (%+.2e)\n", k + 1, published, ours,
+                ours / published - 1.0);
+    worst = std::max(worst, std::abs(ours / published - 1.0));
+    EXPECT_NEAR(ours, published, kTolerance * published) << "mode " << k + 1;
+  }
+  std::printf("Frame3DD example B (2015) modes: all six within %.2e of the published frequencies\n", worst);
+  r = run_cli({"modes", file, "--units", "N-mm", "--json", "-", "--prestress", "none"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const nlohmann::json none = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(none.at("prestress").is_null());
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_GT(none.at("modes")[k].at("frequency").get<double>() / io::kExampleB2015Frequencies[k] - 1.0, 2e-2);
+  // Another case by name, and the refusals of the options.
+  r = run_cli({"modes", file, "--units", "N-mm", "--json", "-", "--prestress", "case 1", "--quiet"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("prestress").at("load_case"), "case 1");
+  r = run_cli({"modes", file, "--units", "N-mm", "--prestress", "case 9"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "no load case named 'case 9' (it has 'case 1', 'case 2', 'case 3')");
+  r = run_cli({"modes", file, "--units", "N-mm", "--prestress-index", "3"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "--prestress-index 3: the file has 3 load cases");
+  r = run_cli({"modes", kModels + "euler_column.yaml", "--second-order"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  expect_contains(r.err, "--second-order is for the prestress's axial forces");
 }
 
 TEST(SolveFrame3dd, GeometricStiffnessFlagGivesTheSecondOrderSolve) {

@@ -10,13 +10,12 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
 
 #include "kinestat/core/units.hpp"
-#include "kinestat/elements/beam_element.hpp"
 #include "kinestat/io/frame3dd.hpp"
 #include "kinestat/msa/modes.hpp"
 #include "kinestat/msa/static_analysis.hpp"
+#include "frame3dd_example_b2015.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -440,82 +439,6 @@ TEST(Frame3ddExampleB, ShearMemberLoadsAndTemperatureMatchPublishedOutput) {
   std::printf("Frame3DD example B (2008): largest difference %.3f half-digits of the printed values\n", worst);
 }
 
-// Frame3DD's example B as published with Frame3DD 20140514+ (pslack/frame3dd, examples/exB.out of
-// 2015): the pyramid again, now 1 m high with steel members (E = 200000 MPa, shear flag 1), self-weight
-// in every case and the geometric stiffness flag 1 (Frame3DD's second-order analysis). Its data
-// retyped from the input that exB.out echoes (members 1 and 4 run from the base to the apex there),
-// in N-mm (density in t/mm^3, gravity in mm/s^2), with its modal data (6 modes, consistent masses,
-// tolerance 1e-9, 0.1 t at the apex, no extra element mass).
-constexpr const char* kExampleB2015 = R"(Example B: a pyramid-shaped frame (N mm ton)
-5
-1	0.0	0.0	1000	0.0
-2	-1200	-900	0.0	0.0
-3	 1200	-900	0.0	0.0
-4	 1200	 900	0.0	0.0
-5	-1200	 900	0.0	0.0
-4
-2 1 1 1 1 1 1
-3 1 1 1 1 1 1
-4 1 1 1 1 1 1
-5 1 1 1 1 1 1
-4
-1 2 1	36.0	20.0	20.0	1000	492	492	200000	79300  0 7.85e-9
-2 1 3	36.0	20.0	20.0	1000	492	492	200000	79300  0 7.85e-9
-3 1 4	36.0	20.0	20.0	1000	492	492	200000	79300  0 7.85e-9
-4 5 1	36.0	20.0	20.0	1000	492	492	200000	79300  0 7.85e-9
-1
-1
-10.0
-1.0
-10.0
-3
-0 0 -9806.33
-1
-1 100 -200 -100 0 0 0
-0
-0
-0
-0
-0
-0 0 -9806.33
-0
-2
-2 0 0.1 0
-1 0 0 0.1
-2
-3 20 80 0.01 0.05
-  0 0 0 0
-  80 830 -0.05 0.07
-4 0 0 0 0
-  68 330 0.05 0.00
-  80 830 -0.05 0.07
-0
-1
-1 12e-6 10 10 20 10 10 -10
-0
-0 0 -9806.33
-0
-0
-0
-2
-1 0 100 -900 600
-2 0 -200 200 800
-0
-0
-6     # dynamic modes
-1     # subspace Jacobi
-0     # consistent masses
-1e-9  # tolerance
-0.0   # shift
-10.0  # exaggeration
-1     # nodes with extra inertia
-1  0.1  0 0 0
-0     # elements with extra mass
-6     # modes to animate
-1 2 3 4 5 6
-2     # pan rate
-)";
-
 // The apex (node 1) displacements it prints for cases 1-3 (mm and rad, 6 decimals).
 constexpr std::array<std::array<double, 6>, 3> kExampleB2015Apex = {{
     {0.014127, -0.050229, -0.022374, 0.000037, 0.000009, 0.000000},
@@ -526,13 +449,14 @@ constexpr std::array<std::array<double, 6>, 3> kExampleB2015Apex = {{
 // Frame3DD's second-order analysis is the same iteration on a slightly different element
 // (its src/frame3dd.c, geometric_K and assemble_K): the axial force of K_G is each element's force
 // at its first end, where kinestat takes the mean of both ends (they differ under self-weight along
-// the member: 113.5 and 110.8 N in member 1 of case 1), its torsion term uses J/A where kinestat uses
-// (Iy + Iz)/A, and its K_G has shear-deformation terms (here ~2e-4 of it). So the apex agrees to the
-// size of that difference, not to the printed digits: measured at most 7.55e-5 (case 3 rx: 0.0486205
-// against 0.048696; cases 1 and 2 within 2.8e-5), asserted within twice that, 1.5e-4 (mm and rad).
-// With Frame3DD's two conventions put into kinestat for a trial (not kept: the mean is the better
-// estimate of a member's axial force under self-weight), all 18 values agreed within 1.5e-6, so they
-// are what makes the difference. The linear solve misses 7 of the 18 by more than the tolerance
+// the member: 113.5 and 110.8 N in member 1 of case 1), and its K_G has shear-deformation terms (here
+// ~2e-4 of it); its torsion term's J/A is kinestat's too for a .3dd file (the reader sets the section's
+// polar moment Ip = J). So the apex agrees to the size of that difference, not to the printed digits:
+// measured at most 7.55e-5 (case 3 rx: 0.0486205 against 0.048696; cases 1 and 2 within 2.8e-5; the
+// same with (Iy + Iz)/A in the torsion term), asserted within twice that, 1.5e-4 (mm and rad). With
+// Frame3DD's first-end axial force (and J/A) put into kinestat for a trial (not kept: the mean is the
+// better estimate of a member's axial force under self-weight), all 18 values agreed within 1.5e-6,
+// so it is what makes the difference. The linear solve misses 7 of the 18 by more than the tolerance
 // (case 3 ux: 0.000490 against 0.000249; ry by 7.7e-3): the comparison tells the second order apart.
 TEST(Frame3ddExampleB2015, SecondOrderApexAgreesWithPublishedOutputToTheFormulationDifference) {
   Frame3ddAnalysis analysis;
@@ -558,104 +482,6 @@ TEST(Frame3ddExampleB2015, SecondOrderApexAgreesWithPublishedOutputToTheFormulat
   std::printf("Frame3DD example B (2015), second order: largest difference %.3g (mm, rad); the linear solve "
               "misses %d of 18 values by more than %.1e\n", worst, linear_misses, kTolerance);
   EXPECT_GE(linear_misses, 7);
-}
-
-// The natural frequencies exB.out prints (Hz, 6 decimals), consistent masses.
-constexpr std::array<double, 6> kExampleB2015Frequencies = {18.807942, 19.105451, 19.690439,
-                                                            31.711570, 35.159165, 42.248953};
-
-// kinestat modes on exB's modal data. The mass matrices are the same (kinestat's consistent beam mass
-// is Frame3DD's consistent_M, rotary inertia included, except the torsion term: rho J L there, rho
-// (Iy + Iz) L here), but the stiffness is not: Frame3DD's modal analysis (its main.c) takes the K
-// left by the static analysis, which with the geometric stiffness flag 1 holds K_G of the LAST load
-// case's axial forces (here case 3: members compressed by 20-76 N, Euler loads ~300-1200 N), so its
-// frequencies are those of the structure prestressed by case 3; kinestat modes gives the unstressed
-// structure's. Measured: modes 1-3 (apex sway, member bending) are 2.81e-2, 2.30e-2 and 2.36e-2 above
-// Frame3DD's, modes 4-6 (apex translations carried axially) within 6.7e-5. The reason is checked
-// here: only the apex is free (6 dofs), so K and M are assembled by hand from kinestat's element
-// matrices (reproducing modal_analysis to 1e-10), then given Frame3DD's two differences, K_G with the
-// case-3 first-end axial forces exB.out prints (kinestat's consistent K_G with J/A in its torsion
-// term) and the torsion mass rho J L: all six frequencies then agree within 5.8e-6 of the printed
-// ones (the rest: Frame3DD's shear terms in K_G, ~2e-4 of it, the forces' 3 printed decimals,
-// single-precision input). Asserted: that within 2 x 5.8e-6 = 1.2e-5; kinestat's own frequencies
-// within 2 x 6.7e-5 for modes 4-6 and 2.0e-2 to 3.0e-2 above for modes 1-3; the torsion mass alone
-// moves the frequencies by at most 1.9e-6 (asserted 4e-6): K_G makes the difference.
-TEST(Frame3ddExampleB2015, ModesAgreeWithPublishedFrequenciesOnceFrame3ddsPrestressIsAdded) {
-  Frame3ddAnalysis analysis;
-  const StatusOr<msa::Structure> s = read_frame3dd_string(kExampleB2015, "exB.3dd", units("N-mm"), nullptr, &analysis);
-  ASSERT_TRUE(s.ok()) << s.status().message();
-  EXPECT_EQ(analysis.modes, 6);
-  EXPECT_EQ(analysis.modes_source, "exB.3dd:57");
-  EXPECT_FALSE(analysis.lumped);
-  EXPECT_EQ(analysis.method, 1);
-  EXPECT_DOUBLE_EQ(analysis.tolerance, 1e-9);
-  ASSERT_EQ(s->masses().size(), 1u);
-  EXPECT_EQ(s->masses()[0].node, 0);
-  EXPECT_NEAR(s->masses()[0].mass, 100.0, 1e-12);  // 0.1 t
-  msa::ModalOptions opt;
-  opt.count = analysis.modes;
-  opt.lumped = analysis.lumped;
-  const msa::ModalResult r = msa::modal_analysis(*s, opt);
-  ASSERT_TRUE(r.status.ok()) << r.status.message();
-  ASSERT_EQ(r.modes.size(), 6u);
-  // Total mass 1.020379e-01 t: 0.1 t at the apex and the members' 2.037858e-03 t.
-  EXPECT_NEAR(r.total_mass.x(), 102.0379, 0.5e-3);
-
-  Eigen::Matrix<double, 6, 6> K = Eigen::Matrix<double, 6, 6>::Zero(), KG = K, M = K, MJ = K;
-  constexpr std::array<double, 4> kCase3FirstEnd = {-75.494, -74.048, -20.717, -22.163};  // N, tension +
-  for (std::size_t b = 0; b < 4; ++b) {
-    const msa::Beam& beam = s->beams()[b];
-    const Material& mat = s->materials()[static_cast<std::size_t>(beam.material)];
-    const Section& sec = s->sections()[static_cast<std::size_t>(beam.section)];
-    const double L = s->beam_length(beam);
-    const Mat12 T = beam_transformation(s->beam_axes(beam));
-    const Mat12 m = beam_local_mass(mat, sec, L, false, true);
-    Mat12 mj = m;
-    const double rj = mat.density * sec.J * L;
-    mj(3, 3) = mj(9, 9) = rj / 3;
-    mj(3, 9) = mj(9, 3) = rj / 6;
-    const int o = beam.node1 == 0 ? 0 : 6;  // the apex's dofs in the element
-    auto add = [&](Eigen::Matrix<double, 6, 6>& A, const Mat12& local) {
-      A += (T.transpose() * local * T).block<6, 6>(o, o);
-    };
-    add(K, beam_local_stiffness(mat, sec, L, beam.theory));
-    add(KG, beam_local_geometric_stiffness(kCase3FirstEnd[b], L, sec.J / sec.A));
-    add(M, m);
-    add(MJ, mj);
-  }
-  for (int d = 0; d < 3; ++d) {
-    M(d, d) += 100.0;
-    MJ(d, d) += 100.0;
-  }
-  auto frequencies = [](const Eigen::Matrix<double, 6, 6>& k, const Eigen::Matrix<double, 6, 6>& m) {
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(k, m);
-    return Eigen::Matrix<double, 6, 1>(es.eigenvalues().cwiseSqrt() / (2 * std::numbers::pi));
-  };
-  const Eigen::Matrix<double, 6, 1> hand = frequencies(K, M), torsion = frequencies(K, MJ),
-                                    frame3dd = frequencies(K + KG, MJ);
-  double worst_own = 0.0, worst_frame3dd = 0.0;
-  for (std::size_t k = 0; k < 6; ++k) {
-    const int i = static_cast<int>(k);
-    const double published = kExampleB2015Frequencies[k], ours = r.modes[k].frequency;
-    EXPECT_NEAR(hand(i), ours, 1e-10 * ours) << "mode " << k + 1;
-    EXPECT_NEAR(torsion(i), ours, 4e-6 * ours) << "mode " << k + 1;
-    EXPECT_NEAR(frame3dd(i), published, 1.2e-5 * published) << "mode " << k + 1;
-    const double rel = ours / published - 1.0;
-    if (k < 3) {
-      EXPECT_GT(rel, 2.0e-2) << "mode " << k + 1;
-      EXPECT_LT(rel, 3.0e-2) << "mode " << k + 1;
-    } else {
-      EXPECT_NEAR(ours, published, 1.4e-4 * published) << "mode " << k + 1;
-      worst_own = std::max(worst_own, std::abs(rel));
-    }
-    worst_frame3dd = std::max(worst_frame3dd, std::abs(frame3dd(i) / published - 1.0));
-    std::printf("exB mode %zu: Frame3DD %.6f Hz, kinestat %.6f Hz (%+.2e), with Frame3DD's K_G and torsion mass "
-                "%.6f Hz (%+.2e)\n",
-                k + 1, published, ours, rel, frame3dd(i), frame3dd(i) / published - 1.0);
-  }
-  std::printf("Frame3DD example B (2015) modes: kinestat within %.2e for modes 4-6; with Frame3DD's prestress and "
-              "torsion mass all within %.2e\n",
-              worst_own, worst_frame3dd);
 }
 
 // A cantilever with one load of each kind: what each record becomes (SI, local axes, one kinestat
@@ -713,6 +539,9 @@ TEST(Frame3ddReader, EachRecordBecomesItsSiLoad) {
   const msa::Beam& b = s->beams().at(0);
   EXPECT_EQ(b.theory, BeamTheory::kTimoshenko);                 // shear flag 1
   EXPECT_NEAR(s->sections()[0].Asz, 60e-6, 1e-18);              // mm^2 -> m^2
+  // The twist's polar moment (rotary mass, K_G's Wagner term) is Jxx, as in Frame3DD's element, not
+  // Iy + Iz = 1700 mm^4.
+  EXPECT_NEAR(s->sections()[0].Ip, 2000e-12, 1e-24);
   EXPECT_NEAR(s->materials()[0].density, 7.85e-9 * 1e12, 1e-3);  // N s^2/mm^4 -> kg/m^3: 7850
   // Roll 30 deg about x = global X turns local y (global Y unrolled) towards local z (global Z).
   EXPECT_NEAR(b.orientation.y(), std::cos(std::numbers::pi / 6), 1e-15);

@@ -45,6 +45,37 @@ def test_modes_simply_supported_first_frequency(source_dir):
     assert r.total_mass[0] == pytest.approx(rho * A * L, rel=1e-12)
 
 
+def test_modes_prestressed_by_the_axial_load(source_dir):
+    # The same column under its load case (1 kN compression = P_cr / 10.363): the sine mode vibrates at
+    # omega_0 sqrt(1 + P / P_cr) (docs/stability-and-modes.md), f_1 = 11.146 Hz. 8 consistent beams
+    # without rotary inertia: measured 1.82e-5 above it (tests/msa/modes_test.cpp gives the
+    # convergence); asserted within twice that.
+    s = ks.io.read_structure_yaml(str(source_dir / "models/euler_column.yaml"))
+    opt = ks.msa.ModalOptions()
+    opt.count = 1
+    opt.rotary_inertia = False
+    opt.prestress = ks.msa.ModalPrestress(load_case=0)
+    r = ks.msa.modal_analysis(s, opt)
+    A, I, rho, L = 0.02 * 0.03, 2e-8, 7850.0, 2.0
+    f0 = math.pi**2 * math.sqrt(E * I / (rho * A * L**4)) / (2 * math.pi)
+    pcr = math.pi**2 * E * I / L**2
+    exact = f0 * math.sqrt(1.0 - 1000.0 / pcr)
+    print(f"prestressed Euler column: f_1 = {r.modes[0].frequency:.6f} Hz, {r.modes[0].frequency / exact - 1:+.2e}")
+    assert r.modes[0].frequency > exact
+    assert r.modes[0].frequency == pytest.approx(exact, rel=2 * 1.82e-5)
+    assert r.prestress.load_case_name == "axial"
+    assert not r.prestress.second_order
+    np.testing.assert_allclose(r.prestress.axial_force, -1000.0, rtol=1e-9)
+    assert ks.msa.modal_analysis(s).prestress is None
+    # Past the critical load (11 kN > 10.363 kN): no frequency, InputError naming the case.
+    s.add_load_case(ks.msa.LoadCase("crushing", [ks.msa.NodalLoad(8, [-11000.0, 0, 0, 0, 0, 0])]))
+    opt.prestress = ks.msa.ModalPrestress(load_case=1)
+    with pytest.raises(ks.InputError) as e:
+        ks.msa.modal_analysis(s, opt)
+    assert "prestress of load case 'crushing'" in str(e.value)
+    assert "past the critical (buckling) load" in str(e.value)
+
+
 def cantilever(n, P, H=100.0, L=2.0):
     """A cantilever along x in n beams, clamped at x = 0, P along x (tension positive) and H along y at the tip."""
     s = ks.msa.Structure()

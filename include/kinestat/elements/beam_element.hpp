@@ -40,14 +40,16 @@ StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& re
 // Gallagher & Ziemian, "Matrix Structural Analysis", 2nd ed. (2000), eq. (9.18) with the end
 // moments set to zero (Przemieniecki 1968, on stability, gives the same terms). Bending in each plane:
 // (N/L) [6/5, L/10, -6/5, L/10; ., 2L^2/15, -L/10, -L^2/30; ...]; axial: (N/L) [1 -1; -1 1]; with
-// `polar_radius2` = (Iy + Iz)/A > 0, the torsion term N Ip/(A L) [1 -1; -1 1] (Wagner), 0: none.
+// `polar_radius2` = Ip/A > 0 (Ip: polar_moment(section)), the torsion term N Ip/(A L) [1 -1; -1 1]
+// (Wagner), 0: none.
 // The same matrix for a Timoshenko beam (its shear flexibility is in the elastic matrix only).
 // Symmetric; zero for rigid translations. Used as K_G in K phi = -lambda K_G phi (msa/buckling.hpp).
 Mat12 beam_local_geometric_stiffness(double N, double length, double polar_radius2 = 0.0);
 
 // 12x12 local mass matrix (kg, kg m, kg m^2) of a prismatic beam of `m.density`. Consistent
 // (Przemieniecki, "Theory of Matrix Structural Analysis" (1968), ch. 11, the beam element's mass matrix):
-// axial rho A L/6 [2 1; 1 2], torsion rho Ip L/6 [2 1; 1 2] (Ip = Iy + Iz, the polar second moment),
+// axial rho A L/6 [2 1; 1 2], torsion rho Ip L/6 [2 1; 1 2] (Ip = polar_moment(s): Iy + Iz unless
+// the section says otherwise, elements/section.hpp),
 // bending rho A L/420 [156 22L 54 -13L; ...] plus, with `rotary_inertia`, the cross-section's rotary
 // inertia rho I/(30 L) [36 3L -36 3L; ...]. Lumped: rho A L / 2 on each node's translations and
 // rho Ip L / 2 on its twist, nothing on the bending rotations (Cook et al., "Concepts and

@@ -14,7 +14,14 @@ struct Section {
   double J = 0.0;    // Saint-Venant torsion constant
   double Asy = 0.0;  // shear area along local y (Timoshenko); 0 = no shear deformation
   double Asz = 0.0;  // shear area along local z
+  // Polar second moment of the twist: the rotary inertia rho Ip L of the beam mass and the Wagner
+  // term N Ip/(A L) of the geometric stiffness. 0 (the default): Iy + Iz, the centroidal polar moment
+  // (physical for any section). The Frame3DD reader sets J, which is what Frame3DD's element takes there.
+  double Ip = 0.0;
 };
+
+// The polar second moment of the twist: Section::Ip, or Iy + Iz when it is 0.
+double polar_moment(const Section& s);
 
 // Standard shapes. Shear areas use the usual shear coefficients: 9/10 for a solid circle,
 // 1/2 for a thin tube, 5/6 for a rectangle, the webs for a hollow rectangle.

@@ -18,9 +18,9 @@ struct BucklingOptions {
   SolveOptions solve;     // of the linear solve that gives the axial forces (and of K's factorization)
   int load_case = 0;      // index into Structure::load_cases()
   int count = 3;          // how many of the smallest positive load factors
-  // Include the torsion (Wagner) term N (Iy + Iz) / (A L) of K_G: torsional buckling of open thin
-  // sections is outside a 12-dof beam anyway, but the term keeps a compressed member's twist from
-  // being stiffer than it is.
+  // Include the torsion (Wagner) term N Ip / (A L) of K_G (Ip: polar_moment, elements/section.hpp):
+  // torsional buckling of open thin sections is outside a 12-dof beam anyway, but the term keeps a
+  // compressed member's twist from being stiffer than it is.
   bool torsion_term = true;
 };
 

@@ -1,9 +1,13 @@
 // Natural frequencies and mode shapes of an msa::Structure: K phi = omega^2 M phi on the reduced
 // dofs u = C q of the static solve (supports and rigid ties), M assembled from the beams' density
 // (elements/beam_element.hpp: consistent or lumped) and the structure's nodal masses and rotary
-// inertias. Documented in docs/stability-and-modes.md.
+// inertias. With ModalOptions::prestress, K is the tangent stiffness K + K_G(N) of one load case's
+// axial forces (the prestressed structure, as Frame3DD's modal analysis with its geometric stiffness
+// flag). Documented in docs/stability-and-modes.md.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "kinestat/core/status.hpp"
@@ -12,11 +16,32 @@
 
 namespace kinestat::msa {
 
+// The prestress of the vibrating structure: K_G of one load case's axial forces (the K_G of buckling
+// and solve_second_order, msa/buckling.hpp) is added to K. Tension raises the frequencies, compression
+// lowers them; at the case's critical load the first one reaches 0 (beyond it: kInvalidInput).
+struct ModalPrestress {
+  int load_case = 0;          // index into Structure::load_cases()
+  // The axial forces of solve_second_order (every load case is solved so, as Frame3DD does with its
+  // geometric stiffness flag 1) instead of the linear solve's.
+  bool second_order = false;
+  // Its tolerance and iterations; torsion_term (the Wagner term of K_G) counts with either solve.
+  SecondOrderOptions second_order_options;
+};
+
 struct ModalOptions {
   SolveOptions solve;         // of the factorization of K (and its singularity diagnosis)
   int count = 6;              // how many of the lowest frequencies
   bool lumped = false;        // lumped instead of consistent beam masses
   bool rotary_inertia = true; // the cross-sections' rotary inertia in the consistent mass
+  std::optional<ModalPrestress> prestress;  // none: the unstressed structure
+};
+
+// What prestressed the structure (ModalResult::prestress).
+struct ModalPrestressReport {
+  int load_case = 0;
+  std::string load_case_name;
+  bool second_order = false;
+  std::vector<double> axial_force;  // per beam, N (tension positive): (N2 - N1) / 2, the N of K_G
 };
 
 struct VibrationMode {
@@ -30,10 +55,14 @@ struct VibrationMode {
 
 struct ModalResult {
   // kInvalidInput (bad model, a beam without density in a structure without nodal masses, a beam with
-  // end releases), kSingular (K
-  // singular: see `linear.singularity`), kNotConverged (the eigensolver), kInternal.
+  // end releases, a prestress at or beyond its case's critical load), kSingular (K singular: see
+  // `linear.singularity`), kNotConverged (the eigensolver, or the second-order solve of a prestress:
+  // its message says which), kInternal.
   Status status;
-  Solution linear;            // the static solve (its checks and diagnosis; load cases if any)
+  // The static solve (its checks and diagnosis; load cases if any); solve_second_order's with a
+  // second-order prestress.
+  Solution linear;
+  std::optional<ModalPrestressReport> prestress;  // set when ModalOptions::prestress is
   int num_free_dofs = 0;
   Vec3 total_mass = Vec3::Zero();  // r_d' M r_d over every node (supported ones included), kg
   std::vector<VibrationMode> modes;  // ascending frequency
