@@ -226,7 +226,7 @@ TEST(LinkStiffnessCommand, ModesOfTheBarInReportJsonAndVtk) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(LinkStiffnessCommand, ModesRefuseABadCountAMasslessMaterialAndPetsc) {
+TEST(LinkStiffnessCommand, ModesRefuseABadCountAndAMasslessMaterial) {
   CliRun r = run_link_stiffness({kBar, "--clamp", "x=0", "--reference", "x=200", "--modes", "0"});
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("--modes 0: give a count from 1 to 100"), std::string::npos) << r.err;
