@@ -1,4 +1,4 @@
-// kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--vtk DIR] [--json FILE|-]
+// kinestat link-stiffness MESH --material ... --clamp ... --reference ... [--modes N] [--vtk DIR] [--json FILE|-]
 //     [--convergence] [--solver cholmod|petsc-mumps|petsc-cg [--cg-rtol R]] [--quiet]
 // Under `mpirun -np N` with a PETSc solver rank 0 meshes, every rank assembles its share of the
 // elements and solves, rank 0 alone writes.
@@ -62,6 +62,7 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     double stiff_ratio = 1e4, max_elements = fea::MeshingOptions{}.max_elements;
     double cg_rtol = solver::SparseCholeskyOptions{}.relative_tolerance;
     int max_iterations = solver::SparseCholeskyOptions{}.max_iterations;
+    std::optional<int> modes;  // absent: none; given: 1 to kMaxLinkModes
     bool linear = false;
     bool convergence = false;
     OutputOptions out;
@@ -71,7 +72,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       "link-stiffness", "6x6 stiffness of one link by FEA: clamped at --clamp, loaded through a reference body at "
                         "--reference (docs/fea.md); the report, JSON and VTK are in SI units");
   cmd->add_option("mesh", args->mesh, "closed triangle surface of the link (STL, OFF, OBJ, PLY), in --unit")->required();
-  cmd->add_option("--material", args->material, "steel, aluminium, or E=MPA,nu=V (Young's modulus in MPa)")
+  cmd->add_option("--material", args->material,
+                  "steel (7850 kg/m^3), aluminium (2700 kg/m^3), or E=MPA,nu=V[,rho=KG_M3] (Young's modulus in MPa, "
+                  "density in kg/m^3, needed by --modes only)")
       ->capture_default_str();
   cmd->add_option("--clamp", args->clamp,
                   "fixed region: x=V | plane:PX,PY,PZ,NX,NY,NZ | box:X0,Y0,Z0,X1,Y1,Z1 (coordinates of the mesh "
@@ -99,8 +102,12 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->capture_default_str();
   cmd->add_option("--reference-point", args->reference_point,
                   "X,Y,Z in --unit: the point whose motion is reported (default: centre of the reference nodes' box)");
+  cmd->add_option("--modes", args->modes,
+                  "also the N lowest natural frequencies (Hz) and mode shapes of the clamped link, reference body "
+                  "massless (count, 1 to 100; needs the material's density: steel, aluminium or ...,rho=KG_M3)");
   cmd->add_option("--vtk", args->vtk_dir,
-                  "write the six deformed-link .vtu files and a .pvd that groups them (ParaView, SI units) to DIR");
+                  "write the six deformed-link .vtu files and a .pvd that groups them (ParaView, SI units) to DIR; "
+                  "with --modes also one .vtu per mode and PREFIX_modes.pvd");
   cmd->add_option("--cache", args->cache_dir, "reuse / store results in this directory (keyed by mesh, material, options)");
   cmd->add_option("--solver", args->solver,
                   "cholmod (direct, shared memory), petsc-mumps (MUMPS direct over MPI) or petsc-cg (CG + multigrid "
@@ -137,6 +144,14 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
                                               args->cg_rtol)));
     if (args->max_iterations < 1)
       return fail(Status::Invalid(fmt::format("--max-iterations {}: give at least 1", args->max_iterations)));
+    // --modes is checked before meshing: a count out of range or a massless material fails at once.
+    const int modes = args->modes.value_or(0);
+    if (args->modes && (modes < 1 || modes > fea::kMaxLinkModes))
+      return fail(Status::Invalid(fmt::format("--modes {}: give a count from 1 to {}", modes, fea::kMaxLinkModes)));
+    if (modes > 0 && backend != solver::Backend::kCholmod)
+      return fail(Status::Invalid(fmt::format("--modes with --solver {}: the natural frequencies need the direct solver "
+                                              "on one process; use --solver cholmod",
+                                              args->solver)));
     Output out(ctx, args->out);
     const double scale = args->unit == "mm" ? kMm : 1.0;
     fea::LinkStiffnessRequest request;
@@ -153,6 +168,10 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     auto material = fea::parse_material(args->material, "--material " + args->material, kMPa);
     if (!material.ok()) return fail(material.status());
     request.material = *material;
+    if (modes > 0 && !(material->density > 0.0))
+      return fail(Status::Invalid(fmt::format("--material {} has no density, which --modes needs (the link's mass); "
+                                              "give steel, aluminium or E=MPA,nu=V,rho=KG_M3 (kg/m^3)",
+                                              args->material)));
     fea::LinkStiffnessOptions& options = request.options;
     auto clamp = fea::parse_region(args->clamp, scale, "--clamp " + args->clamp);
     if (!clamp.ok()) return fail(clamp.status());
@@ -171,6 +190,7 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     options.cholesky.relative_tolerance = args->cg_rtol;
     options.cholesky.max_iterations = args->max_iterations;
     options.keep_fields = !args->vtk_dir.empty();
+    options.modes = modes;
     options.progress = [&out](const std::string& stage) { out.progress() << "link-stiffness: " << stage << " ...\n"; };
 
     auto run = fea::compute_link_stiffness(request);
@@ -185,6 +205,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       const std::string stem = std::filesystem::path(args->mesh).stem().string();
       if (Status s = io::write_link_vtu_files(args->vtk_dir, stem, *run->mesh, run->result, &written); !s.ok())
         return fail(s);
+      if (!run->result.modes.empty())
+        if (Status s = io::write_link_mode_vtu_files(args->vtk_dir, stem, *run->mesh, run->result, &written); !s.ok())
+          return fail(s);
       for (const auto& w : written) out.report() << "wrote " << w << "\n";
     }
     std::optional<fea::ConvergenceStudy> study;

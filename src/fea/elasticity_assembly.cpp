@@ -4,6 +4,7 @@
 #include <atomic>
 #include <limits>
 #include <numeric>
+#include <type_traits>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
@@ -200,19 +201,18 @@ BlockPattern block_pattern(const TetMesh& mesh, const Blocks& blocks, const Elem
 
 // Adds every element's T_e^T K_e T_e into the compressed columns laid out by `pattern` (lower
 // triangle only: all the Cholesky reads). Entries shared with elements on other threads: atomic
-// adds (rarely contended).
+// adds (rarely contended). K_e is the stiffness or the mass: `element_matrix(e, x, &Ke)` computes it
+// (false: a non-positive Jacobian).
 struct ElementScatter {
   const TetMesh& mesh;
-  const std::vector<Mat6>& D;
-  const std::vector<int>& material;
   const DofMap& map;
   const Blocks& blocks;
   const BlockPattern& pattern;
   const int* outer;
   double* values;
 
-  template <int N>
-  void add_elements(const ElementSet& set, std::atomic<int>& bad_element) const {
+  template <int N, class ElementMatrix>
+  void add_elements(const ElementSet& set, std::atomic<int>& bad_element, const ElementMatrix& element_matrix) const {
     const int ref_dof = map.reference_dof;
     tbb::parallel_for(tbb::blocked_range<int>(0, set.size(), 256), [&](const tbb::blocked_range<int>& range) {
       std::array<Vec3, N> x;
@@ -223,7 +223,7 @@ struct ElementScatter {
         const int e = set[k];
         const int* v = mesh.element(e);
         for (int a = 0; a < N; ++a) x[a] = mesh.nodes[v[a]], node_block[a] = blocks.of_node[v[a]];
-        if (!tet_stiffness<N>(x.data(), D[material.empty() ? 0 : material[e]], &Ke)) {
+        if (!element_matrix(e, x.data(), &Ke)) {
           bad_element = e;
           continue;
         }
@@ -253,10 +253,11 @@ struct ElementScatter {
   }
 };
 
-}  // namespace
-
-Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
-                          const DofMap& map, solver::SparseMatrix* stiffness, std::span<const int> elements) {
+// The reduced matrix sum_e T_e^T K_e T_e (lower triangle, compressed columns) of the element matrices
+// `element_matrix` computes: the stiffness and the mass share this and so their pattern.
+template <class ElementMatrix>
+Status assemble_elements(const TetMesh& mesh, const DofMap& map, solver::SparseMatrix* matrix,
+                         std::span<const int> elements, const ElementMatrix& element_matrix) {
   const ElementSet set{elements, mesh.num_elements()};
   // Straight into compressed columns: the pattern first (from the blocks' adjacency), then every
   // element adds its entries in place. Triplets would hold ~465 entries of 16 bytes per Tet10
@@ -267,7 +268,7 @@ Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const
   const int n = map.num_dofs, nb = blocks.count();
   const int ref_dof = map.reference_dof;
 
-  solver::SparseMatrix& K = *stiffness;
+  solver::SparseMatrix& K = *matrix;
   K.resize(n, n);
   int* outer = K.outerIndexPtr();
   outer[0] = 0;
@@ -299,16 +300,36 @@ Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const
   });
 
   std::atomic<int> bad_element{-1};
-  const ElementScatter scatter{mesh, D, material, map, blocks, pattern, K.outerIndexPtr(), K.valuePtr()};
+  const ElementScatter scatter{mesh, map, blocks, pattern, K.outerIndexPtr(), K.valuePtr()};
   if (mesh.quadratic())
-    scatter.add_elements<10>(set, bad_element);
+    scatter.add_elements<10>(set, bad_element, element_matrix);
   else
-    scatter.add_elements<4>(set, bad_element);
+    scatter.add_elements<4>(set, bad_element, element_matrix);
   if (bad_element >= 0)
     return Status::Invalid(fmt::format("tetrahedral mesh: element {} has a non-positive Jacobian (inverted or "
                                        "degenerate); remesh the link",
                                        bad_element.load()));
   return Status::Ok();
+}
+
+// The number of nodes of the element matrix type TetMatrix<N>.
+template <class Matrix>
+constexpr int nodes_of = std::remove_pointer_t<Matrix>::RowsAtCompileTime / 3;
+
+}  // namespace
+
+Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
+                          const DofMap& map, solver::SparseMatrix* stiffness, std::span<const int> elements) {
+  return assemble_elements(mesh, map, stiffness, elements, [&](int e, const Vec3* x, auto* Ke) {
+    return tet_stiffness<nodes_of<decltype(Ke)>>(x, D[material.empty() ? 0 : material[e]], Ke);
+  });
+}
+
+Status assemble_mass(const TetMesh& mesh, const std::vector<double>& density, const std::vector<int>& material,
+                     const DofMap& map, solver::SparseMatrix* mass) {
+  return assemble_elements(mesh, map, mass, {}, [&](int e, const Vec3* x, auto* Me) {
+    return tet_mass<nodes_of<decltype(Me)>>(x, density[material.empty() ? 0 : material[e]], Me);
+  });
 }
 
 }  // namespace kinestat::fea

@@ -1,5 +1,6 @@
-// Sparse assembly of the linear-elastic stiffness of a tetrahedral mesh, in parallel (TBB), with
-// clamped nodes removed and an exact rigid coupling (multipoint constraint) eliminated on the fly.
+// Sparse assembly of the linear-elastic stiffness and the consistent mass of a tetrahedral mesh, in
+// parallel (TBB), with clamped nodes removed and an exact rigid coupling (multipoint constraint)
+// eliminated on the fly.
 #pragma once
 
 #include <array>
@@ -49,6 +50,13 @@ std::vector<Vec3> expand(const DofMap& map, const Eigen::Ref<const VecX>& reduce
 // Jacobian.
 Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
                           const DofMap& map, solver::SparseMatrix* stiffness, std::span<const int> elements = {});
+
+// The consistent mass (kg; kg m and kg m^2 for the reference node's rotations) on the same dof map and
+// pattern as assemble_stiffness (the same code: clamped dofs dropped, coupled nodes' masses carried by
+// the reference node): element e has the density density[material[e]] (kg/m^3; material empty:
+// density[0] for all). All elements, on this process.
+Status assemble_mass(const TetMesh& mesh, const std::vector<double>& density, const std::vector<int>& material,
+                     const DofMap& map, solver::SparseMatrix* mass);
 
 // The elements in slabs: sorted by their centre's coordinate along the bounding box's longest axis.
 // Consecutive ranges of this order are the ranks' shares of a distributed assembly: a rank's

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <span>
 #include <sstream>
 
@@ -16,6 +17,7 @@
 #include "kinestat/core/input_checks.hpp"
 #include "fea/elasticity_assembly.hpp"
 #include "kinestat/fea/tet_element.hpp"
+#include "kinestat/solver/generalized_eigen.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "kinestat/solver/parallel.hpp"
 
@@ -97,6 +99,73 @@ Status memory_refusal(const TetMesh& mesh, int dofs, const solver::Factorization
                   coarser, h * 1e3, h * coarser * 1e3, dofs / std::pow(coarser, 3.0)));
 }
 
+// The modes' checks, before any work: a count in range, a density (a massless link has no
+// frequencies), and a backend that solves with K's factor on this process.
+Status check_modes_request(const Material& material, const LinkStiffnessOptions& options) {
+  if (options.modes == 0) return Status::Ok();
+  if (options.modes < 0 || options.modes > kMaxLinkModes)
+    return Status::Invalid(fmt::format("link modes: {} modes asked for; give a count from 1 to {}", options.modes,
+                                       kMaxLinkModes));
+  if (!(material.density > 0.0) || !std::isfinite(material.density))
+    return Status::Invalid(fmt::format("link modes: material '{}' has no density (density = {:g} kg/m^3), so the link "
+                                       "has no mass and no natural frequencies; give the material a density in kg/m^3",
+                                       material.id, material.density));
+  if (options.cholesky.backend != solver::Backend::kCholmod)
+    return Status::Invalid("link modes: natural frequencies need the direct solver on one process (cholmod): the "
+                           "Lanczos iteration solves with K's factor; drop the PETSc solver for modes");
+  return Status::Ok();
+}
+
+// The modes of the clamped link: M q = mu K q for the largest mu = 1/omega^2 (solver/generalized_eigen.hpp)
+// with `cholesky` holding K's factor; M and K are lower triangles on the dof map `map`. `F` maps the
+// reference point's wrench to the dofs (its transpose gives the reference motion of a stiff body).
+Status solve_link_modes(const TetMesh& mesh, const DofMap& map, const solver::SparseMatrix& K,
+                        const solver::SparseMatrix& M, const solver::SparseCholesky& cholesky, const MatX& F,
+                        bool stiff_body, const Vec3& reference_point, int count, bool keep_shapes,
+                        std::vector<LinkMode>* modes) {
+  auto eig = solver::largest_generalized_eigenpairs(M, K, cholesky, count);
+  if (!eig.ok()) return Status(eig.status().code(), "link modes: " + eig.status().message());
+  const auto& [mu, Q] = *eig;
+  const MatX R = rigid_body_modes(mesh, map, reference_point).leftCols<3>();  // unit translations x, y, z
+  const MatX MR = M.selfadjointView<Eigen::Lower>() * R;
+  for (int k = 0; k < mu.size(); ++k) {
+    if (!(mu(k) > 1e-12 * mu(0))) continue;  // a massless motion: no frequency
+    LinkMode m;
+    m.omega = 1.0 / std::sqrt(mu(k));
+    m.frequency = m.omega / (2.0 * std::numbers::pi);
+    VecX q = Q.col(k);
+    const VecX Mq0 = M.selfadjointView<Eigen::Lower>() * q;
+    q /= std::sqrt(q.dot(Mq0));  // mass-normalized
+    const VecX Kq = K.selfadjointView<Eigen::Lower>() * q;
+    const VecX Mq = M.selfadjointView<Eigen::Lower>() * q;
+    m.residual = (Kq - m.omega * m.omega * Mq).norm() / Kq.norm();
+    if (!(m.residual <= kLinkModeResidualLimit))
+      return Status::NotConverged(fmt::format("link modes: mode {} ({:.6g} Hz) has the residual ||K q - omega^2 M q|| / "
+                                              "||K q|| = {:.2e}, above {:g}; the eigensolver did not converge on this "
+                                              "mesh: ask for fewer modes or remesh",
+                                              k + 1, m.frequency, m.residual, kLinkModeResidualLimit));
+    std::vector<Vec3> u = expand(map, q);
+    // The sign is arbitrary: the largest node displacement component is made positive.
+    double largest = 0.0;
+    for (const Vec3& v : u)
+      for (int d = 0; d < 3; ++d)
+        if (std::abs(v(d)) > std::abs(largest)) largest = v(d);
+    const double sign = largest < 0.0 ? -1.0 : 1.0;
+    q *= sign;
+    m.reference_motion = stiff_body ? Vec6(F.transpose() * q) : Vec6(q.segment<6>(map.reference_dof));
+    m.participation = MR.transpose() * q;
+    m.effective_mass = m.participation.cwiseAbs2();
+    if (keep_shapes) {
+      for (Vec3& v : u) v *= sign;
+      m.shape = std::move(u);
+    }
+    modes->push_back(std::move(m));
+  }
+  std::sort(modes->begin(), modes->end(), [](const LinkMode& a, const LinkMode& b) { return a.omega < b.omega; });
+  if (modes->empty()) return Status::Invalid("link modes: no mode with mass was found; check the material's density");
+  return Status::Ok();
+}
+
 }  // namespace
 
 const char* reference_model_name(ReferenceModel m) {
@@ -123,6 +192,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   if (!(material.E > 0.0) || !(material.nu() > -1.0 && material.nu() < 0.5))
     return Status::Invalid(fmt::format("material '{}': E = {:g} Pa, nu = {:g}; need E > 0 and -1 < nu < 0.5",
                                        material.id, material.E, material.nu()));
+  if (Status s = check_modes_request(material, options); !s.ok()) return s;
   auto progress = [&](const std::string& stage) {
     if (options.progress) options.progress(stage);
   };
@@ -227,6 +297,13 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   // A bad element stops the rank that assembles it: every rank stops with it, none waits in Factorize.
   if (Status s = solver::agree_on_status(assemble_stiffness(mesh, D, element_material, map, &K, slab)); !s.ok())
     return s;
+  solver::SparseMatrix M;
+  if (options.modes > 0) {
+    // The same density in the stiff body: it is the link's own material in the reference region.
+    if (Status s = assemble_mass(mesh, {material.density, material.density}, element_material, map, &M); !s.ok())
+      return s;
+    for (int e = 0; e < mesh.num_elements(); ++e) r.mass += material.density * element_volume(mesh, e);
+  }
   r.assembly_seconds = seconds_since(t0);
 
   // Right-hand sides: unit wrenches on the reference node, or spread over the stiff body.
@@ -258,7 +335,8 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
                               "); the clamp region must hold at least three non-collinear nodes");
     return s;
   }
-  solver::SparseMatrix().swap(K);  // the backend holds its own copy (CHOLMOD's factor, PETSc's rows)
+  // The backend holds its own copy (CHOLMOD's factor, PETSc's rows); the modes multiply by K.
+  if (options.modes == 0) solver::SparseMatrix().swap(K);
   progress("solving the six unit load cases");
   const auto t1 = std::chrono::steady_clock::now();
   MatX X;
@@ -271,6 +349,15 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
     }
   }
   r.solve_seconds = seconds_since(t1);
+  if (options.modes > 0) {
+    progress(fmt::format("the {} lowest natural frequencies (Lanczos on the factor of K)", options.modes));
+    const auto t2 = std::chrono::steady_clock::now();
+    if (Status s = solve_link_modes(mesh, map, K, M, *cholesky, F, stiff_body, reference_point, options.modes,
+                                    options.keep_fields, &r.modes);
+        !s.ok())
+      return s;
+    r.modes_seconds = seconds_since(t2);
+  }
   r.peak_memory_bytes = peak_memory_bytes();
   return r;
 }
@@ -314,6 +401,23 @@ std::string link_stiffness_report(const LinkStiffness& r) {
   os << "  eigenvalues of C (SI, mixed units):";
   for (int i = 0; i < 6; ++i) os << fmt::format(" {:.5e}", r.compliance_eigenvalues(i));
   os << "\n";
+  os << link_modes_report(r);
+  return os.str();
+}
+
+std::string link_modes_report(const LinkStiffness& r) {
+  if (r.modes.empty()) return "";
+  std::ostringstream os;
+  os << fmt::format("  natural frequencies (clamped link, reference body massless; link mass {:.6g} kg{}):\n", r.mass,
+                    r.modes_seconds > 0.0 ? fmt::format(", eigensolver {:.3f} s", r.modes_seconds) : "");
+  os << fmt::format("  {:>4} {:>14} {:>26} {:>12}\n", "mode", "frequency (Hz)", "effective mass x, y, z (%)",
+                    "residual");
+  for (size_t k = 0; k < r.modes.size(); ++k) {
+    const LinkMode& m = r.modes[k];
+    const Vec3 pct = 100.0 * m.effective_mass / r.mass;
+    os << fmt::format("  {:>4} {:>14.6g} {:>8.2f} {:>8.2f} {:>8.2f} {:>12.2e}\n", k + 1, m.frequency, pct(0), pct(1),
+                      pct(2), m.residual);
+  }
   return os.str();
 }
 

@@ -86,19 +86,25 @@ StatusOr<Region> parse_region(const std::string& text, double scale, const std::
 }
 
 StatusOr<Material> parse_material(const std::string& text, const std::string& what, double modulus_unit) {
-  if (text == "steel") return Material::from_E_nu("steel", 210e9, 0.3);
-  if (text == "aluminium" || text == "aluminum") return Material::from_E_nu("aluminium", 70e9, 0.33);
+  auto with_density = [](Material m, double density) {
+    m.density = density;
+    return m;
+  };
+  if (text == "steel") return with_density(Material::from_E_nu("steel", 210e9, 0.3), kSteelDensity);
+  if (text == "aluminium" || text == "aluminum")
+    return with_density(Material::from_E_nu("aluminium", 70e9, 0.33), kAluminiumDensity);
   const std::string unit = modulus_unit == units::kMPa ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("x {:g} Pa", modulus_unit);
-  const std::string form = fmt::format("give steel, aluminium or E=VALUE,nu=V (E > 0 in {}, -1 < nu < 0.5)", unit);
-  std::optional<double> E, nu;
+  const std::string form = fmt::format(
+      "give steel, aluminium or E=VALUE,nu=V[,rho=KG_M3] (E > 0 in {}, -1 < nu < 0.5, density rho > 0 in kg/m^3)", unit);
+  std::optional<double> E, nu, rho;
   std::stringstream ss(text);
   std::string item;
   while (std::getline(ss, item, ',')) {
     const auto eq = item.find('=');
     const std::string key = item.substr(0, eq);
-    if (eq == std::string::npos || (key != "E" && key != "nu"))
+    if (eq == std::string::npos || (key != "E" && key != "nu" && key != "rho"))
       return Status::Invalid(fmt::format("{}: unknown item '{}'; {}", what, item, form));
-    std::optional<double>& slot = key == "E" ? E : nu;
+    std::optional<double>& slot = key == "E" ? E : key == "nu" ? nu : rho;
     if (slot) return Status::Invalid(fmt::format("{}: '{}' is given twice; give it once", what, key));
     auto value = parse_numbers(item.substr(eq + 1), 1, fmt::format("{}: {}", what, key));
     if (!value.ok()) return value.status();
@@ -109,7 +115,10 @@ StatusOr<Material> parse_material(const std::string& text, const std::string& wh
     return s;
   if (!(*nu > -1.0 && *nu < 0.5))
     return Status::Invalid(fmt::format("{}: nu = {:g} is not in (-1, 0.5); give Poisson's ratio", what, *nu));
-  return Material::from_E_nu(text, *E * modulus_unit, *nu);
+  if (rho)
+    if (Status s = check_quantity(*rho, Quantity::kDensity, what + ": rho", {1.0, "kg/m^3"}, Sign::kPositive); !s.ok())
+      return s;
+  return with_density(Material::from_E_nu(text, *E * modulus_unit, *nu), rho.value_or(0.0));
 }
 
 double default_mesh_size(const SurfaceInfo& surface, double unit_scale) {

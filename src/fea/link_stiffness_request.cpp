@@ -92,7 +92,8 @@ StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& re
     if (Status s = solver::agree_on_status(identity.status()); !s.ok()) return s;
     key = link_stiffness_cache_key(*identity, request.material, request.options);
     run.cache_file = link_stiffness_cache_path(request.cache_dir, key);
-    if (!request.options.keep_fields) {
+    // The cache holds the 6x6 only: fields and modes are always computed (and the 6x6 stored).
+    if (!request.options.keep_fields && request.options.modes == 0) {
       StatusOr<CachedLinkStiffness> cached = load_cached_link_stiffness(request.cache_dir, key);
       if (Status s = solver::agree_on_status(cached.status()); !s.ok()) return s;
       // Node-local caches may hold the entry on some ranks only: serve it when every rank can, or
@@ -128,7 +129,10 @@ StatusOr<ConvergenceStudy> link_stiffness_convergence(const LinkStiffnessRequest
                                                       const std::vector<double>& sizes) {
   if (Status s = validate(request); !s.ok()) return s;
   auto make = [&](double h) { return mesh_from_rank0(request.mesh_file, meshing_options(request, h)); };
-  return mesh_convergence_study(make, sizes, request.material, request.options);
+  LinkStiffnessOptions options = request.options;  // the 6x6 only: no fields, no modes
+  options.keep_fields = false;
+  options.modes = 0;
+  return mesh_convergence_study(make, sizes, request.material, options);
 }
 
 }  // namespace kinestat::fea

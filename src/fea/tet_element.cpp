@@ -52,7 +52,108 @@ Eigen::Matrix<double, 6, 3 * N> strain_matrix(const Vec3* x, const Vec3& natural
   return B;
 }
 
+// The N shape functions at the natural point p.
+template <int N>
+Eigen::Matrix<double, N, 1> shape_functions(const Vec3& p) {
+  const std::array<double, 4> L = {1.0 - p.x() - p.y() - p.z(), p.x(), p.y(), p.z()};
+  Eigen::Matrix<double, N, 1> s;
+  for (int i = 0; i < 4; ++i) s(i) = N == 4 ? L[i] : L[i] * (2.0 * L[i] - 1.0);
+  if constexpr (N == 10)
+    for (int e = 0; e < 6; ++e) s(4 + e) = 4.0 * L[kTet10Edges[e][0]] * L[kTet10Edges[e][1]];
+  return s;
+}
+
+// det J at the natural point p (J(i, k) = d x_i / d xi_k).
+template <int N>
+double jacobian_determinant(const Vec3* x, const Vec3& p) {
+  const Eigen::Matrix<double, N, 3> g = natural_gradients<N>(p);
+  Mat3 J = Mat3::Zero();
+  for (int a = 0; a < N; ++a) J += x[a] * g.row(a);
+  return J.determinant();
+}
+
+// A symmetric quadrature rule on the unit tetrahedron: points in volume coordinates (L1, L2, L3) =
+// (xi, eta, zeta), weights summing to its volume 1/6.
+struct QuadraturePoint {
+  Vec3 p;
+  double w;
+};
+
+// 4 points, degree 2.
+std::array<QuadraturePoint, 4> degree2_rule() {
+  const double a = 0.5854101966249685, b = 0.1381966011250105, w = 1.0 / 24.0;
+  return {{{{b, b, b}, w}, {{a, b, b}, w}, {{b, a, b}, w}, {{b, b, a}, w}}};
+}
+
+// 14 points, degree 5, positive weights (Walkington 2000; the rule of Keast 1986 of the same
+// degree): two orbits of 4 points (a, a, a, 1 - 3a) and one of 6 points (b, b, 1/2 - b, 1/2 - b).
+// tests/fea/tet_element_test.cpp checks it integrates every monomial of degree <= 5 exactly.
+std::array<QuadraturePoint, 14> degree5_rule() {
+  std::array<QuadraturePoint, 14> r;
+  int k = 0;
+  const double a[2] = {0.0927352503108912, 0.3108859192633006};
+  const double wa[2] = {0.01224884051939366, 0.01878132095300264};
+  for (int o = 0; o < 2; ++o)
+    for (int i = 0; i < 4; ++i) {
+      std::array<double, 4> L;
+      L.fill(a[o]);
+      L[i] = 1.0 - 3.0 * a[o];
+      r[k++] = {Vec3(L[1], L[2], L[3]), wa[o]};
+    }
+  const double b = 0.0455037041256496, c = 0.5 - b, wb = 0.007091003462846911;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      std::array<double, 4> L;
+      L.fill(b);
+      L[i] = c;
+      L[j] = c;
+      r[k++] = {Vec3(L[1], L[2], L[3]), wb};
+    }
+  return r;
+}
+
 }  // namespace
+
+std::vector<std::pair<Vec3, double>> tet_quadrature_rule(int degree) {
+  std::vector<std::pair<Vec3, double>> out;
+  if (degree <= 2)
+    for (const QuadraturePoint& q : degree2_rule()) out.emplace_back(q.p, q.w);
+  else
+    for (const QuadraturePoint& q : degree5_rule()) out.emplace_back(q.p, q.w);
+  return out;
+}
+
+template <int N>
+bool tet_mass(const Vec3* x, double density, TetMatrix<N>* M) {
+  static const auto rule = [] {
+    if constexpr (N == 4) return degree2_rule();
+    else return degree5_rule();
+  }();
+  // The scalar mass rho N N^T, then one copy per direction: M(3a+d, 3b+d) = m(a, b).
+  Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();
+  for (const QuadraturePoint& q : rule) {
+    const double det = jacobian_determinant<N>(x, q.p);
+    if (!(det > 0.0)) return false;
+    const Eigen::Matrix<double, N, 1> s = shape_functions<N>(q.p);
+    m.noalias() += (density * q.w * det) * (s * s.transpose());
+  }
+  M->setZero();
+  for (int a = 0; a < N; ++a)
+    for (int b = 0; b < N; ++b)
+      for (int d = 0; d < 3; ++d) (*M)(3 * a + d, 3 * b + d) = m(a, b);
+  return true;
+}
+template bool tet_mass<4>(const Vec3*, double, TetMatrix<4>*);
+template bool tet_mass<10>(const Vec3*, double, TetMatrix<10>*);
+
+MatX tet_mass(const Vec3* x, int n, double density) {
+  if (n == 4) {
+    TetMatrix<4> M;
+    return tet_mass<4>(x, density, &M) ? MatX(M) : MatX();
+  }
+  TetMatrix<10> M;
+  return tet_mass<10>(x, density, &M) ? MatX(M) : MatX();
+}
 
 Mat6 elasticity_matrix(const Material& m) {
   const double mu = m.G, nu = m.nu();

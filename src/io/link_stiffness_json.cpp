@@ -41,6 +41,30 @@ json link_stiffness_to_json(const std::string& mesh_file, double mesh_size, cons
                    {"iterations", r.solve.iterations},
                    {"relative_residuals", r.solve.relative_residual}};
   }
+  if (!r.modes.empty()) {  // LinkStiffnessOptions::modes: the clamped link's natural frequencies
+    json modes = json::array();
+    for (size_t k = 0; k < r.modes.size(); ++k) {
+      const fea::LinkMode& m = r.modes[k];
+      modes.push_back({{"mode", k + 1},
+                       {"frequency", m.frequency},
+                       {"omega", m.omega},
+                       {"residual", m.residual},
+                       {"participation", to_array(m.participation)},
+                       {"effective_mass", to_array(m.effective_mass)},
+                       {"reference_motion", to_array(m.reference_motion)}});
+    }
+    j["vibration"] = {{"units", {{"frequency", "Hz"},
+                                 {"omega", "rad/s"},
+                                 {"link_mass", "kg"},
+                                 {"participation", "sqrt(kg)"},
+                                 {"effective_mass", "kg"},
+                                 {"reference_motion", "m/sqrt(kg) (ux uy uz), rad/sqrt(kg) (rx ry rz)"}}},
+                      {"mass_matrix", "consistent"},
+                      {"reference_body_mass", 0.0},
+                      {"link_mass", r.mass},
+                      {"eigensolver_seconds", r.modes_seconds},
+                      {"modes", modes}};
+  }
   encode_non_finite(j);
   return j;
 }

@@ -6,10 +6,10 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/solver/generalized_eigen.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
-#include "msa/generalized_eigen.hpp"
 
 namespace kinestat::msa {
 
@@ -71,14 +71,14 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   res.num_free_dofs = static_cast<int>(Kr.rows());
 
   // Solved as -K_G q = mu K q, mu = 1/lambda: the smallest positive lambdas are the largest mu
-  // (msa/generalized_eigen.hpp says why this form; Euler's column: mu_2/mu_1 = 1/4, well apart).
+  // (solver/generalized_eigen.hpp says why this form; Euler's column: mu_2/mu_1 = 1/4, well apart).
   auto chol = solver::make_sparse_cholesky(opt.solve.cholesky);
   if (Status st = chol->Factorize(Kr, nullptr); !st.ok()) {
     res.status = st;
     return res;
   }
   const solver::SparseMatrix minus_KGr = -KGr;
-  auto eig = largest_generalized_eigenpairs(minus_KGr, Kr, *chol, opt.count);
+  auto eig = solver::largest_generalized_eigenpairs(minus_KGr, Kr, *chol, opt.count);
   if (!eig.ok()) {
     res.status = eig.status();
     return res;

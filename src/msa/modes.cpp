@@ -8,10 +8,10 @@
 
 #include "kinestat/core/input_checks.hpp"
 #include "kinestat/elements/beam_element.hpp"
+#include "kinestat/solver/generalized_eigen.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
-#include "msa/generalized_eigen.hpp"
 
 namespace kinestat::msa {
 
@@ -123,7 +123,7 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
   const MatX MR = M * R;
   for (int d = 0; d < 3; ++d) res.total_mass(d) = R.col(d).dot(MR.col(d));
 
-  // M q = mu K q, mu = 1/omega^2: the lowest frequencies are the largest mu (msa/generalized_eigen.hpp).
+  // M q = mu K q, mu = 1/omega^2: the lowest frequencies are the largest mu (solver/generalized_eigen.hpp).
   auto chol = solver::make_sparse_cholesky(opt.solve.cholesky);
   if (Status st = chol->Factorize(Kr, nullptr); !st.ok()) {
     // The elastic K passed the static solve's checks, so a failed K + K_G is the prestress's: by
@@ -140,7 +140,7 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     res.status = st;
     return res;
   }
-  auto eig = largest_generalized_eigenpairs(Mr, Kr, *chol, opt.count);
+  auto eig = solver::largest_generalized_eigenpairs(Mr, Kr, *chol, opt.count);
   if (!eig.ok()) {
     res.status = eig.status();
     return res;

@@ -139,6 +139,21 @@ void bind_mesh(py::module_& m) {
       py::arg("x"), py::arg("D"),
       "Element stiffness (3n x 3n) of a 4- or 10-node tetrahedron, x (n, 3) in m. InputError for a degenerate or "
       "inverted element.");
+  m.def(
+      "tet_mass",
+      [](const RowsRef<3>& x, double density) {
+        const auto nodes = from_rows<3>(x);
+        if (nodes.size() != 4 && nodes.size() != 10) raise_status(Status::Invalid("tet_mass: 4 or 10 nodes"));
+        MatX M = tet_mass(nodes.data(), static_cast<int>(nodes.size()), density);
+        if (M.size() == 0)
+          raise_status(Status::Invalid(
+              "x: the tetrahedron's Jacobian is not positive (its points are coplanar, not finite, or in the wrong "
+              "order); give a tetrahedron of positive volume with its nodes in VTK order"));
+        return M;
+      },
+      py::arg("x"), py::arg("density"),
+      "Consistent element mass (3n x 3n, kg) of a 4- or 10-node tetrahedron, x (n, 3) in m, density in kg/m^3. "
+      "InputError for a degenerate or inverted element.");
   m.def("von_mises", &von_mises, py::arg("stress"), "Von Mises stress of a Voigt stress vector (Pa).");
 }
 
@@ -155,7 +170,21 @@ void bind_link_stiffness(py::module_& m) {
       .def_readwrite("reference_point", &LinkStiffnessOptions::reference_point, "m; None: the reference nodes' centre")
       .def_readwrite("keep_fields", &LinkStiffnessOptions::keep_fields, "keep displacement and von Mises fields")
       .def_readwrite("cholesky", &LinkStiffnessOptions::cholesky)
+      .def_readwrite("modes", &LinkStiffnessOptions::modes,
+                     "how many of the lowest natural frequencies (count, 0: none, at most 100; needs the material's "
+                     "density and the cholmod backend)")
       .def_readwrite("progress", &LinkStiffnessOptions::progress, "callable(stage: str) before each stage, or None");
+  py::class_<LinkMode>(m, "LinkMode", "A natural mode of the clamped link, mass-normalized (q' M q = 1).")
+      .def_readonly("omega", &LinkMode::omega, "rad/s")
+      .def_readonly("frequency", &LinkMode::frequency, "Hz")
+      .def_readonly("reference_motion", &LinkMode::reference_motion,
+                    "(u, theta) of the reference point, m/sqrt(kg) and rad/sqrt(kg)")
+      .def_readonly("participation", &LinkMode::participation, "q' M r_d along x, y, z (sqrt(kg))")
+      .def_readonly("effective_mass", &LinkMode::effective_mass, "participation squared (kg)")
+      .def_readonly("residual", &LinkMode::residual, "||K q - omega^2 M q|| / ||K q||")
+      .def_property_readonly(
+          "shape", [](const LinkMode& mode) { return rows(mode.shape); },
+          "(nodes, 3) node displacements, m/sqrt(kg); empty without keep_fields");
   py::class_<LinkStiffness>(m, "LinkStiffness",
                             "6x6 link stiffness from FEA (rows ux uy uz rx ry rz, link frame, SI units) and its "
                             "report; per unit load case (Fx Fy Fz Mx My Mz) the fields when kept.")
@@ -189,7 +218,10 @@ void bind_link_stiffness(py::module_& m) {
             return l;
           },
           "six (nodes, 3) arrays, m per unit load; empty without keep_fields")
-      .def_readonly("von_mises", &LinkStiffness::von_mises, "six lists of element stresses (Pa per unit load)");
+      .def_readonly("von_mises", &LinkStiffness::von_mises, "six lists of element stresses (Pa per unit load)")
+      .def_readonly("mass", &LinkStiffness::mass, "kg, density times the mesh volume (with modes)")
+      .def_readonly("modes", &LinkStiffness::modes, "LinkMode list, ascending frequency (options.modes)")
+      .def_readonly("modes_seconds", &LinkStiffness::modes_seconds, "mass assembly and eigensolver, s");
   m.def(
       "link_stiffness",
       [](const TetMesh& mesh, const Material& material, const LinkStiffnessOptions& o) {

@@ -130,6 +130,15 @@ void bind_results(py::module_& m) {
       py::arg("dir"), py::arg("prefix"), py::arg("mesh"), py::arg("result"),
       "The six deformed-link files DIR/PREFIX_Fx.vtu ... (needs keep_fields). Returns the paths written.");
   m.def(
+      "write_link_mode_vtu_files",
+      [](const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh, const fea::LinkStiffness& r) {
+        return written_by(
+            [&](std::vector<std::string>* w) { return io::write_link_mode_vtu_files(dir, prefix, mesh, r, w); });
+      },
+      py::arg("dir"), py::arg("prefix"), py::arg("mesh"), py::arg("result"),
+      "One file per mode DIR/PREFIX_modes_modeK.vtu (point vector mode_shape, m/sqrt(kg)) and DIR/PREFIX_modes.pvd "
+      "(needs modes and keep_fields). Returns the paths written.");
+  m.def(
       "write_orthoglide_workspace_vtk",
       [](const mechanisms::OrthoglideDesign& d, int n, const std::string& dir) {
         return written_by([&](std::vector<std::string>* w) { return io::write_orthoglide_workspace_vtk(d, n, dir, w); });

@@ -137,8 +137,11 @@ TEST(OptionParsers, RegionsAreRangedAndNormalized) {
 }
 
 TEST(OptionParsers, MaterialRefusesUnknownItemsAndOutOfRangeValues) {
-  expect_contains(parse_material("E=2.1e11,nu=0.3,rho=7800", "--material").status().message(),
-                  "unknown item 'rho=7800'");
+  expect_contains(parse_material("E=2.1e11,nu=0.3,G=8e10", "--material").status().message(),
+                  "unknown item 'G=8e10'");
+  // rho (kg/m^3) is an item since the link modes need a density.
+  EXPECT_DOUBLE_EQ(parse_material("E=2.1e11,nu=0.3,rho=7800", "--material")->density, 7800.0);
+  expect_contains(parse_material("E=2.1e11,nu=0.3,rho=0", "--material").status().message(), "rho");
   expect_contains(parse_material("E=2.1e11,E=1e11,nu=0.3", "--material").status().message(), "'E' is given twice");
   expect_contains(parse_material("E=1e300,nu=0.3", "--material").status().message(), "too large for a modulus");
   expect_contains(parse_material("E=2.1e11,nu=0.5", "--material").status().message(), "nu = 0.5 is not in");

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "kinestat/core/frame.hpp"
 #include "fea/elasticity_assembly.hpp"
@@ -62,7 +63,95 @@ TEST_P(TetElement, StrainEnergyOfUniformStrainMatchesTheory) {
   EXPECT_NEAR(0.5 * u.dot(K * u), expected, 1e-10 * expected);
 }
 
+TEST_P(TetElement, MassCarriesTheElementsMassAndRotaryInertia) {
+  // Rigid motions are in both elements' displacement spaces, so the consistent mass must give their
+  // kinetic energies exactly: a translation the mass rho V, a rotation about any axis the rigid
+  // body's rotary inertia, from the second moments of a tetrahedron (vertices y_i about the point p):
+  // S = integral of y y^T dV = V/20 (sum y_i y_i^T + (sum y_i)(sum y_i)^T), I = rho (tr S 1 - S).
+  const int n = GetParam();
+  const auto x = element_nodes(n);
+  const double rho = 7850.0, V = tet_volume(x);
+  const MatX M = tet_mass(x.data(), n, rho);
+  ASSERT_EQ(M.rows(), 3 * n);
+  EXPECT_LT((M - M.transpose()).norm(), 1e-15 * M.norm());
+  for (int d = 0; d < 3; ++d) {
+    double sum = 0.0;  // every entry of direction d's block: r_d^T M r_d
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) sum += M(3 * a + d, 3 * b + d);
+    EXPECT_NEAR(sum, rho * V, 1e-14 * rho * V) << "direction " << d;  // measured: at most 8.6e-16 relative
+  }
+  const Vec3 p(0.3, -0.2, 0.1);
+  Mat3 S = Mat3::Zero();
+  Vec3 sum_y = Vec3::Zero();
+  for (int a = 0; a < 4; ++a) {
+    S += (x[a] - p) * (x[a] - p).transpose();
+    sum_y += x[a] - p;
+  }
+  S = V / 20.0 * (S + sum_y * sum_y.transpose());
+  const Mat3 I = rho * (S.trace() * Mat3::Identity() - S);
+  for (const Vec3& omega : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0.3, -0.8, 0.5)}) {
+    VecX v(3 * n);
+    for (int a = 0; a < n; ++a) v.segment<3>(3 * a) = omega.cross(x[a] - p);
+    const double expected = 0.5 * omega.dot(I * omega);
+    EXPECT_NEAR(0.5 * v.dot(M * v), expected, 1e-13 * expected) << omega.transpose();  // measured: at most 1.6e-15
+  }
+  // Positive definite: every node carries mass.
+  EXPECT_GT(Eigen::SelfAdjointEigenSolver<MatX>(M).eigenvalues().minCoeff(), 0.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(LinearAndQuadratic, TetElement, ::testing::Values(4, 10));
+
+// The closed forms of the straight-sided elements' consistent masses (Zienkiewicz & Taylor; from
+// the integrals of products of volume coordinates): 4 nodes rho V/20 (2 on the diagonal, 1 off it);
+// 10 nodes rho V/420 times 6 (vertex diagonal), 1 (two vertices), -4 (a vertex and a mid-edge node
+// of its edges), -6 (of the opposite edges), 32 (mid-edge diagonal), 16 (two edges sharing a vertex),
+// 8 (opposite edges).
+TEST(TetMass, EqualsTheClosedForms) {
+  const double rho = 2700.0;
+  for (int n : {4, 10}) {
+    const auto x = element_nodes(n);
+    const double V = tet_volume(x);
+    const MatX M = tet_mass(x.data(), n, rho);
+    MatX expected = MatX::Zero(3 * n, 3 * n);
+    auto on_edge = [](int vertex, int e) { return kTet10Edges[e][0] == vertex || kTet10Edges[e][1] == vertex; };
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        double m = 0.0;
+        if (n == 4) {
+          m = rho * V / 20.0 * (a == b ? 2.0 : 1.0);
+        } else if (a < 4 && b < 4) {
+          m = a == b ? 6.0 : 1.0;
+        } else if (a < 4 || b < 4) {
+          m = on_edge(std::min(a, b), std::max(a, b) - 4) ? -4.0 : -6.0;
+        } else {
+          const int e = a - 4, f = b - 4;
+          const bool share = on_edge(kTet10Edges[e][0], f) || on_edge(kTet10Edges[e][1], f);
+          m = e == f ? 32.0 : share ? 16.0 : 8.0;
+        }
+        if (n == 10) m *= rho * V / 420.0;
+        for (int d = 0; d < 3; ++d) expected(3 * a + d, 3 * b + d) = m;
+      }
+    EXPECT_LT((M - expected).norm(), 1e-14 * expected.norm()) << n << " nodes";  // measured: at most 8.2e-16
+  }
+}
+
+// The rules tet_mass integrates with: exact for every monomial xi^i eta^j zeta^k of their degree,
+// against integral = i! j! k! / (i + j + k + 3)! on the unit tetrahedron.
+TEST(TetMass, QuadratureRulesAreExactToTheirDegree) {
+  auto factorial = [](int k) { return std::tgamma(k + 1.0); };
+  for (int degree : {2, 5}) {
+    const auto rule = tet_quadrature_rule(degree);
+    EXPECT_EQ(rule.size(), degree == 2 ? 4u : 14u);
+    for (int i = 0; i <= degree; ++i)
+      for (int j = 0; i + j <= degree; ++j)
+        for (int k = 0; i + j + k <= degree; ++k) {
+          double sum = 0.0;
+          for (const auto& [p, w] : rule) sum += w * std::pow(p.x(), i) * std::pow(p.y(), j) * std::pow(p.z(), k);
+          const double exact = factorial(i) * factorial(j) * factorial(k) / factorial(i + j + k + 3);
+          EXPECT_NEAR(sum, exact, 1e-14 * exact) << degree << ": " << i << " " << j << " " << k;  // measured: at most 7.3e-16
+        }
+  }
+}
 
 TEST(ElasticityMatrix, UniaxialStressGivesYoungsModulusAndPoisson) {
   // Under sigma_xx = 1 only, eps_xx = 1/E and eps_yy = -nu/E (inverse of D).
@@ -145,6 +234,25 @@ TEST(Assembly, CompressedColumnsEqualDenseSumOfElementMatrices) {
     const MatX expected = T.transpose() * Kmesh * T;
     const MatX assembled = MatX(solver::SparseMatrix(K.selfadjointView<Eigen::Lower>()));
     EXPECT_LT((assembled - expected).norm(), 1e-13 * expected.norm()) << "quadratic " << quadratic;
+
+    // The mass on the same map, from the same code: the same pattern, the same definition.
+    const std::vector<double> density = {7850.0, 2700.0};
+    solver::SparseMatrix M;
+    ASSERT_TRUE(assemble_mass(mesh, density, material, map, &M).ok());
+    ASSERT_EQ(M.nonZeros(), K.nonZeros());
+    EXPECT_TRUE(std::equal(M.innerIndexPtr(), M.innerIndexPtr() + M.nonZeros(), K.innerIndexPtr()));
+    MatX Mmesh = MatX::Zero(3 * mesh.num_nodes(), 3 * mesh.num_nodes());
+    for (int e = 0; e < mesh.num_elements(); ++e) {
+      const int* v = mesh.element(e);
+      for (int a = 0; a < mesh.nodes_per_element; ++a) x[a] = mesh.nodes[v[a]];
+      const MatX Me = tet_mass(x.data(), mesh.nodes_per_element, density[material[e]]);
+      for (int a = 0; a < mesh.nodes_per_element; ++a)
+        for (int b = 0; b < mesh.nodes_per_element; ++b) Mmesh.block<3, 3>(3 * v[a], 3 * v[b]) += Me.block<3, 3>(3 * a, 3 * b);
+    }
+    const MatX expected_mass = T.transpose() * Mmesh * T;
+    const MatX assembled_mass = MatX(solver::SparseMatrix(M.selfadjointView<Eigen::Lower>()));
+    // Measured: at most 2.9e-16.
+    EXPECT_LT((assembled_mass - expected_mass).norm(), 1e-13 * expected_mass.norm()) << "quadratic " << quadratic;
   }
 }
 

@@ -140,7 +140,7 @@ TEST(Buckling, HigherModesAndShape) {
 }
 
 TEST(Buckling, SmallSystemsTakeTheDensePath) {
-  // One beam clamped at one end: 6 free dofs, below msa/generalized_eigen's Lanczos threshold (24),
+  // One beam clamped at one end: 6 free dofs, below solver/generalized_eigen's Lanczos threshold (24),
   // so Eigen's dense solver answers. The one-element cantilever's textbook value is 2.4860 EI/L^2
   // (exact pi^2/4 = 2.4674): asserted to its 5 digits.
   const double L = 2.0, P = 1000.0;

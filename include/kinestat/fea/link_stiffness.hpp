@@ -11,6 +11,11 @@
 //  - kRigidCoupling: exact: every node of the reference region follows a 6-dof reference node
 //    (eliminated in the assembly) and the unit wrenches act on that node.
 // Axes are the mesh (link) frame; the reference point is the point whose motion is reported.
+// With options.modes > 0 the same model also gives the link's lowest natural frequencies (docs/fea.md,
+// "Natural frequencies"): K q = omega^2 M q with the consistent mass of the elements assembled on K's
+// dof map (the clamp fixed, the reference region coupled as for the stiffness; the reference body
+// itself adds no mass: what is attached there is not modelled), solved for the largest mu = 1/omega^2
+// of M q = mu K q with Spectra's Lanczos on K's CHOLMOD factor.
 #pragma once
 
 #include <array>
@@ -43,7 +48,31 @@ struct LinkStiffnessOptions {
   // per element) numbers, so off unless asked for.
   bool keep_fields = false;
   solver::SparseCholeskyOptions cholesky;
+  // How many of the lowest natural frequencies and their modes (count, 0: none, at most kMaxLinkModes).
+  // Needs material.density > 0 (kg/m^3) and the cholmod backend (the Lanczos iteration solves with
+  // the factor of K on one process; the distributed backends are refused).
+  int modes = 0;
   std::function<void(const std::string& stage)> progress;  // called before each stage (large meshes)
+};
+
+inline constexpr int kMaxLinkModes = 100;
+// A mode whose residual ||K q - omega^2 M q|| / ||K q|| exceeds this is an error (kNotConverged):
+// the Lanczos tolerance (1e-10 on mu) leaves 1.6e-10 to 4.9e-10 (measured on the bar meshes of
+// tests/fea/link_modes_test.cpp).
+inline constexpr double kLinkModeResidualLimit = 1e-6;
+
+// One natural vibration mode of the clamped link, mass-normalized: q' M q = 1 (M in kg, kg m, kg m^2).
+struct LinkMode {
+  double omega = 0.0;                   // rad/s
+  double frequency = 0.0;               // Hz, omega / (2 pi)
+  // Motion (u, theta) of the reference point in the mode (m/sqrt(kg), rad/sqrt(kg)): the reference
+  // node's dofs (rigid coupling) or the stiff body's least-squares rigid motion.
+  Vec6 reference_motion = Vec6::Zero();
+  Vec3 participation = Vec3::Zero();    // Gamma_d = q' M r_d, r_d: the link translated by 1 m along d (sqrt(kg))
+  Vec3 effective_mass = Vec3::Zero();   // Gamma_d^2 (kg): of a base excitation along d
+  double residual = 0.0;                // ||K q - omega^2 M q|| / ||K q|| on the solved dofs
+  // Node displacements of the mass-normalized mode (m/sqrt(kg)); empty unless keep_fields.
+  std::vector<Vec3> shape;
 };
 
 struct LinkStiffness {
@@ -75,6 +104,12 @@ struct LinkStiffness {
   // von Mises stress at the centroid (Pa per N or N m). Empty unless keep_fields.
   std::array<std::vector<Vec3>, 6> displacement;
   std::array<std::vector<double>, 6> von_mises;
+  // With options.modes: the link's mass (kg, density times the mesh volume, clamped part included),
+  // the modes in ascending frequency (the sign of each: its largest node displacement component is
+  // positive) and the time of the mass assembly and the eigensolver (s).
+  double mass = 0.0;
+  std::vector<LinkMode> modes;
+  double modes_seconds = 0.0;
 };
 
 StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& material,
@@ -83,6 +118,10 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
 // Human-readable summary: model, mesh, solver, then the Cartesian stiffness report (both matrices
 // with units, indices), symmetry errors and the compliance's eigenvalues.
 std::string link_stiffness_report(const LinkStiffness& r);
+
+// The modes as a table: frequency (Hz), effective masses (% of the link's mass), reference motion,
+// residual. Empty without modes.
+std::string link_modes_report(const LinkStiffness& r);
 
 // Sets the compliance of the reference point `point` (m) and everything derived from it:
 // r.cartesian (stiffness, indices), the symmetry errors and the compliance's eigenvalues.

@@ -24,9 +24,12 @@ StatusOr<Vec3> parse_point(const std::string& text, double scale, const std::str
 // lengths in the mesh file's unit, converted to m with `scale`. Messages start with `what`.
 StatusOr<Region> parse_region(const std::string& text, double scale, const std::string& what);
 
-// "steel" (E 210 GPa, nu 0.3), "aluminium" (70 GPa, 0.33) or "E=VALUE,nu=V" with E in units of
-// `modulus_unit` Pa (1e6: MPa, the command line's unit; a model file's stress unit). Messages start
-// with `what`.
+// "steel" (E 210 GPa, nu 0.3, density 7850 kg/m^3), "aluminium" (70 GPa, 0.33, 2700 kg/m^3) or
+// "E=VALUE,nu=V[,rho=KG_M3]" with E in units of `modulus_unit` Pa (1e6: MPa, the command line's unit; a
+// model file's stress unit) and the density rho in kg/m^3 (absent: 0, no mass; only modes need it).
+// Messages start with `what`.
+inline constexpr double kSteelDensity = 7850.0;      // kg/m^3
+inline constexpr double kAluminiumDensity = 2700.0;  // kg/m^3
 StatusOr<Material> parse_material(const std::string& text, const std::string& what, double modulus_unit = 1.0);
 
 // Default tetrahedron size (m): 1/20 of the surface's largest extent.

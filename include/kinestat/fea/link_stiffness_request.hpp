@@ -50,10 +50,11 @@ struct LinkStiffnessRun {
 Status validate(const LinkStiffnessRequest& request);
 
 // Checks the surface, then serves the result from the cache or meshes and solves (and stores it).
-// A result with fields (options.keep_fields) is always computed. kInvalidInput names the file.
+// A result with fields (options.keep_fields) or modes (options.modes) is always computed. kInvalidInput names the file.
 StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& request);
 
-// The request's link solved on meshes of the given sizes (m, >= 3, decreasing; no cache, no fields):
+// The request's link solved on meshes of the given sizes (m, >= 3, decreasing; no cache, no fields, no
+// modes):
 // the compliance per mesh and a Richardson estimate of each diagonal term (fea/mesh_convergence.hpp).
 StatusOr<ConvergenceStudy> link_stiffness_convergence(const LinkStiffnessRequest& request,
                                                       const std::vector<double>& sizes);

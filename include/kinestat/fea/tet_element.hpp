@@ -3,6 +3,9 @@
 // Strains and stresses in Voigt order xx, yy, zz, yz, xz, xy with engineering shear strains.
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "kinestat/core/types.hpp"
 #include "kinestat/elements/material.hpp"
 
@@ -24,6 +27,21 @@ template <int N>
 bool tet_stiffness(const Vec3* x, const Mat6& D, TetMatrix<N>* K);
 extern template bool tet_stiffness<4>(const Vec3*, const Mat6&, TetMatrix<4>*);
 extern template bool tet_stiffness<10>(const Vec3*, const Mat6&, TetMatrix<10>*);
+
+// Consistent mass matrix rho * integral of N^T N dV (kg), 3n x 3n, the same dof order as the
+// stiffness; `density` in kg/m^3. N^T N is of degree 2 (4 nodes) or 4 (10 nodes): the 4-node element
+// is integrated with the 4-point degree-2 rule, the 10-node one with the 14-point degree-5 rule
+// (positive weights), both exact for straight-sided elements. False (and an empty matrix from the
+// MatX form) when the Jacobian is not positive at a point.
+template <int N>
+bool tet_mass(const Vec3* x, double density, TetMatrix<N>* M);
+extern template bool tet_mass<4>(const Vec3*, double, TetMatrix<4>*);
+extern template bool tet_mass<10>(const Vec3*, double, TetMatrix<10>*);
+MatX tet_mass(const Vec3* x, int n, double density);
+
+// The rule tet_mass integrates with (degree 2: 4 points; above: the 14-point rule of degree 5), as
+// (xi, eta, zeta) and weight pairs on the unit tetrahedron (weights sum to 1/6).
+std::vector<std::pair<Vec3, double>> tet_quadrature_rule(int degree);
 
 // Strain-displacement matrix B (6 x 3n) at the natural point (xi, eta, zeta) and det J there.
 MatX tet_strain_matrix(const Vec3* x, int n, const Vec3& natural, double* det_jacobian);

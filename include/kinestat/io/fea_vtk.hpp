@@ -26,4 +26,14 @@ Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const f
 Status write_link_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,
                             const fea::LinkStiffness& result, std::vector<std::string>* written);
 
+// The link's vibration modes (LinkStiffnessOptions::modes with keep_fields): one file per mode with
+// the point vector "mode_shape" (mass-normalized, m/sqrt(kg): Warp By Vector with the file's
+// "warp_factor") and the field data "frequency_Hz" and "mode" (what the mode is), written as
+// DIR/PREFIX_modes_modeK.vtu (K = 1, 2, ...) and DIR/PREFIX_modes.pvd, which groups them (timesteps
+// 0, 1, ... in ascending frequency) as `kinestat modes` does for frames. DIR is created; the paths are
+// appended to `written`.
+Status write_link_mode_vtu(const std::string& path, const fea::TetMesh& mesh, const fea::LinkStiffness& result, int k);
+Status write_link_mode_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,
+                                 const fea::LinkStiffness& result, std::vector<std::string>* written);
+
 }  // namespace kinestat::io

@@ -1,5 +1,6 @@
 // The largest eigenvalues of a symmetric pencil A q = mu K q with K the (positive definite) reduced
-// stiffness: buckling (A = -K_G, mu = 1/lambda) and vibration (A = M, mu = 1/omega^2). Spectra's
+// stiffness: buckling (A = -K_G, mu = 1/lambda) and vibration of frames (msa) and of FEA links (fea)
+// (A = M, mu = 1/omega^2). Spectra's
 // Lanczos solver in regular-inverse mode (SymGEigsSolver<..., GEigsMode::RegularInverse>) on
 // kinestat's sparse Cholesky of K; below 24 unknowns, Eigen's dense generalized solver.
 //
@@ -15,13 +16,13 @@
 #include "kinestat/core/types.hpp"
 #include "kinestat/solver/sparse_cholesky.hpp"
 
-namespace kinestat::msa {
+namespace kinestat::solver {
 
 // The `count` largest mu (fewer when the system has fewer unknowns), descending, and their vectors
-// as columns, K-orthonormal (q' K q = 1). `chol` holds K's factorization. kNotConverged when Lanczos
+// as columns, K-orthonormal (q' K q = 1). `chol` holds K's factorization. Only the lower triangles of
+// A and Kr are read (full symmetric matrices and the FEA's lower-triangle storage both work). kNotConverged when Lanczos
 // does not converge, kInternal when it fails.
-StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const solver::SparseMatrix& A,
-                                                               const solver::SparseMatrix& Kr,
-                                                               const solver::SparseCholesky& chol, int count);
+StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
+                                                               const SparseCholesky& chol, int count);
 
-}  // namespace kinestat::msa
+}  // namespace kinestat::solver

@@ -1,4 +1,4 @@
-#include "msa/generalized_eigen.hpp"
+#include "kinestat/solver/generalized_eigen.hpp"
 
 #include <algorithm>
 #include <exception>
@@ -8,31 +8,31 @@
 #include <Spectra/SymGEigsSolver.h>
 #include <fmt/format.h>
 
-namespace kinestat::msa {
+namespace kinestat::solver {
 namespace {
 
 // Spectra's matrix operations (the interface of its SparseSymMatProd and SparseRegularInverse).
-// y = A x.
+// y = A x (A symmetric, its lower triangle read).
 struct Product {
   using Scalar = double;
-  const solver::SparseMatrix& A;
+  const SparseMatrix& A;
   Eigen::Index rows() const { return A.rows(); }
   Eigen::Index cols() const { return A.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<VecX>(y_out, A.rows()).noalias() = A * Eigen::Map<const VecX>(x_in, A.cols());
+    Eigen::Map<VecX>(y_out, A.rows()).noalias() = A.selfadjointView<Eigen::Lower>() * Eigen::Map<const VecX>(x_in, A.cols());
   }
 };
 
-// B = K (reduced, positive definite): y = B x, and y = B^-1 x through kinestat's sparse Cholesky
+// B = K (reduced, positive definite; its lower triangle read): y = B x, and y = B^-1 x through kinestat's sparse Cholesky
 // (CHOLMOD, or the caller's backend), factorized once.
 struct StiffnessInverse {
   using Scalar = double;
-  const solver::SparseMatrix& K;
-  const solver::SparseCholesky& chol;
+  const SparseMatrix& K;
+  const SparseCholesky& chol;
   Eigen::Index rows() const { return K.rows(); }
   Eigen::Index cols() const { return K.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<VecX>(y_out, K.rows()).noalias() = K * Eigen::Map<const VecX>(x_in, K.cols());
+    Eigen::Map<VecX>(y_out, K.rows()).noalias() = K.selfadjointView<Eigen::Lower>() * Eigen::Map<const VecX>(x_in, K.cols());
   }
   void solve(const double* x_in, double* y_out) const {
     MatX X;
@@ -48,12 +48,13 @@ constexpr int kDenseBelow = 24;
 
 }  // namespace
 
-StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const solver::SparseMatrix& A,
-                                                               const solver::SparseMatrix& Kr,
-                                                               const solver::SparseCholesky& chol, int count) {
+StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A,
+                                                               const SparseMatrix& Kr,
+                                                               const SparseCholesky& chol, int count) {
   const int n = static_cast<int>(Kr.rows());
   if (n < kDenseBelow) {
-    const MatX Ad(A), Kd(Kr);
+    const MatX Ad = MatX(SparseMatrix(A.selfadjointView<Eigen::Lower>()));
+    const MatX Kd = MatX(SparseMatrix(Kr.selfadjointView<Eigen::Lower>()));
     Eigen::GeneralizedSelfAdjointEigenSolver<MatX> ges(Ad, Kd);
     if (ges.info() != Eigen::Success) return Status::Internal("the dense generalized eigensolver failed");
     const int m = std::min(count, n);
@@ -70,7 +71,7 @@ StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const solver::Spa
     eig.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
     if (eig.info() != Spectra::CompInfo::Successful)
       return Status::NotConverged(fmt::format("the Lanczos eigensolver (Spectra) did not converge to {} eigenvalues in "
-                                              "1000 restarts; ask for fewer (--count)",
+                                              "1000 restarts; ask for fewer modes",
                                               nev));
     return std::pair<VecX, MatX>{eig.eigenvalues(), eig.eigenvectors()};
   } catch (const std::exception& e) {
@@ -78,5 +79,4 @@ StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const solver::Spa
   }
 }
 
-
-}  // namespace kinestat::msa
+}  // namespace kinestat::solver
