@@ -146,11 +146,12 @@ Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const V
 namespace {
 
 // A chain's residuals of eq. (11) at (x, F) for a target pose, with the Jacobian and H (a Newton
-// step needs both; the last one's serve the loaded stiffness: one walk of the chain per iterate).
+// step needs both, a chord step only the residuals; the last Newton step's serve the loaded
+// stiffness: one walk of the chain per iterate).
 struct Linearization {
   ChainWalk walk;
   ChainJacobian J;
-  CoordinateMatrix H;  // when with_hessian (linearize) or after add_hessian
+  CoordinateMatrix H;  // when linearize() computed it (with_hessian), or FixedChain::hessian from walk
   Vec6 r;              // target - f(x) as a twist
   CoordinateVector g;  // (J_q^T F, J_theta^T F - K_theta theta)
   double kin = 0, stat = 0;
