@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "kinestat/vjm/chain.hpp"
 #include "mechanisms/fixed_size_vjm.hpp"
@@ -30,13 +31,6 @@ Pose displace(const Pose& T, const Vec6& d) {
   if (angle > 0) out.R = Eigen::AngleAxisd(angle, d.tail<3>() / angle).toRotationMatrix() * T.R;
   return out;
 }
-
-// A moving factor's unit twist (spatial form: linear part = velocity of the point at the origin),
-// scaled by its coefficient, and the coordinate that drives it.
-struct Twist {
-  Vec3 v, w;
-  int slot;
-};
 
 }  // namespace
 
@@ -100,9 +94,8 @@ double FixedChain::length_scale() const {
   return L > 0.0 ? L : 1.0;
 }
 
-Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const Vec6* F, CoordinateMatrix* H) const {
+void FixedChain::walk(const CoordinateVector& x, ChainWalk& w, ChainJacobian& J) const {
   // vjm's walk: the twists of the moving factors in product order, then the tool pose.
-  std::array<Twist, kMaxFactors> tw;
   int nt = 0;
   Pose T;
   for (int k = 0; k < size_; ++k) {
@@ -118,34 +111,47 @@ Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const V
       value += f.coefficient * x[slot];
       const Vec3 a = T.R * f.axis;
       const double c = f.coefficient;
-      tw[nt++] = f.kind == Kind::kRevolute ? Twist{c * T.p.cross(a), c * a, slot} : Twist{c * a, Vec3::Zero(), slot};
+      w.tw[nt++] = f.kind == Kind::kRevolute ? ChainWalk::Twist{c * T.p.cross(a), c * a, slot}
+                                             : ChainWalk::Twist{c * a, Vec3::Zero(), slot};
     }
     if (f.kind == Kind::kRevolute)
       T.R = T.R * Eigen::AngleAxisd(value, f.axis).toRotationMatrix();
     else
       T.p += T.R * (value * f.axis);
   }
+  w.count = nt;
+  w.T = T;
   const Vec3& p = T.p;
   J.setZero(6, n_ + m_);
   for (int a = 0; a < nt; ++a) {
-    J.col(tw[a].slot).head<3>() += tw[a].v + tw[a].w.cross(p);  // velocity of the tool point
-    J.col(tw[a].slot).tail<3>() += tw[a].w;
+    w.u[a] = w.tw[a].v + w.tw[a].w.cross(p);  // velocity of the tool point
+    J.col(w.tw[a].slot).head<3>() += w.u[a];
+    J.col(w.tw[a].slot).tail<3>() += w.tw[a].w;
   }
-  if (F && H) {
-    H->setZero(n_ + m_, n_ + m_);
-    vjm::for_each_hessian_term(tw.data(), nt, p, *F,
-                               [&](int b, int a, double value) { (*H)(tw[b].slot, tw[a].slot) += value; });
-  }
-  return T;
+}
+
+void FixedChain::hessian(const ChainWalk& w, const Vec6& F, CoordinateMatrix& H) const {
+  H.setZero(n_ + m_, n_ + m_);
+  vjm::for_each_hessian_term(w.tw.data(), w.count, w.T.p, F,
+                               [&](int b, int a, double value) { H(w.tw[b].slot, w.tw[a].slot) += value; });
+}
+
+Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const Vec6* F, CoordinateMatrix* H) const {
+  ChainWalk w;
+  walk(x, w, J);
+  if (F && H) hessian(w, *F, *H);
+  return w.T;
 }
 
 namespace {
 
 // A chain's residuals of eq. (11) at (x, F) for a target pose, with the Jacobian and H (a Newton
-// step needs both; the last one's serve the loaded stiffness: one walk of the chain per iterate).
+// step needs both, a chord step only the residuals; the last Newton step's serve the loaded
+// stiffness: one walk of the chain per iterate).
 struct Linearization {
+  ChainWalk walk;
   ChainJacobian J;
-  CoordinateMatrix H;
+  CoordinateMatrix H;  // when linearize() computed it (with_hessian), or FixedChain::hessian from walk
   Vec6 r;              // target - f(x) as a twist
   CoordinateVector g;  // (J_q^T F, J_theta^T F - K_theta theta)
   double kin = 0, stat = 0;
@@ -154,10 +160,11 @@ struct Linearization {
 
 // vjm::chain_equilibrium's residuals and scaling (w: the chain's twist scale).
 void linearize(const FixedChain& c, const Pose& target, const Vec6& w, const CoordinateVector& x, const Vec6& F,
-               Linearization& l) {
+               Linearization& l, bool with_hessian = true) {
   const int n = c.num_passive(), m = c.num_virtual();
-  const Pose T = c.kinematics(x, l.J, &F, &l.H);
-  l.r = pose_difference(target, T);
+  c.walk(x, l.walk, l.J);
+  if (with_hessian) c.hessian(l.walk, F, l.H);
+  l.r = pose_difference(target, l.walk.T);
   l.kin = l.r.cwiseProduct(w).norm();
   l.g = l.J.transpose() * F;
   const CoordinateVector Kt = c.spring_stiffness() * x.tail(m);
@@ -231,56 +238,93 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
 // its target, which condenses it to F_i + dF_i0 + K_i dt (K_i: the chain's dF/dt, eq. 21 by the
 // Schur complement of the same matrix); the 6x6 sum gives dt. The nested iteration (equilibrium(),
 // the reference's) re-solves every chain to 1e-12 at each platform step; near a neighbour's solution
-// this converges in the same few steps for all the unknowns together. Stops one step after every
-// chain and the platform meet the nested iteration's tolerances; false after 8 iterations.
+// this converges in the same few steps for all the unknowns together.
+//
+// A round whose residuals are not yet within the tolerances may be a chord step: the residuals
+// (a walk of each chain, no Hessian) solved with the factors, the K_i and the 6x6 of the last Newton
+// step, as long as each such round divides the largest residual by kChordContraction at least (the
+// factors of the first step from a neighbour's equilibrium are those of the solution to a few 1e-3,
+// so that a chord step gains about as many digits as a Newton step, for a fifth of its price);
+// elsewhere a Newton step at the current state. Once every chain and the platform meet the nested
+// iteration's tolerances and chord steps no longer contract (the round-off floor), one more Newton
+// step, whose J and H serve the loaded stiffness (loaded_stiffness, eq. 21 at that state). False
+// after 8 Newton steps without converging. `steps` counts the Newton steps (one per chain), not the
+// chord steps.
 bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps) {
-  constexpr int kMaxCoupledIterations = 8;
+  constexpr int kMaxNewtonSteps = 8, kMaxChordSteps = 8;
+  constexpr double kChordContraction = 0.1;
   const Vec6 w = twist_scale(length_scale_);
   const double ref = wrench.cwiseQuotient(w).norm();
   std::array<Linearization, kMaxChains> lin;
   std::array<Vec6, kMaxChains> wc;
   for (int i = 0; i < num_chains; ++i) wc[i] = twist_scale(chains[i].length_scale());
-  BorderedMatrix A;
-  Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7> rhs, sol;
-  std::array<decltype(sol), kMaxChains> sols;
-  // One more step once the tolerances are met: Newton then lands at the round-off floor.
-  bool polished = false;
-  for (int it = 0;; ++it) {
-    bool chains_done = true;
+  std::array<BorderedMatrix, kMaxChains> lu;
+  std::array<std::array<int, kMaxCoordinates + 6>, kMaxChains> perm;
+  using Solutions = Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7>;
+  std::array<Solutions, kMaxChains> sols;
+  BorderedVector b;
+  Mat6 Ksum = Mat6::Zero();
+  Eigen::FullPivLU<Mat6> platform_lu;
+  bool factored = false;
+  int newton_steps = 0, chord_steps = 0;
+  double last_merit = std::numeric_limits<double>::infinity();
+  for (;;) {
+    // The largest residual in units of its tolerance: each chain's kinematic and static ones, the
+    // platform's relative wrench residual (tolerance 100 times the chains').
+    double merit = 0.0;
     Vec6 total = Vec6::Zero();
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
-      linearize(chains[i], displace(nominal_[i], d), wc[i], s.x, s.wrench, lin[i]);
-      chains_done = chains_done && lin[i].kin <= equilibrium_tolerance && lin[i].stat <= equilibrium_tolerance;
+      linearize(chains[i], displace(nominal_[i], d), wc[i], s.x, s.wrench, lin[i], false);
+      merit = std::max({merit, lin[i].kin, lin[i].stat});
       total += s.wrench;
     }
     const Vec6 R = (wrench - total).cwiseQuotient(w);
-    const double res = ref > 0 ? R.norm() / ref : R.norm();
-    if (polished) break;
-    if (chains_done && res <= 100 * equilibrium_tolerance)
-      polished = true;
-    else if (it >= kMaxCoupledIterations)
-      return false;
-    // Condensed platform system: sum K_i dt = W_ext - sum (F_i + dF_i0), in the platform's scaling.
-    Mat6 Ksum = Mat6::Zero();
-    Vec6 F0 = Vec6::Zero();
-    for (int i = 0; i < num_chains; ++i) {
-      const FixedChain& c = chains[i];
-      const int N = c.num_passive() + c.num_virtual() + 6;
-      ++steps;
-      newton_matrix(c, wc[i], lin[i], A);
-      rhs.setZero(N, 7);
-      rhs.col(0) << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
-      rhs.topRightCorner<6, 6>() = wc[i].asDiagonal();  // the target moved by a unit twist
-      if (!gauss_solve(A, rhs) || !rhs.allFinite()) return false;
-      sols[i] = rhs;
-      F0 += states_[i].wrench + sols[i].col(0).tail<6>().cwiseProduct(wc[i]);
-      Ksum += wc[i].asDiagonal() * sols[i].bottomRightCorner<6, 6>();
+    merit = std::max(merit, (ref > 0 ? R.norm() / ref : R.norm()) / 100) / equilibrium_tolerance;
+    if (!(merit == merit)) return false;  // NaN
+    const bool converged = merit <= 1.0;
+    // A chord step while they contract; converged, the last one is a Newton step from the state at
+    // which they stop contracting (the round-off floor), so that K is that state's.
+    const bool chord = factored && merit < kChordContraction * last_merit && chord_steps < kMaxChordSteps;
+    const bool last = converged && !chord;
+    last_merit = merit;
+    if (chord) {
+      ++chord_steps;
+      for (int i = 0; i < num_chains; ++i) {
+        const int N = chains[i].num_passive() + chains[i].num_virtual() + 6;
+        b.resize(N);
+        b << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
+        gauss_substitute(lu[i], perm[i], b);
+        if (!b.allFinite()) return false;
+        sols[i].col(0) = b;
+      }
+    } else {
+      if (!last && newton_steps >= kMaxNewtonSteps) return false;
+      ++newton_steps;
+      // Condensed platform system: sum K_i dt = W_ext - sum (F_i + dF_i0), in the platform's scaling.
+      Ksum.setZero();
+      for (int i = 0; i < num_chains; ++i) {
+        const FixedChain& c = chains[i];
+        const int N = c.num_passive() + c.num_virtual() + 6;
+        c.hessian(lin[i].walk, states_[i].wrench, lin[i].H);
+        newton_matrix(c, wc[i], lin[i], lu[i]);
+        if (!gauss_factor(lu[i], perm[i])) return false;
+        Solutions& x = sols[i];
+        x.setZero(N, 7);
+        x.col(0) << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
+        x.topRightCorner<6, 6>() = wc[i].asDiagonal();  // the target moved by a unit twist
+        gauss_substitute(lu[i], perm[i], x);
+        if (!x.allFinite()) return false;
+        Ksum += wc[i].asDiagonal() * x.bottomRightCorner<6, 6>();
+      }
+      platform_lu.compute(w.cwiseInverse().asDiagonal() * Ksum * w.cwiseInverse().asDiagonal());
+      if (!platform_lu.isInvertible()) return false;
+      factored = true;
     }
-    const Mat6 Kt = w.cwiseInverse().asDiagonal() * Ksum * w.cwiseInverse().asDiagonal();
-    const Eigen::FullPivLU<Mat6> lu(Kt);
-    if (!lu.isInvertible()) return false;
-    const Vec6 dt = lu.solve((wrench - F0).cwiseQuotient(w)).cwiseQuotient(w);
+    if (!chord) steps += num_chains;  // newton_iterations counts the factorizations
+    Vec6 F0 = Vec6::Zero();
+    for (int i = 0; i < num_chains; ++i) F0 += states_[i].wrench + sols[i].col(0).tail<6>().cwiseProduct(wc[i]);
+    const Vec6 dt = platform_lu.solve((wrench - F0).cwiseQuotient(w)).cwiseQuotient(w);
     if (!dt.allFinite()) return false;
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
@@ -290,6 +334,7 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps
       s.wrench += (x.col(0).tail<6>() + x.bottomRightCorner<6, 6>() * dt).cwiseProduct(wc[i]);
     }
     d = pose_difference(displace(displace(nominal_[0], d), dt), nominal_[0]);
+    if (last) break;
   }
   for (int i = 0; i < num_chains; ++i) {
     states_[i].J = lin[i].J;
@@ -417,8 +462,8 @@ bool LoadedPlatform::equilibrium(const Vec6* displacement, const Vec6* wrench, b
   return false;
 }
 
-void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm,
-                              PostureResult& r) {
+void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded,
+                              bool warm, PostureResult& r) {
   length_scale_ = 0.0;
   ChainJacobian J;
   std::array<CoordinateVector, kMaxChains>& nominal = rest_;
@@ -432,23 +477,42 @@ void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, cons
   Mat6 K;
   bool have_K = false, found = false;
   r.newton_iterations = 0;
-  // (A neighbour deflected beyond kMaxWarmDeflection would not pass the test below: no attempt.)
-  if (warm && solved_ && unloaded && solved_d_.cwiseProduct(w).norm() <= kMaxWarmDeflection) {
+  // A prescribed displacement beyond kMaxWarmDeflection is solved from rest (part of the branch test
+  // below, decided before the attempt).
+  const bool within = !displacement || displacement->cwiseProduct(w).norm() <= kMaxWarmDeflection;
+  if (warm && solved_ && unloaded && within) {
+    // The predictor: the neighbour's equilibrium carried over (each passive joint keeps its deflection
+    // from its nominal angle, each spring its deflection, each chain its wrench, the platform its
+    // displacement), extrapolated linearly from the two points before when the path goes straight on
+    // (the secant through them: its error is second order in the step).
+    const bool secant =
+        solved_before_ && (point - 2 * solved_point_ + before_point_).norm() <= 1e-6 * (point - solved_point_).norm();
     for (int i = 0; i < num_chains; ++i) {
-      states_[i].x += nominal[i] - solved_nominal_[i];
-      states_[i].linearized = false;
+      FixedChainState& s = states_[i];
+      s.x = nominal[i] + solved_deflection_[i];
+      s.wrench = solved_wrench_[i];
+      if (secant) {
+        s.x += solved_deflection_[i] - before_deflection_[i];
+        s.wrench += solved_wrench_[i] - before_wrench_[i];
+      }
+      s.linearized = false;
     }
-    d = solved_d_;
+    d = secant ? Vec6(2 * solved_d_ - before_d_) : solved_d_;
     found = equilibrium(displacement, wrench, false, d, K, have_K, r.newton_iterations);
     // The branch test: a warm start follows the neighbour's equilibrium branch, the start from rest
     // may find another where the load softens the robot much (next to a buckling limit, beyond which
-    // Newton from rest can land on an unstable equilibrium) or deflects it far (several stiff
-    // equilibria: 1-3 points of 1331 of the 3-PUU's map differed by up to 95 % under 14-20 kN,
-    // deflections of 9-38 mm). So the warm answer is kept only where the load leaves more than
-    // kBranchSoftening of the stiffness in every direction, of the platform (sym K - kBranchSoftening
-    // sym K0 positive definite, K0 unloaded, scaled twists) and of every chain's springs
-    // (sym(K_theta - H_thetatheta) - kBranchSoftening K_theta: eq. 21's spring block), and where
-    // |W d| <= kMaxWarmDeflection; elsewhere the point is solved from rest, as it would be alone.
+    // Newton from rest can land on an unstable equilibrium) or where the equilibrium is far from the
+    // linear response (several stiff equilibria: 1-3 points of 1331 of the 3-PUU's map differed by
+    // up to 95 % under 14-20 kN, deflections of 9-38 mm). So the warm answer is kept only where the
+    // load leaves more than kBranchSoftening of the stiffness in every direction, of the platform
+    // (sym K - kBranchSoftening sym K0 positive definite, K0 unloaded, scaled twists) and of every
+    // chain's springs (sym(K_theta - H_thetatheta) - kBranchSoftening K_theta: eq. 21's spring block),
+    // and, under a wrench, where the deflection d is within kMaxNonlinearity of the linear one
+    // d0 = K0^-1 W_ext, |W (d - d0)| <= kMaxNonlinearity |W d0|: d0 is the first step of the start
+    // from rest (nested_equilibrium at rest, K = K0), which then lands on the equilibrium next to it.
+    // Elsewhere the point is solved from rest, as it would be alone. (With kBranchSoftening 0.5 and
+    // kMaxNonlinearity 0.1, warm answers kept next to the 3-PRPaR's buckling limit under 20 kN
+    // differed from the start from rest by up to 4e-8, the conditioning of those equilibria.)
     if (found) {
       if (!have_K && !platform_stiffness(K)) found = false;
       have_K = found;
@@ -456,7 +520,11 @@ void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, cons
       const Mat6 K0t = w.cwiseInverse().asDiagonal() * *unloaded * w.cwiseInverse().asDiagonal();
       const Mat6 margin = 0.5 * (Kt + Kt.transpose()) - kBranchSoftening * 0.5 * (K0t + K0t.transpose());
       if (found && Eigen::LLT<Mat6>(margin).info() != Eigen::Success) found = false;
-      if (found && !(d.cwiseProduct(w).norm() <= kMaxWarmDeflection)) found = false;
+      if (found && wrench) {
+        const Eigen::LLT<Mat6> llt(0.5 * (K0t + K0t.transpose()));
+        const Vec6 d0 = llt.solve(wrench->cwiseQuotient(w));
+        found = llt.info() == Eigen::Success && (d.cwiseProduct(w) - d0).norm() <= kMaxNonlinearity * d0.norm();
+      }
       for (int i = 0; i < num_chains && found; ++i) {
         const FixedChain& c = chains[i];
         const int m = c.num_virtual();
@@ -472,7 +540,10 @@ void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, cons
     d.setZero();
     found = equilibrium(displacement, wrench, true, d, K, have_K, r.newton_iterations);
   }
-  solved_ = false;
+  // A secant needs the two points before on this path: not across a start from scratch (a path
+  // chunk's first point), whose predecessor in this clone belongs to another chunk.
+  const bool had_solved = warm && solved_;
+  solved_ = solved_before_ = false;
   r.status = PostureStatus::kFailed;
   if (!found) return;
   r.status = PostureStatus::kSingular;
@@ -487,8 +558,19 @@ void LoadedPlatform::evaluate(const Vec6* displacement, const Vec6* wrench, cons
   r.compliance = w.cwiseInverse().asDiagonal() * Eigen::FullPivLU<Mat6>(Kt).inverse() * w.cwiseInverse().asDiagonal();
   r.indices = cartesian_indices(K);
   r.deflection = d;
+  solved_before_ = had_solved;
+  if (had_solved) {
+    before_point_ = solved_point_;
+    before_deflection_ = solved_deflection_;
+    before_wrench_ = solved_wrench_;
+    before_d_ = solved_d_;
+  }
   solved_ = true;
-  solved_nominal_ = nominal;
+  solved_point_ = point;
+  for (int i = 0; i < num_chains; ++i) {
+    solved_deflection_[i] = states_[i].x - nominal[i];
+    solved_wrench_[i] = states_[i].wrench;
+  }
   solved_d_ = d;
 }
 

@@ -29,8 +29,12 @@ inline constexpr int kMaxChains = 3;
 // A warm-started loaded equilibrium is kept where the load leaves more than this share of the
 // unloaded stiffness in every direction, of the platform and of every chain's springs
 // (LoadedPlatform::evaluate).
-inline constexpr double kBranchSoftening = 0.5;
-// Nor beyond this deflection (scaled twist: translation / length scale, rotation in rad).
+inline constexpr double kBranchSoftening = 0.8;
+// Under a wrench, nor where its deflection d departs from the linear one d0 = K0^-1 W_ext by more
+// than this share, |W (d - d0)| <= kMaxNonlinearity |W d0| (scaled twists).
+inline constexpr double kMaxNonlinearity = 0.05;
+// Under a prescribed displacement, none beyond this one (scaled twist: translation / length scale,
+// rotation in rad).
 inline constexpr double kMaxWarmDeflection = 0.01;
 
 using CoordinateVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxCoordinates, 1>;
@@ -40,6 +44,20 @@ using ChainJacobian = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxCoordin
 struct Pose {
   Mat3 R = Mat3::Identity();
   Vec3 p = Vec3::Zero();
+};
+
+// A walk of a chain at x: the unit twists of its moving factors in product order (spatial form,
+// times the factor's coefficient), each one's tool-point velocity u = v + w x p and coordinate slot,
+// and the tool pose; the Jacobian sums the twists by slot, the Hessian of eq. (19)-(20) pairs them.
+struct ChainWalk {
+  struct Twist {
+    Vec3 v, w;
+    int slot;
+  };
+  std::array<Twist, kMaxFactors> tw;
+  std::array<Vec3, kMaxFactors> u;
+  int count = 0;
+  Pose T;
 };
 
 // Coordinates x = (q, theta): the passive joints, then the springs' virtual coordinates.
@@ -67,6 +85,10 @@ class FixedChain {
   // Tool pose at x, the Jacobian [J_q J_theta] (eq. 5) and, with F, H = d(J^T F)/dx (eq. 19-20).
   Pose kinematics(const CoordinateVector& x, ChainJacobian& J, const Vec6* F = nullptr,
                   CoordinateMatrix* H = nullptr) const;
+  // The same in two parts: the walk and J at x, then H at F from the walk (a chord step of the
+  // equilibrium needs no H).
+  void walk(const CoordinateVector& x, ChainWalk& w, ChainJacobian& J) const;
+  void hessian(const ChainWalk& w, const Vec6& F, CoordinateMatrix& H) const;
 
  private:
   enum class Kind : std::uint8_t { kConstant, kRevolute, kPrismatic };
@@ -114,11 +136,14 @@ struct LoadedPlatform {
   // with `warm` and the unloaded platform stiffness `unloaded` of this posture, from the equilibrium
   // of the last posture that ended kOk (the chains rebuilt for the new posture since), carried over:
   // each passive joint keeps its deflection from its nominal angle, each spring its deflection, each
-  // chain its wrench, the platform its displacement. A warm start that does not converge, or whose
-  // loaded stiffness fails the branch test against `unloaded` (fixed_chain.cpp), is redone from rest.
-  void evaluate(const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm, PostureResult& r);
+  // chain its wrench, the platform its displacement (extrapolated from the two postures before when
+  // `point` continues their line). A warm start that does not converge, or whose answer fails the
+  // branch test against `unloaded` (fixed_chain.cpp), is redone from rest.
+  // `point`: the posture's tool point (m), which tells whether the path goes straight on.
+  void evaluate(const Vec3& point, const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm,
+                PostureResult& r);
   // The next warm start starts from rest (the previous posture had no equilibrium to carry over).
-  void forget() { solved_ = false; }
+  void forget() { solved_ = solved_before_ = false; }
 
  private:
   bool solve_chain(int i, const Pose& target, FixedChainState& s, int& steps) const;
@@ -139,11 +164,14 @@ struct LoadedPlatform {
   std::array<CoordinateVector, kMaxChains> rest_;  // the chains' nominal coordinates (q0, 0)
   std::array<Pose, kMaxChains> nominal_;
   double length_scale_ = 1.0;
-  // The last kOk posture: its chains' nominal coordinates and the platform displacement (its chain
-  // states are states_).
-  bool solved_ = false;
-  std::array<CoordinateVector, kMaxChains> solved_nominal_;
-  Vec6 solved_d_ = Vec6::Zero();
+  // The last kOk posture (solved_) and the one before it (solved_before_: both kOk, one after the
+  // other): the point, each chain's deflection from its nominal coordinates and wrench, the platform
+  // displacement.
+  bool solved_ = false, solved_before_ = false;
+  Vec3 solved_point_ = Vec3::Zero(), before_point_ = Vec3::Zero();
+  std::array<CoordinateVector, kMaxChains> solved_deflection_, before_deflection_;
+  std::array<Vec6, kMaxChains> solved_wrench_, before_wrench_;
+  Vec6 solved_d_ = Vec6::Zero(), before_d_ = Vec6::Zero();
 };
 
 }  // namespace kinestat::mechanisms::fixed_vjm

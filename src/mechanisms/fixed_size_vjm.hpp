@@ -4,6 +4,7 @@
 // chains whose springs are all regular, with the same twist scaling (vjm/bordered_system.hpp).
 #pragma once
 
+#include <array>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -52,22 +53,22 @@ Eigen::Matrix<double, N, M> lower_solve(const Eigen::Matrix<double, N, N>& facto
   return B;
 }
 
-// A X = B for a square A of a few dozen rows by Gaussian elimination with partial pivoting, in place
-// (A is overwritten by its LU factors, B by X), in plain column-wise loops: Eigen's PartialPivLU takes
-// its blocked path above 16 rows (GEMM updates and packing), a quarter of a loaded map's time at the
-// chains' 22-23 rows. False at a zero pivot.
-template <class MatrixA, class MatrixB>
-bool gauss_solve(MatrixA& A, MatrixB& B) {
-  const Eigen::Index n = A.rows(), r = B.cols();
+// A X = B for a square A of a few dozen rows by Gaussian elimination with partial pivoting, in place,
+// in plain column-wise loops: Eigen's PartialPivLU takes its blocked path above 16 rows (GEMM updates
+// and packing), a quarter of a loaded map's time at the chains' 22-23 rows. gauss_factor overwrites A
+// by its LU factors and records the row exchanges (perm[k]: the row exchanged with k at step k);
+// gauss_substitute then overwrites B by A^-1 B, as often as wanted (a chord step reuses the factors of
+// an earlier Newton step). False at a zero pivot.
+template <class MatrixA, class Perm>
+bool gauss_factor(MatrixA& A, Perm& perm) {
+  const Eigen::Index n = A.rows();
   for (Eigen::Index k = 0; k < n; ++k) {
     Eigen::Index p = k;
     for (Eigen::Index i = k + 1; i < n; ++i)
       if (std::abs(A(i, k)) > std::abs(A(p, k))) p = i;
     if (!(A(p, k) != 0.0)) return false;
-    if (p != k) {
-      A.row(p).swap(A.row(k));
-      B.row(p).swap(B.row(k));
-    }
+    perm[k] = static_cast<int>(p);
+    if (p != k) A.row(p).swap(A.row(k));
     const double pivot = A(k, k);
     for (Eigen::Index i = k + 1; i < n; ++i) A(i, k) /= pivot;
     for (Eigen::Index j = k + 1; j < n; ++j) {
@@ -75,18 +76,34 @@ bool gauss_solve(MatrixA& A, MatrixB& B) {
       if (a != 0.0)
         for (Eigen::Index i = k + 1; i < n; ++i) A(i, j) -= A(i, k) * a;
     }
-    for (Eigen::Index j = 0; j < r; ++j) {
+  }
+  return true;
+}
+
+template <class MatrixA, class Perm, class MatrixB>
+void gauss_substitute(const MatrixA& LU, const Perm& perm, MatrixB& B) {
+  const Eigen::Index n = LU.rows(), r = B.cols();
+  for (Eigen::Index k = 0; k < n; ++k)
+    if (perm[k] != k) B.row(perm[k]).swap(B.row(k));
+  for (Eigen::Index j = 0; j < r; ++j) {
+    for (Eigen::Index k = 0; k < n; ++k) {
       const double b = B(k, j);
       if (b != 0.0)
-        for (Eigen::Index i = k + 1; i < n; ++i) B(i, j) -= A(i, k) * b;
+        for (Eigen::Index i = k + 1; i < n; ++i) B(i, j) -= LU(i, k) * b;
+    }
+    for (Eigen::Index k = n - 1; k >= 0; --k) {
+      const double x = B(k, j) /= LU(k, k);
+      if (x != 0.0)
+        for (Eigen::Index i = 0; i < k; ++i) B(i, j) -= LU(i, k) * x;
     }
   }
-  for (Eigen::Index j = 0; j < r; ++j)
-    for (Eigen::Index k = n - 1; k >= 0; --k) {
-      const double x = B(k, j) /= A(k, k);
-      if (x != 0.0)
-        for (Eigen::Index i = 0; i < k; ++i) B(i, j) -= A(i, k) * x;
-    }
+}
+
+template <class MatrixA, class MatrixB>
+bool gauss_solve(MatrixA& A, MatrixB& B) {
+  std::array<int, 64> perm;
+  if (A.rows() > 64 || !gauss_factor(A, perm)) return false;
+  gauss_substitute(A, perm, B);
   return true;
 }
 

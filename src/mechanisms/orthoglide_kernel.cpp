@@ -239,7 +239,7 @@ PostureResult OrthoglideKernel::loaded(const Vec3& p, const Vec3& rho, const Mat
     c.add_transform(R.transpose(), Vec3::Zero());
   }
   // A wrench wins over a displacement, as in the reference.
-  loaded_.evaluate(o_.wrench ? nullptr : &*o_.displacement, o_.wrench ? &*o_.wrench : nullptr, unloaded, warm, r);
+  loaded_.evaluate(p, o_.wrench ? nullptr : &*o_.displacement, o_.wrench ? &*o_.wrench : nullptr, unloaded, warm, r);
   return r;
 }
 
