@@ -146,15 +146,8 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
     return fail(Status::Invalid(fmt::format("--step {:g} mm: the grid step must be positive", *a.step)));
   if (!a.min_stiffness)
     return fail(Status::Invalid("--min-stiffness K (N/mm) is required: the score is the volume where k_t_min >= K"));
-  if (!(*a.min_stiffness >= 0.0 && std::isfinite(*a.min_stiffness)))
-    return fail(Status::Invalid(fmt::format("--min-stiffness {:g} N/mm: give a stiffness >= 0", *a.min_stiffness)));
-  o.min_stiffness = *a.min_stiffness / kMm;  // N/mm -> N/m
-  if (!(a.near_singular >= 0.0 && a.near_singular <= 1.0))
-    return fail(Status::Invalid(fmt::format("--near-singular {:g}: the threshold is in [0, 1]", a.near_singular)));
-  o.near_singular_threshold = a.near_singular;
-  if (a.threads < 0) return fail(Status::Invalid("--threads must be 0 (all cores) or a positive count"));
-  o.threads = a.threads;
-  o.max_postures = a.max_postures;
+  if (Status st = set_sweep_options(a.min_stiffness, a.near_singular, a.threads, a.max_postures, o); !st.ok())
+    return fail(st);
 
   // The file as written: its parameters (every --param must name one), units, task and workspace.
   StatusOr<bool> robot = io::is_robot_file(a.target);

@@ -9,8 +9,14 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
 #include "kinestat/cli/app.hpp"
 #include "kinestat/core/status.hpp"
+#include "kinestat/core/units.hpp"
 
 namespace kinestat::cli {
 
@@ -22,5 +28,24 @@ void add_five_bar_design(CLI::App* design, Context& ctx);
 // added to `written`.
 Status write_sweep_json(nlohmann::json j, const std::string& path, double seconds, std::size_t postures, int threads,
                         Context& ctx, std::vector<std::string>& written);
+
+// The options every design sweep shares, checked, into its options `o`: --min-stiffness (N/mm, if
+// given), --near-singular, --threads, --max-postures.
+template <class SweepOptions>
+Status set_sweep_options(const std::optional<double>& min_stiffness, double near_singular, int threads,
+                         double max_postures, SweepOptions& o) {
+  if (min_stiffness) {
+    if (!(*min_stiffness >= 0.0 && std::isfinite(*min_stiffness)))
+      return Status::Invalid(fmt::format("--min-stiffness {:g} N/mm: give a stiffness >= 0", *min_stiffness));
+    o.min_stiffness = *min_stiffness / units::kMm;  // N/mm -> N/m
+  }
+  if (!(near_singular >= 0.0 && near_singular <= 1.0))
+    return Status::Invalid(fmt::format("--near-singular {:g}: the threshold is in [0, 1]", near_singular));
+  o.near_singular_threshold = near_singular;
+  if (threads < 0) return Status::Invalid("--threads must be 0 (all cores) or a positive count");
+  o.threads = threads;
+  o.max_postures = max_postures;
+  return Status::Ok();
+}
 
 }  // namespace kinestat::cli

@@ -78,17 +78,8 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   if (a.steps < 2 || a.steps > 1000)
     return fail(Status::Invalid(fmt::format("--steps {}: designs per link length must lie in [2, 1000]", a.steps)));
   o.steps = a.steps;
-  if (a.min_stiffness) {
-    if (!(*a.min_stiffness >= 0.0 && std::isfinite(*a.min_stiffness)))
-      return fail(Status::Invalid(fmt::format("--min-stiffness {:g} N/mm: give a stiffness >= 0", *a.min_stiffness)));
-    o.min_stiffness = *a.min_stiffness / kMm;  // N/mm -> N/m
-  }
-  if (!(a.near_singular >= 0.0 && a.near_singular <= 1.0))
-    return fail(Status::Invalid(fmt::format("--near-singular {:g}: the threshold is in [0, 1]", a.near_singular)));
-  o.near_singular_threshold = a.near_singular;
-  if (a.threads < 0) return fail(Status::Invalid("--threads must be 0 (all cores) or a positive count"));
-  o.threads = a.threads;
-  o.max_postures = a.max_postures;
+  if (Status st = set_sweep_options(a.min_stiffness, a.near_singular, a.threads, a.max_postures, o); !st.ok())
+    return fail(st);
 
   auto ranges = parse_ranges_mm(a.region, 2, "--region", "x0:x1,y0:y1");
   if (!ranges.ok()) return fail(ranges.status());
