@@ -131,6 +131,7 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
   RobotDesignSweepOptions& o = setup.options;
   if (a.target.empty())
     return fail(Status::Invalid("give a robot file (kinestat design ROBOT.yaml --param NAME=LO:HI ...) or a "
+                                "subcommand: fivebar, orthoglide"));
   if (a.params.empty())
     return fail(Status::Invalid("--param NAME=LO:HI is required (at least one parameter of the file to sweep)"));
   for (const std::string& text : a.params) {
@@ -154,6 +155,7 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
   if (!robot.ok()) return fail(robot.status());
   if (!*robot)
     return fail(Status::Invalid(fmt::format("{}: not a robot file (no top-level `robot:`); `kinestat design` takes a "
+                                            "robot file (docs/robots.md) or the subcommands fivebar, orthoglide",
                                             a.target)));
   auto file = io::read_robot_params(a.target);
   if (!file.ok()) return fail(file.status());
@@ -340,7 +342,9 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
 void register_design_command(CLI::App& app, Context& ctx) {
   CLI::App* design = app.add_subcommand(
       "design", "design sweep of a robot file (ROBOT.yaml --param NAME=LO:HI ...: the best design by the volume "
+                "stiffer than --min-stiffness; docs/maps.md), or the subcommands fivebar and orthoglide");
   design->require_subcommand(0, 1);
+  // A robot file: the options below belong to it; `design fivebar` and `design orthoglide` have their own.
   auto robot = std::make_shared<RobotDesignArgs>();
   design->add_option("robot", robot->target, "a robot file (YAML with `robot:`, docs/robots.md; models/robots/)");
   design->add_option("--param", robot->params,
@@ -373,8 +377,11 @@ void register_design_command(CLI::App& app, Context& ctx) {
   design->add_option("--vti", robot->vti, "write the design map (one to three parameters) as VTK ImageData (.vti)");
   design->add_flag("--quiet", robot->quiet, "no progress on stderr");
   design->callback([design, robot, &ctx] {
+    if (!design->get_subcommands().empty()) return;  // fivebar or orthoglide ran
     ctx.exit_code = run_robot_design(*robot, ctx);
   });
+  add_orthoglide_design(design, ctx);
+  add_five_bar_design(design, ctx);
 }
 
 }  // namespace kinestat::cli

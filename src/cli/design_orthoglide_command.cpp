@@ -26,6 +26,7 @@
 #include "kinestat/io/orthoglide_results_json.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/io/results_json.hpp"
+#include "kinestat/io/workspace_vtk.hpp"
 #include "kinestat/mechanisms/orthoglide_design.hpp"
 
 namespace kinestat::cli {
@@ -150,6 +151,7 @@ int run_design(const DesignArgs& a, Context& ctx) {
     print_design(out.report(), designs[i], checks[i]);
     if (!a.vtk_dir.empty()) {
       std::vector<std::string> written;
+      if (Status st = io::write_orthoglide_workspace_vtk(designs[i], a.vtk_grid, a.vtk_dir, &written, a.max_points);
           !st.ok())
         return fail(st);
       for (const auto& path : written) out.report() << "  wrote " << path << " (lengths in m)\n";
