@@ -244,8 +244,8 @@ std::string summary_text(const WorkspaceMap& map, const std::string& step) {
                                 g.dimensions[0], g.dimensions[1], g.dimensions[2], g.num_points(), step,
                                 ranges_text(extent, g));
   out += "  points:";
-  for (int s = 0; s < kNumMapPointStatuses; ++s)
-    out += fmt::format("{} {} {}", s ? "," : "", map.status_counts[s], to_string(static_cast<MapPointStatus>(s)));
+  for (int s = 0; s < kNumPostureStatuses; ++s)
+    out += fmt::format("{} {} {}", s ? "," : "", map.status_counts[s], to_string(static_cast<PostureStatus>(s)));
   out += fmt::format(" (near-singular: singularity measure < {:g})\n", map.near_singular_threshold);
   const bool volume = g.num_varying_axes() == 3;
   const UnitDisplay m = measure_display(g);
@@ -341,18 +341,18 @@ int run_map(MapArgs& a, Context& ctx) {
     map = compute_workspace_map(*setup->kernel, *grid, options);
   }
   if (!map.ok()) return fail(map.status());
-  if (map->status_counts[static_cast<int>(MapPointStatus::kUnreachable)] == grid->num_points())
+  if (map->status_counts[static_cast<int>(PostureStatus::kUnreachable)] == grid->num_points())
     return fail(Status::Invalid(fmt::format("no reachable point in {} ({}) for {}: {}; nothing written",
                                             setup->range_option, region, map->description, setup->workspace_hint)));
   // Reachable points, none with a stiffness (a load past buckling everywhere, a region on a
   // singular locus): a summary of NaN would look like a result.
-  const auto count = [&map](MapPointStatus s) { return map->status_counts[static_cast<int>(s)]; };
-  if (count(MapPointStatus::kOk) + count(MapPointStatus::kNearSingular) == 0) {
-    const std::size_t failed = count(MapPointStatus::kFailed), singular = count(MapPointStatus::kSingular);
+  const auto count = [&map](PostureStatus s) { return map->status_counts[static_cast<int>(s)]; };
+  if (count(PostureStatus::kOk) + count(PostureStatus::kNearSingular) == 0) {
+    const std::size_t failed = count(PostureStatus::kFailed), singular = count(PostureStatus::kSingular);
     const std::string what = fmt::format("no point of {} ({}) has a stiffness: {} failed, {} singular, {} unreachable; "
                                          "nothing written",
                                          setup->range_option, region, failed, singular,
-                                         count(MapPointStatus::kUnreachable));
+                                         count(PostureStatus::kUnreachable));
     if (failed > 0)
       return fail(Status::NotConverged(what + ". The loaded equilibrium was not found at any posture: the load may "
                                               "exceed the buckling load; give a smaller --load or --wrench"));
