@@ -88,7 +88,7 @@ void bind_chain(py::module_& m) {
       .def_property_readonly("springs", &Chain::springs, py::return_value_policy::copy)
       .def_property_readonly("num_passive", &Chain::num_passive)
       .def_property_readonly("num_virtual", &Chain::num_virtual)
-      .def_property("nominal_passive", &Chain::nominal_passive,
+      .def_property("nominal_passive", [](const Chain& c) { return c.nominal_passive(); },
                     [](Chain& c, const VecX& q) {
                       check_coordinates(c, q, VecX::Zero(c.num_virtual()));
                       c.set_nominal_passive(q);
