@@ -173,7 +173,8 @@ void BM_FactorizeAndSolve(benchmark::State& state) {
   state.counters["factor_s"] = report.factor_seconds;
   state.counters["factor_GFlop_per_s"] = report.flops * 1e-9 / report.factor_seconds;
   state.counters["gemm_GFlop_per_s"] = gemm_gflops;
-  state.counters["factor_share_of_gemm"] = gemm_gflops > 0 ? report.flops * 1e-9 / report.factor_seconds / gemm_gflops : 0.0;
+  state.counters["factor_share_of_gemm"] =
+      gemm_gflops > 0 ? report.flops * 1e-9 / report.factor_seconds / gemm_gflops : 0.0;
   state.counters["path_s"] = path_seconds;  // assembly + analysis + factorization + six solves
   // The first pass of the process: its factor's memory is new to the process, and this VM's host
   // backs such memory again on first touch (benchmarks/README.md, "First touch in this VM").
@@ -189,7 +190,11 @@ void BM_FactorizeAndSolve(benchmark::State& state) {
 // ~16 GB and minutes, one pass: skip it with --benchmark_filter=-Million, or measure it alone with
 // --benchmark_filter=Million (peak memory is per process, so each size is best run in its own process).
 BENCHMARK(BM_FactorizeAndSolve)->Arg(4)->Arg(6)->Arg(9)->Unit(benchmark::kMillisecond)->Iterations(2);
-BENCHMARK(BM_FactorizeAndSolve)->Name("BM_FactorizeAndSolveMillion")->Arg(14)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_FactorizeAndSolve)
+    ->Name("BM_FactorizeAndSolveMillion")
+    ->Arg(14)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 

@@ -22,9 +22,9 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <fmt/format.h>
 
 #include "kinestat/core/frame.hpp"
 #include "kinestat/elements/section.hpp"
@@ -71,12 +71,12 @@ StatusOr<Mat6> beam_link_spring(const std::vector<Segment>& segments, const Vec3
 }
 
 struct LinkCase {
-  std::string file;                   // in meshes/
+  std::string file;  // in meshes/
   fea::Region clamp, reference;
-  Vec3 reference_point;               // m
-  double coarse_size, fine_size;      // m
+  Vec3 reference_point;           // m
+  double coarse_size, fine_size;  // m
   std::vector<Segment> one_beam, four_beams;
-  std::string sections;               // how the sections were chosen
+  std::string sections;  // how the sections were chosen
 };
 
 Vec3 mm(double x, double y, double z) { return 1e-3 * Vec3(x, y, z); }
@@ -86,8 +86,15 @@ Vec3 mm(double x, double y, double z) { return 1e-3 * Vec3(x, y, z); }
 LinkCase prismatic_case(std::string file, double length, const Section& s, double coarse, double fine,
                         std::string sections) {
   const Vec3 end = length * Vec3::UnitX();
-  LinkCase c{std::move(file), fea::Region::plane(Vec3::Zero(), Vec3::UnitX()), fea::Region::plane(end, Vec3::UnitX()),
-             end, coarse, fine, {{Vec3::Zero(), end, s}}, {}, std::move(sections)};
+  LinkCase c{std::move(file),
+             fea::Region::plane(Vec3::Zero(), Vec3::UnitX()),
+             fea::Region::plane(end, Vec3::UnitX()),
+             end,
+             coarse,
+             fine,
+             {{Vec3::Zero(), end, s}},
+             {},
+             std::move(sections)};
   for (int i = 0; i < 4; ++i) c.four_beams.push_back({end * i / 4.0, end * (i + 1) / 4.0, s});
   return c;
 }
@@ -104,8 +111,12 @@ std::vector<LinkCase> link_cases() {
      // x to below the bore (50 wide, the step's full 45 mm height), then up to the bore (50 mm
      // along y, 35 mm along x: the step's width).
     const Section base = rectangle_section(0.050, 0.015);
-    cases.push_back(LinkCase{"foot.off", fea::Region::plane(Vec3::Zero(), Vec3::UnitX()),
-                             fea::Region::box(mm(94, -25, 21), mm(111, 25, 39)), mm(102.5, 0, 30), 5e-3, 3.5e-3,
+    cases.push_back(LinkCase{"foot.off",
+                             fea::Region::plane(Vec3::Zero(), Vec3::UnitX()),
+                             fea::Region::box(mm(94, -25, 21), mm(111, 25, 39)),
+                             mm(102.5, 0, 30),
+                             5e-3,
+                             3.5e-3,
                              {{mm(0, 0, 7.5), mm(102.5, 0, 30), base}},
                              {{mm(0, 0, 7.5), mm(42.5, 0, 7.5), base},
                               {mm(42.5, 0, 7.5), mm(85, 0, 7.5), base},
@@ -119,8 +130,12 @@ std::vector<LinkCase> link_cases() {
      // two halves, boss, rigid.
     const double L = 310.6;
     const Section bar = rectangle_section(0.020, 0.010), boss = rectangle_section(0.020, 0.016);
-    cases.push_back(LinkCase{"parallelogram_bar.off", fea::Region::box(mm(-6.5, -6.5, -8), mm(6.5, 6.5, 8)),
-                             fea::Region::box(mm(L - 6.5, -6.5, -8), mm(L + 6.5, 6.5, 8)), mm(L, 0, 0), 4e-3, 3e-3,
+    cases.push_back(LinkCase{"parallelogram_bar.off",
+                             fea::Region::box(mm(-6.5, -6.5, -8), mm(6.5, 6.5, 8)),
+                             fea::Region::box(mm(L - 6.5, -6.5, -8), mm(L + 6.5, 6.5, 8)),
+                             mm(L, 0, 0),
+                             4e-3,
+                             3e-3,
                              {{Vec3::Zero(), mm(L, 0, 0), bar}},
                              {{mm(6.5, 0, 0), mm(15, 0, 0), boss},
                               {mm(15, 0, 0), mm(L / 2, 0, 0), bar},
@@ -148,7 +163,9 @@ StatusOr<fea::LinkStiffness> fea_link(const LinkCase& c, double size, const Mate
 
 Vec6 eigenvalues(const Mat6& K) { return Eigen::SelfAdjointEigenSolver<Mat6>(0.5 * (K + K.transpose())).eigenvalues(); }
 
-std::string percent(double beam, double reference) { return fmt::format("{:+7.1f}%", 100.0 * (beam / reference - 1.0)); }
+std::string percent(double beam, double reference) {
+  return fmt::format("{:+7.1f}%", 100.0 * (beam / reference - 1.0));
+}
 
 // Prints the comparison of one link; returns false when a model failed.
 bool compare_link(const LinkCase& c) {
@@ -164,10 +181,11 @@ bool compare_link(const LinkCase& c) {
   double mesh_change = 0.0;
   for (int i = 0; i < 6; ++i)
     mesh_change = std::max(mesh_change, std::abs(coarse->cartesian.stiffness(i, i) / K(i, i) - 1.0));
-  std::printf("\n== %s  (FEA: quadratic tets, size %.1f mm, %d dofs; largest diagonal change from size %.1f mm "
-              "(%d dofs): %.1f %%)\n   beam sections: %s\n",
-              c.file.c_str(), c.fine_size * 1e3, fine->num_dofs, c.coarse_size * 1e3, coarse->num_dofs,
-              100.0 * mesh_change, c.sections.c_str());
+  std::printf(
+      "\n== %s  (FEA: quadratic tets, size %.1f mm, %d dofs; largest diagonal change from size %.1f mm "
+      "(%d dofs): %.1f %%)\n   beam sections: %s\n",
+      c.file.c_str(), c.fine_size * 1e3, fine->num_dofs, c.coarse_size * 1e3, coarse->num_dofs, 100.0 * mesh_change,
+      c.sections.c_str());
   std::printf("   %-8s %14s %10s %10s\n", "entry", "K_FEA [SI]", "1 beam", "4 beams");
   for (int i = 0; i < 6; ++i)
     std::printf("   %-8s %14.4e %10s %10s\n", fmt::format("{}-{}", kDofNames[i], kDofNames[i]).c_str(), K(i, i),
@@ -230,16 +248,18 @@ bool compare_orthoglide() {
   using mechanisms::OrthoglideArchitecture;
   const mechanisms::OrthoglideStiffnessModel model;
   const Section &fs = model.foot_section, &bs = model.bar_section;
-  std::printf("\n== Orthoglide, unloaded Cartesian stiffness at Q0 (p = 0), (K / K_default - 1): link springs from\n"
-              "   meshes/ with the model's materials (foot %s, bar %s) against the model's default beam springs\n"
-              "   (foot: A %.0f mm2, Iy = Iz %.3g mm4, %.1f mm along the slider axis;\n"
-              "   bar: A %.0f mm2, Iy = Iz %.3g mm4, L = %.1f mm; the 3-PUU leg = 2 bars)\n",
-              model.foot_material.id.c_str(), model.bar_material.id.c_str(), fs.A * 1e6, fs.Iy * 1e12,
-              model.foot_length * 1e3, bs.A * 1e6, bs.Iy * 1e12, model.link_length * 1e3);
-  std::printf("   GEOMETRY DIFFERS: foot.off is an L bracket (base 50 x 15 mm, bore 102.5 mm along and 22.5 mm\n"
-              "   off the clamped face's centre; the chain puts the joint on the slider axis, no offset),\n"
-              "   parallelogram_bar.off a 20 x 10 mm rectangle with bosses (same length). 'FEA' mixes geometry and\n"
-              "   modelling error; 'mesh n b.' (the meshes' n-beam chains) is the geometry change alone.\n");
+  std::printf(
+      "\n== Orthoglide, unloaded Cartesian stiffness at Q0 (p = 0), (K / K_default - 1): link springs from\n"
+      "   meshes/ with the model's materials (foot %s, bar %s) against the model's default beam springs\n"
+      "   (foot: A %.0f mm2, Iy = Iz %.3g mm4, %.1f mm along the slider axis;\n"
+      "   bar: A %.0f mm2, Iy = Iz %.3g mm4, L = %.1f mm; the 3-PUU leg = 2 bars)\n",
+      model.foot_material.id.c_str(), model.bar_material.id.c_str(), fs.A * 1e6, fs.Iy * 1e12, model.foot_length * 1e3,
+      bs.A * 1e6, bs.Iy * 1e12, model.link_length * 1e3);
+  std::printf(
+      "   GEOMETRY DIFFERS: foot.off is an L bracket (base 50 x 15 mm, bore 102.5 mm along and 22.5 mm\n"
+      "   off the clamped face's centre; the chain puts the joint on the slider axis, no offset),\n"
+      "   parallelogram_bar.off a 20 x 10 mm rectangle with bosses (same length). 'FEA' mixes geometry and\n"
+      "   modelling error; 'mesh n b.' (the meshes' n-beam chains) is the geometry change alone.\n");
   std::vector<mechanisms::OrthoglideStiffnessModel> models(4, model);  // default, FEA, 1 beam, 4 beams
   const std::array sources{LinkSource::kFea, LinkSource::kOneBeam, LinkSource::kFourBeams};
   for (int v = 0; v < 3; ++v) {
@@ -268,8 +288,7 @@ bool compare_orthoglide() {
     for (int i = 0; i < 12; ++i) {
       // Rows 0-5: diagonal terms; 6-11: sorted eigenvalues.
       auto value = [&](int v) { return i < 6 ? K[v](i, i) : e[v](i - 6); };
-      const std::string name =
-          i < 6 ? fmt::format("{}-{}", kDofNames[i], kDofNames[i]) : fmt::format("eig {}", i - 5);
+      const std::string name = i < 6 ? fmt::format("{}-{}", kDofNames[i], kDofNames[i]) : fmt::format("eig {}", i - 5);
       std::printf("   %-8s %-8s %14.4e %10s %10s %10s\n", "", name.c_str(), value(0),
                   percent(value(1), value(0)).c_str(), percent(value(2), value(0)).c_str(),
                   percent(value(3), value(0)).c_str());
@@ -291,8 +310,10 @@ void BM_FeaLinkStiffness(benchmark::State& state) {
   int dofs = 0;
   for (auto _ : state) {
     StatusOr<fea::LinkStiffness> r = fea_link(c, c.fine_size);
-    if (!r.ok()) state.SkipWithError(r.status().message().c_str());
-    else dofs = r->num_dofs;
+    if (!r.ok())
+      state.SkipWithError(r.status().message().c_str());
+    else
+      dofs = r->num_dofs;
   }
   state.counters["dofs"] = dofs;
 }
@@ -301,8 +322,9 @@ BENCHMARK(BM_FeaLinkStiffness)->Unit(benchmark::kMillisecond)->Iterations(1);
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::printf("Link 6x6 stiffness: beam chains against FEA (rigid reference coupling), steel; "
-              "(K_beam / K_FEA - 1) per entry, K in N/m, N/rad, N m/rad\n");
+  std::printf(
+      "Link 6x6 stiffness: beam chains against FEA (rigid reference coupling), steel; "
+      "(K_beam / K_FEA - 1) per entry, K in N/m, N/rad, N m/rad\n");
   bool ok = true;
   for (const LinkCase& c : link_cases()) ok &= compare_link(c);
   ok &= compare_orthoglide();

@@ -127,11 +127,12 @@ void report_loaded(const PostureKernel& loaded, const PostureKernel& unloaded, c
   const Rate scratch = rate(loaded, sample, 1, s.min_time);
   const Rate warm = rate(loaded, path, 1, s.min_time, PointOrder::kPath);
   const Rate warm_all = rate(loaded, path, 0, s.min_time, PointOrder::kPath);
-  fmt::print("{:<50} {:>6} {:>6} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} | {:>6.1f}x {:>6.1f}x "
-             "{:>5.2f}x | {:>5.1f} {:>5.1f}\n",
-             loaded.description(), counts[0], counts[3], plain.wall, scratch.wall, warm.wall, plain.cpu, scratch.cpu,
-             warm.cpu, warm_all.wall, warm.cpu / scratch.cpu, plain.cpu / warm.cpu, warm_all.wall / warm.wall,
-             scratch_steps, warm_steps);
+  fmt::print(
+      "{:<50} {:>6} {:>6} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} {:>9.0f} {:>9.0f} | {:>9.0f} | {:>6.1f}x {:>6.1f}x "
+      "{:>5.2f}x | {:>5.1f} {:>5.1f}\n",
+      loaded.description(), counts[0], counts[3], plain.wall, scratch.wall, warm.wall, plain.cpu, scratch.cpu, warm.cpu,
+      warm_all.wall, warm.cpu / scratch.cpu, plain.cpu / warm.cpu, warm_all.wall / warm.wall, scratch_steps,
+      warm_steps);
   std::fflush(stdout);
 }
 
@@ -159,12 +160,13 @@ void robot_table(const Settings& s);
 
 int run(const Settings& s) {
   const auto t0 = Clock::now();
-  fmt::print("hardware threads: {}; best of sweeps lasting >= {:g} s; reference on <= {} points of each grid\n"
-             "columns: postures/s on 1 core (wall, best sweep; and per second of process CPU time), on all "
-             "cores (wall), their ratio; the reference path on 1 core (wall) and the speed-up (wall; CPU)\n",
-             std::thread::hardware_concurrency(), s.min_time, s.reference_points);
-  fmt::print("{:<46} {:>6} {:>6} {:>5} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>8} {:>7} {:>7}\n", "kernel", "points",
-             "ok", "sing.", "unrch.", "1 core/s", "1 cpu/s", "all/s", "ratio", "ref/s", "vs ref", "(cpu)");
+  fmt::print(
+      "hardware threads: {}; best of sweeps lasting >= {:g} s; reference on <= {} points of each grid\n"
+      "columns: postures/s on 1 core (wall, best sweep; and per second of process CPU time), on all "
+      "cores (wall), their ratio; the reference path on 1 core (wall) and the speed-up (wall; CPU)\n",
+      std::thread::hardware_concurrency(), s.min_time, s.reference_points);
+  fmt::print("{:<46} {:>6} {:>6} {:>5} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>8} {:>7} {:>7}\n", "kernel", "points", "ok",
+             "sing.", "unrch.", "1 core/s", "1 cpu/s", "all/s", "ratio", "ref/s", "vs ref", "(cpu)");
 
   if (!s.loaded_only && !s.robots_only) unloaded_tables(s);
   if (!s.loaded_only) robot_table(s);
@@ -201,11 +203,12 @@ void unloaded_tables(const Settings& s) {
 // path: the five-bar and the Orthoglide 3-PUU beside their built-in kernels on the same grids (the
 // same model: tests/io/robot_test.cpp), the Delta and the hexapod over their files' workspaces.
 void robot_table(const Settings& s) {
-  fmt::print("\ngeneric robot kernel (robot files), unloaded, along the serpentine path: postures/s on 1 core (wall, "
-             "best sweep; per second of process CPU time), on all cores (wall), all/1; the built-in kernel on the "
-             "same grid and path (1 core wall; CPU) and generic/built-in (CPU)\n");
-  fmt::print("{:<46} {:>6} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>9} {:>9} {:>8}\n", "kernel", "points", "ok",
-             "1 core/s", "1 cpu/s", "all/s", "all/1", "built-in", "(cpu)", "gen/bi");
+  fmt::print(
+      "\ngeneric robot kernel (robot files), unloaded, along the serpentine path: postures/s on 1 core (wall, "
+      "best sweep; per second of process CPU time), on all cores (wall), all/1; the built-in kernel on the "
+      "same grid and path (1 core wall; CPU) and generic/built-in (CPU)\n");
+  fmt::print("{:<46} {:>6} {:>6} | {:>9} {:>9} {:>9} {:>6} | {:>9} {:>9} {:>8}\n", "kernel", "points", "ok", "1 core/s",
+             "1 cpu/s", "all/s", "all/1", "built-in", "(cpu)", "gen/bi");
   const auto grid_path = [](const Vec3& lo, const Vec3& hi, std::array<int, 3> n) {
     MapGrid g;
     g.origin = lo;
@@ -258,12 +261,13 @@ void loaded_table(const Settings& s) {
   box.dimensions = {41, 41, 41};
   std::vector<Vec3> path(box.num_points());
   for (std::size_t k = 0; k < path.size(); ++k) path[k] = box.point(box.path_index(k));
-  fmt::print("\nloaded mode along the serpentine path of the same cube ({} points); postures/s on 1 core of the "
-             "unloaded kernel, the loaded kernel from scratch at every posture (on <= {} of the points) and "
-             "warm-started, per second of wall time (best sweep) and of process CPU time (all sweeps); warm-started "
-             "on all cores (wall); ratios warm/scratch and unloaded/warm of the CPU rates (robust on a shared "
-             "machine), all cores/1 core; mean Newton steps per posture from scratch and warm\n",
-             path.size(), s.scratch_points);
+  fmt::print(
+      "\nloaded mode along the serpentine path of the same cube ({} points); postures/s on 1 core of the "
+      "unloaded kernel, the loaded kernel from scratch at every posture (on <= {} of the points) and "
+      "warm-started, per second of wall time (best sweep) and of process CPU time (all sweeps); warm-started "
+      "on all cores (wall); ratios warm/scratch and unloaded/warm of the CPU rates (robust on a shared "
+      "machine), all cores/1 core; mean Newton steps per posture from scratch and warm\n",
+      path.size(), s.scratch_points);
   fmt::print("{:<50} {:>6} {:>6} | {:>9} {:>9} {:>9} | {:>9} {:>9} {:>9} | {:>9} | {:>7} {:>7} {:>6} | {:>5} {:>5}\n",
              "kernel", "ok", "failed", "unloaded", "scratch", "warm", "u cpu", "s cpu", "w cpu", "warm all", "w/s",
              "u/w", "all/1", "steps", "warm");

@@ -67,8 +67,8 @@ void BM_LatticeSolve(benchmark::State& state) {
   state.counters["assembly_s"] = sol.assembly_seconds;
   state.counters["factor_s"] = sol.factorization.factor_seconds;
   state.counters["analyse_s"] = sol.factorization.analyze_seconds;
-  state.SetLabel(fmt::format("{} {}", sol.factorization.supernodal ? "supernodal" : "simplicial",
-                             sol.factorization.ordering));
+  state.SetLabel(
+      fmt::format("{} {}", sol.factorization.supernodal ? "supernodal" : "simplicial", sol.factorization.ordering));
 }
 // n^3 nodes: 6x6x6 -> 1.1k dofs, 12^3 -> 9.5k, 20^3 -> 46k, 26^3 -> 101k dofs.
 BENCHMARK(BM_LatticeSolve)->Arg(6)->Arg(12)->Arg(20)->Arg(26)->Unit(benchmark::kMillisecond);

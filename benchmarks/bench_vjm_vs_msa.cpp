@@ -82,10 +82,11 @@ struct OrthoglideCase {
   double table_mm;
   const char* label;
 };
-const std::array<OrthoglideCase, 4> kOrthoglideCases = {{{mechanisms::OrthoglideArchitecture::kPUU, 0.0, "3-PUU Q0"},
-                                                         {mechanisms::OrthoglideArchitecture::kPUU, -73.65, "3-PUU Q1"},
-                                                         {mechanisms::OrthoglideArchitecture::kPRPaR, 0.0, "3-PRPaR Q0"},
-                                                         {mechanisms::OrthoglideArchitecture::kPRPaR, -73.65, "3-PRPaR Q1"}}};
+const std::array<OrthoglideCase, 4> kOrthoglideCases = {
+    {{mechanisms::OrthoglideArchitecture::kPUU, 0.0, "3-PUU Q0"},
+     {mechanisms::OrthoglideArchitecture::kPUU, -73.65, "3-PUU Q1"},
+     {mechanisms::OrthoglideArchitecture::kPRPaR, 0.0, "3-PRPaR Q0"},
+     {mechanisms::OrthoglideArchitecture::kPRPaR, -73.65, "3-PRPaR Q1"}}};
 
 const OrthoglideCase& orthoglide_case(const benchmark::State& state) {
   return kOrthoglideCases[static_cast<std::size_t>(state.range(0))];

@@ -10,9 +10,9 @@
 #include <string>
 #include <system_error>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <fmt/os.h>
+#include <CLI/CLI.hpp>
 
 #include "bar_mesh.hpp"
 #include "fea/elasticity_assembly.hpp"
@@ -25,7 +25,7 @@ namespace {
 
 using namespace kinestat;
 
-constexpr double kLength = 0.2;  // m
+constexpr double kLength = 0.2;          // m
 constexpr double kE = 210e9, kNu = 0.3;  // Pa, -
 
 // ccx reads at most 20 characters per number: 14 significant digits fit ("-1.2345678901234e-19").

@@ -90,6 +90,7 @@ int main() {
 
   // 4. The 6x6 Cartesian stiffness of the report node (static condensation onto its dofs), as
   //    kinestat::CartesianStiffness: stiffness, compliance, indices, lost directions, with units.
-  if (sol.cartesian) std::printf("%s", cartesian_stiffness_report(*sol.cartesian, "Cartesian stiffness of the tip").c_str());
+  if (sol.cartesian)
+    std::printf("%s", cartesian_stiffness_report(*sol.cartesian, "Cartesian stiffness of the tip").c_str());
   return difference <= 1e-9 ? 0 : 1;
 }

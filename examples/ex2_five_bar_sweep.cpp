@@ -53,8 +53,7 @@ int main() {
       }
       if (t1 == t2) ++diagonal;
       // The 6x6 at P by static condensation; kSingular at a singular posture (no numbers then).
-      StatusOr<CartesianStiffness> k =
-          msa::cartesian_stiffness(*s, workspace, mechanisms::kFiveBarPlatformNode);
+      StatusOr<CartesianStiffness> k = msa::cartesian_stiffness(*s, workspace, mechanisms::kFiveBarPlatformNode);
       if (!k.ok() || !k->stiffness_defined) {
         ++singular;
         if (t1 != t2) ++singular_off_diagonal;
@@ -64,9 +63,8 @@ int main() {
       if (t1 == 64 && t2 == 75) c_xx_row14 = k->compliance(0, 0);
       // The smallest translational stiffness: the lowest eigenvalue of the 2x2 in-plane block of
       // the stiffness (x, y) is the stiffness in the robot's weakest direction.
-      const double weakest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(k->stiffness.topLeftCorner<2, 2>())
-                                 .eigenvalues()
-                                 .minCoeff();
+      const double weakest =
+          Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(k->stiffness.topLeftCorner<2, 2>()).eigenvalues().minCoeff();
       if (weakest > best_stiffness) {
         best_stiffness = weakest;
         best_theta1 = t1;
@@ -76,9 +74,10 @@ int main() {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const int analyses = workspace.num_symbolic_analyses();
-  std::printf("%d input-angle pairs: %d do not close the loop, %d singular (theta1 = theta2), %d solved; "
-              "%d symbolic analysis\n",
-              open + singular + solved, open, singular, solved, analyses);
+  std::printf(
+      "%d input-angle pairs: %d do not close the loop, %d singular (theta1 = theta2), %d solved; "
+      "%d symbolic analysis\n",
+      open + singular + solved, open, singular, solved, analyses);
   std::printf("C_xx at theta1 = 64 deg, theta2 = 75 deg: %.4e m/N (Table 1, row 14: 2.3946e-05)\n", c_xx_row14);
   std::printf("stiffest posture: theta1 = %.0f deg, theta2 = %.0f deg, smallest translational stiffness %.4e N/m\n",
               best_theta1, best_theta2, best_stiffness);

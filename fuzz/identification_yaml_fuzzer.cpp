@@ -1,7 +1,7 @@
 // Fuzz harness: the identification-target reader (io::read_identification_targets_yaml_string).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cmath>
 #include <cstdlib>
 #include <string>
 

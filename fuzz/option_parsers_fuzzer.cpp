@@ -40,9 +40,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     default: {
       std::ostringstream out, err;
-      const int code = kinestat::cli::run({"map", "fivebar", "--region", text, "--step", "1000", "--max-points", "100",
-                                           "--quiet"},
-                                          out, err);
+      const int code = kinestat::cli::run(
+          {"map", "fivebar", "--region", text, "--step", "1000", "--max-points", "100", "--quiet"}, out, err);
       // Solved, bad input or singular; never an internal failure, never a refusal without a message.
       if (code == kinestat::cli::kExitInternal || (code != 0 && err.str().empty())) std::abort();
     }

@@ -16,8 +16,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
   static const char* kExtensions[] = {".off", ".stl", ".obj", ".ply"};
-  const std::string path =
-      "/tmp/kinestat-fuzz-" + std::to_string(getpid()) + kExtensions[data[0] % 4];
+  const std::string path = "/tmp/kinestat-fuzz-" + std::to_string(getpid()) + kExtensions[data[0] % 4];
   {
     std::ofstream out(path, std::ios::binary);
     out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));

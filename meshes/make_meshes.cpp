@@ -59,7 +59,9 @@ Mesh extrude(std::vector<P2> outline, int axis, double w0, double w1) {
   return m;
 }
 
-std::vector<P2> rectangle(double u0, double u1, double v0, double v1) { return {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}}; }
+std::vector<P2> rectangle(double u0, double u1, double v0, double v1) {
+  return {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
+}
 
 std::vector<P2> circle(double uc, double vc, double r, int segments) {
   std::vector<P2> c;
@@ -98,12 +100,14 @@ int main(int argc, char** argv) {
   // Prismatic bar 200 x 20 x 30 mm along x (beam-theory validation).
   ok &= write(dir, "bar.off", extrude(rectangle(-10, 10, -15, 15), 0, 0, 200));
   // Hollow tube along x: outer diameter 40 mm, wall 4 mm, length 300 mm.
-  ok &= write(dir, "tube.off",
-              subtract(extrude(circle(0, 0, 20, kSegments), 0, 0, 300), extrude(circle(0, 0, 16, kSegments), 0, -1, 301)));
+  ok &= write(
+      dir, "tube.off",
+      subtract(extrude(circle(0, 0, 20, kSegments), 0, 0, 300), extrude(circle(0, 0, 16, kSegments), 0, -1, 301)));
   // Orthoglide-like foot: an L-shaped bracket (base 120 x 50 x 15 mm, a step up to 45 mm over the
   // last 35 mm), swept along y, with a 16 mm bore along y through the step for the leg's joint.
   const std::vector<P2> profile = {{0, 0}, {0, 120}, {45, 120}, {45, 85}, {15, 85}, {15, 0}};  // (z, x)
-  ok &= write(dir, "foot.off", subtract(extrude(profile, 1, -25, 25), extrude(circle(30, 102.5, 8, kSegments), 1, -30, 30)));
+  ok &= write(dir, "foot.off",
+              subtract(extrude(profile, 1, -25, 25), extrude(circle(30, 102.5, 8, kSegments), 1, -30, 30)));
   // Parallelogram bar: 20 x 10 mm bar along x between two bosses (diameter 30 mm, height 16 mm,
   // bore 12 mm, axes along z) 310.6 mm apart (the Orthoglide prototype's leg length).
   const double L = 310.6;

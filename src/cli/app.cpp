@@ -2,8 +2,8 @@
 
 #include <ostream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "kinestat/core/types.hpp"
 #include "kinestat/core/version.hpp"
@@ -37,13 +37,18 @@ std::string selected_command(const CLI::App& app) {
 
 int exit_code_for(const Status& status) {
   switch (status.code()) {
-    case StatusCode::kOk: return kExitOk;
-    case StatusCode::kInvalidInput: return kExitBadInput;
+    case StatusCode::kOk:
+      return kExitOk;
+    case StatusCode::kInvalidInput:
+      return kExitBadInput;
     // An iterative method that does not converge on the user's input (a load beyond the buckling load,
     // targets no model meets): a property of the input, reported with its reason.
-    case StatusCode::kNotConverged: return kExitBadInput;
-    case StatusCode::kSingular: return kExitSingular;
-    default: return kExitInternal;
+    case StatusCode::kNotConverged:
+      return kExitBadInput;
+    case StatusCode::kSingular:
+      return kExitSingular;
+    default:
+      return kExitInternal;
   }
 }
 
@@ -54,9 +59,10 @@ int report_failure(Context& ctx, const std::string& command, const Status& statu
 }
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{"kinestat: stiffness of robots and frames (MSA, VJM, FEA). Options are in mm, deg, N, N mm, MPa "
-               "(each option says its unit); files declare their own units; JSON and VTK are SI.",
-               "kinestat"};
+  CLI::App app{
+      "kinestat: stiffness of robots and frames (MSA, VJM, FEA). Options are in mm, deg, N, N mm, MPa "
+      "(each option says its unit); files declare their own units; JSON and VTK are SI.",
+      "kinestat"};
   app.require_subcommand(1);
   app.set_version_flag("--version", version_text, "print the version of kinestat and of the libraries it uses");
   Context ctx{out, err};
@@ -80,9 +86,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e, out, err), kExitOk;  // --help, --version
     const std::string command = selected_command(app);
-    return report_failure(ctx, command,
-                          Status::Invalid(fmt::format("{}; see kinestat {}--help", e.what(),
-                                                      command.empty() ? "" : command + " ")));
+    return report_failure(
+        ctx, command,
+        Status::Invalid(fmt::format("{}; see kinestat {}--help", e.what(), command.empty() ? "" : command + " ")));
   }
   // A report or JSON lost on stdout (a full disk, a closed pipe) is a failed run, not a success. (A
   // run that failed already has said so; its report is not worth a second message.)

@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <ostream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/msa_output.hpp"
 #include "kinestat/io/results_json.hpp"
@@ -27,8 +27,8 @@ std::string report(const msa::Structure& s, const msa::BucklingResult& r) {
   t += fmt::format("Most compressed beam: '{}', N = {:.6g} N (axial forces: mean of the end forces, tension > 0)\n",
                    s.beams()[most].id, r.axial_force[most]);
   t += "Critical load factors lambda (critical loads = lambda x the load case's loads):\n";
-  t += fmt::format("  {:>4}  {:>14}  {:>22}  {:>9}\n", "mode", "lambda (-)", fmt::format("N_cr of '{}' (N)", s.beams()[most].id),
-                   "residual");
+  t += fmt::format("  {:>4}  {:>14}  {:>22}  {:>9}\n", "mode", "lambda (-)",
+                   fmt::format("N_cr of '{}' (N)", s.beams()[most].id), "residual");
   for (std::size_t k = 0; k < r.modes.size(); ++k)
     t += fmt::format("  {:>4}  {:>14.8g}  {:>22.8g}  {:>9.1e}\n", k + 1, r.modes[k].load_factor,
                      r.modes[k].load_factor * r.axial_force[most], r.modes[k].residual);
@@ -39,11 +39,12 @@ std::string report(const msa::Structure& s, const msa::BucklingResult& r) {
       t += fmt::format("    ({} nodes: see --json or --vtk)\n", s.nodes().size());
       continue;
     }
-    t += fmt::format("    {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "node", "ux", "uy", "uz", "rx", "ry", "rz");
+    t += fmt::format("    {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "node", "ux", "uy", "uz", "rx", "ry",
+                     "rz");
     for (std::size_t n = 0; n < s.nodes().size(); ++n) {
       const Vec6& v = r.modes[k].shape[n];
-      t += fmt::format("    {:>10} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", s.nodes()[n].id, v(0),
-                       v(1), v(2), v(3), v(4), v(5));
+      t += fmt::format("    {:>10} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", s.nodes()[n].id,
+                       v(0), v(1), v(2), v(3), v(4), v(5));
     }
   }
   return t;
@@ -60,8 +61,9 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
-      "buckling", "linear buckling of a YAML structure file (docs/stability-and-modes.md): the smallest critical load "
-                  "factors of one load case and their mode shapes; report, JSON and VTK in SI units");
+      "buckling",
+      "linear buckling of a YAML structure file (docs/stability-and-modes.md): the smallest critical load "
+      "factors of one load case and their mode shapes; report, JSON and VTK in SI units");
   cmd->add_option("file", args->file, "structure file (.yaml)")->required();
   auto* by_name = cmd->add_option("--case", args->case_name, "the load case, by name (default: the first)");
   cmd->add_option("--case-index", args->case_index, "the load case, by index from 0 (default: 0)")
@@ -82,7 +84,8 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
     opt.load_case = std::max(args->case_index, 0);
     if (!args->case_name.empty()) {
       const auto& cases = s->load_cases();
-      auto it = std::find_if(cases.begin(), cases.end(), [&](const msa::LoadCase& c) { return c.name == args->case_name; });
+      auto it =
+          std::find_if(cases.begin(), cases.end(), [&](const msa::LoadCase& c) { return c.name == args->case_name; });
       if (it == cases.end()) {
         std::string names;
         for (const auto& c : cases) names += (names.empty() ? "'" : ", '") + c.name + "'";
@@ -103,9 +106,10 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
     for (std::size_t k = 0; k < r.modes.size(); ++k)
       modes.push_back(
           {fmt::format("buckling mode {}: lambda = {:.6g}", k + 1, r.modes[k].load_factor), r.modes[k].shape});
-    ctx.exit_code = finish_mode_run("buckling", *s, report(*s, r), [&] { return io::buckling_to_json(*s, r); }, modes,
-                                    args->vtk_dir, std::filesystem::path(args->file).stem().string() + "_buckling",
-                                    "m (scaled: largest translation 1 m), rad", args->out, r.status, ctx);
+    ctx.exit_code = finish_mode_run(
+        "buckling", *s, report(*s, r), [&] { return io::buckling_to_json(*s, r); }, modes, args->vtk_dir,
+        std::filesystem::path(args->file).stem().string() + "_buckling", "m (scaled: largest translation 1 m), rad",
+        args->out, r.status, ctx);
   });
 }
 

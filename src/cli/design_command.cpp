@@ -1,4 +1,5 @@
-// kinestat design ROBOT.yaml --param NAME=LO:HI ... --steps N [--box X0:X1,Y0:Y1,Z0:Z1] --step MM [--load D | --wrench W]
+// kinestat design ROBOT.yaml --param NAME=LO:HI ... --steps N [--box X0:X1,Y0:Y1,Z0:Z1] --step MM [--load D | --wrench
+// W]
 //                            --min-stiffness K [--json FILE|-] [--vti FILE] [--quiet]
 // Design sweep of a robot file (mechanisms/robot_design_sweep.hpp): every design of the grid of the
 // named parameters (the file re-read with their values, io::read_robot_model), its map of one
@@ -20,17 +21,17 @@
 #include <thread>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/command_output.hpp"
-#include "kinestat/core/input_checks.hpp"
-#include "kinestat/core/units.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
+#include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
+#include "kinestat/io/results_json.hpp"
 #include "kinestat/io/robot_design_output.hpp"
 #include "kinestat/io/robot_yaml.hpp"
-#include "kinestat/io/results_json.hpp"
 #include "kinestat/io/workspace_vtk.hpp"
 #include "kinestat/mechanisms/robot_design_sweep.hpp"
 #include "kinestat/solver/parallel.hpp"
@@ -60,11 +61,11 @@ struct RobotDesignArgs {
   std::string target;               // a robot file
   std::vector<std::string> params;  // "NAME=LO:HI" or "NAME=VALUE", the file's units
   int steps = 3;
-  std::vector<std::string> box;     // "lo:hi" per axis, mm
-  std::optional<double> step;       // mm
+  std::vector<std::string> box;         // "lo:hi" per axis, mm
+  std::optional<double> step;           // mm
   std::optional<double> min_stiffness;  // N/mm
-  std::vector<double> orientation;  // deg
-  std::vector<double> load, wrench;  // loaded mode: mm, deg / N, N mm
+  std::vector<double> orientation;      // deg
+  std::vector<double> load, wrench;     // loaded mode: mm, deg / N, N mm
   double near_singular = mechanisms::MapOptions{}.near_singular_threshold;
   int threads = 0;
   double max_postures = mechanisms::kDefaultMaxRobotDesignPostures;
@@ -103,8 +104,8 @@ StatusOr<mechanisms::DesignParameter> parse_param(const std::string& text) {
   const auto lo = parse_number(range.substr(0, colon));
   const auto hi = colon == std::string::npos ? lo : parse_number(range.substr(colon + 1));
   if (!lo || !hi)
-    return Status::Invalid(fmt::format("--param {}: '{}' is not a range; write LO:HI or one value (the file's units)",
-                                       p.name, range));
+    return Status::Invalid(
+        fmt::format("--param {}: '{}' is not a range; write LO:HI or one value (the file's units)", p.name, range));
   if (*lo > *hi)
     return Status::Invalid(fmt::format("--param {}={} is reversed; write the smaller bound first", p.name, range));
   p.lo = *lo;
@@ -112,9 +113,7 @@ StatusOr<mechanisms::DesignParameter> parse_param(const std::string& text) {
   return p;
 }
 
-std::string measure_text(double m, bool volume) {
-  return fmt::format("{:.6g}", m / (volume ? 1e-9 : 1e-6));
-}
+std::string measure_text(double m, bool volume) { return fmt::format("{:.6g}", m / (volume ? 1e-9 : 1e-6)); }
 
 // What the sweep needs, from the options and the file as written: every --param must name one of its
 // parameters; the region is --box or its `workspace:`.
@@ -130,8 +129,9 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
   RobotDesignSetup setup;
   RobotDesignSweepOptions& o = setup.options;
   if (a.target.empty())
-    return fail(Status::Invalid("give a robot file (kinestat design ROBOT.yaml --param NAME=LO:HI ...) or a "
-                                "subcommand: fivebar, orthoglide"));
+    return fail(
+        Status::Invalid("give a robot file (kinestat design ROBOT.yaml --param NAME=LO:HI ...) or a "
+                        "subcommand: fivebar, orthoglide"));
   if (a.params.empty())
     return fail(Status::Invalid("--param NAME=LO:HI is required (at least one parameter of the file to sweep)"));
   for (const std::string& text : a.params) {
@@ -154,14 +154,15 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
   StatusOr<bool> robot = io::is_robot_file(a.target);
   if (!robot.ok()) return fail(robot.status());
   if (!*robot)
-    return fail(Status::Invalid(fmt::format("{}: not a robot file (no top-level `robot:`); `kinestat design` takes a "
-                                            "robot file (docs/robots.md) or the subcommands fivebar, orthoglide",
-                                            a.target)));
+    return fail(
+        Status::Invalid(fmt::format("{}: not a robot file (no top-level `robot:`); `kinestat design` takes a "
+                                    "robot file (docs/robots.md) or the subcommands fivebar, orthoglide",
+                                    a.target)));
   auto file = io::read_robot_params(a.target);
   if (!file.ok()) return fail(file.status());
   for (const DesignParameter& p : o.parameters) {
-    const bool known = std::any_of(file->values.begin(), file->values.end(),
-                                   [&](const auto& v) { return v.first == p.name; });
+    const bool known =
+        std::any_of(file->values.begin(), file->values.end(), [&](const auto& v) { return v.first == p.name; });
     if (!known) {
       std::string names;
       for (const auto& v : file->values) names += (names.empty() ? "" : ", ") + v.first;
@@ -169,8 +170,8 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
                                               p.name, a.target, names.empty() ? "none" : names)));
     }
   }
-  const std::string units = fmt::format("the units of {} (lengths in {}, forces in {})", a.target, file->length_unit,
-                                        file->force_unit);
+  const std::string units =
+      fmt::format("the units of {} (lengths in {}, forces in {})", a.target, file->length_unit, file->force_unit);
   auto description = io::read_robot_description(a.target);
   if (!description.ok()) return fail(description.status());
   const RobotDescription& d = *description;
@@ -182,8 +183,8 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
   } else if (d.workspace) {
     for (int i = 0; i < 3; ++i) ranges[i] = {(*d.workspace)[i].first, (*d.workspace)[i].second};
   } else {
-    return fail(Status::Invalid(fmt::format("{}: no `workspace:` in the file; give --box x0:x1,y0:y1,z0:z1 (mm)",
-                                            a.target)));
+    return fail(
+        Status::Invalid(fmt::format("{}: no `workspace:` in the file; give --box x0:x1,y0:y1,z0:z1 (mm)", a.target)));
   }
   if (auto axes = robot_grid_axes(d, ranges, false, "--box"); !axes.ok()) return fail(axes.status());
   if (Status st = parse_load_options(a.load, a.wrench, o.kernel.displacement, o.kernel.wrench); !st.ok())
@@ -197,13 +198,15 @@ StatusOr<RobotDesignSetup> robot_design_setup(const RobotDesignArgs& a) {
   double points = 1.0;
   for (const MapRange& r : ranges) points *= map_axis_points(r, *a.step * kMm);
   if (points > static_cast<double>(max_points))
-    return fail(Status::Invalid(fmt::format("--step {:g} mm over the region gives {:.3g} points per design, more than "
-                                            "{}; use a larger --step",
-                                            *a.step, points, max_points)));
+    return fail(
+        Status::Invalid(fmt::format("--step {:g} mm over the region gives {:.3g} points per design, more than "
+                                    "{}; use a larger --step",
+                                    *a.step, points, max_points)));
   auto region = make_map_grid(ranges, *a.step * kMm, max_points);
   if (!region.ok())
-    return fail(Status::Invalid(fmt::format("{} with --step {:g} mm: {}", a.box.empty() ? "the file's workspace" : "--box",
-                                            *a.step, region.status().message())));
+    return fail(
+        Status::Invalid(fmt::format("{} with --step {:g} mm: {}", a.box.empty() ? "the file's workspace" : "--box",
+                                    *a.step, region.status().message())));
   o.region = *region;
   setup.units = units;
   setup.description = d;
@@ -281,12 +284,13 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
                      s.results.size(), swept);
   out << fmt::format("  parameters in {}\n", units);
   const MapGrid& g = s.region;
-  out << fmt::format("  region x {:g}:{:g}, y {:g}:{:g}, z {:g}:{:g} mm, step {:g} mm: {} x {} x {} = {} points per "
-                     "design\n",
-                     g.origin.x() / kMm, (g.origin.x() + (g.dimensions[0] - 1) * g.spacing.x()) / kMm,
-                     g.origin.y() / kMm, (g.origin.y() + (g.dimensions[1] - 1) * g.spacing.y()) / kMm,
-                     g.origin.z() / kMm, (g.origin.z() + (g.dimensions[2] - 1) * g.spacing.z()) / kMm, *a.step,
-                     g.dimensions[0], g.dimensions[1], g.dimensions[2], g.num_points());
+  out << fmt::format(
+      "  region x {:g}:{:g}, y {:g}:{:g}, z {:g}:{:g} mm, step {:g} mm: {} x {} x {} = {} points per "
+      "design\n",
+      g.origin.x() / kMm, (g.origin.x() + (g.dimensions[0] - 1) * g.spacing.x()) / kMm, g.origin.y() / kMm,
+      (g.origin.y() + (g.dimensions[1] - 1) * g.spacing.y()) / kMm, g.origin.z() / kMm,
+      (g.origin.z() + (g.dimensions[2] - 1) * g.spacing.z()) / kMm, *a.step, g.dimensions[0], g.dimensions[1],
+      g.dimensions[2], g.num_points());
   out << fmt::format("  score: the {} ({}) where k_t_min >= {:g} N/mm (the stiff {}); best: the largest\n",
                      volume ? "volume" : "area", unit, *a.min_stiffness, volume ? "volume" : "area");
   std::size_t failed = 0;
@@ -341,8 +345,9 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
 
 void register_design_command(CLI::App& app, Context& ctx) {
   CLI::App* design = app.add_subcommand(
-      "design", "design sweep of a robot file (ROBOT.yaml --param NAME=LO:HI ...: the best design by the volume "
-                "stiffer than --min-stiffness; docs/maps.md), or the subcommands fivebar and orthoglide");
+      "design",
+      "design sweep of a robot file (ROBOT.yaml --param NAME=LO:HI ...: the best design by the volume "
+      "stiffer than --min-stiffness; docs/maps.md), or the subcommands fivebar and orthoglide");
   design->require_subcommand(0, 1);
   // A robot file: the options below belong to it; `design fivebar` and `design orthoglide` have their own.
   auto robot = std::make_shared<RobotDesignArgs>();
@@ -351,27 +356,30 @@ void register_design_command(CLI::App& app, Context& ctx) {
                      "NAME=LO:HI (or NAME=VALUE): a parameter of the file to sweep, in the file's units; repeat for "
                      "more");
   design->add_option("--steps", robot->steps, "designs per swept parameter, 2 to 1000 (default 3)");
-  design->add_option("--box", robot->box,
-                     "the region x0:x1,y0:y1,z0:z1 in mm (default: the file's workspace:)")
+  design->add_option("--box", robot->box, "the region x0:x1,y0:y1,z0:z1 in mm (default: the file's workspace:)")
       ->delimiter(',');
   design->add_option("--step", robot->step, "posture grid step in mm (required)");
   design->add_option("--min-stiffness", robot->min_stiffness,
                      "stiffness K in N/mm: a design's score is the volume (area) where k_t_min >= K (required)");
-  design->add_option("--orientation", robot->orientation,
-                     "the tool's orientation rx,ry,rz in deg for the task's angles (default: home's, 0)")
+  design
+      ->add_option("--orientation", robot->orientation,
+                   "the tool's orientation rx,ry,rz in deg for the task's angles (default: home's, 0)")
       ->delimiter(',');
-  CLI::Option* load = design->add_option("--load", robot->load,
-                                         "prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg): the loaded mode")
+  CLI::Option* load = design
+                          ->add_option("--load", robot->load,
+                                       "prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg): the loaded mode")
                           ->delimiter(',');
-  design->add_option("--wrench", robot->wrench,
-                     "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N mm) at the tool point: the loaded mode")
+  design
+      ->add_option("--wrench", robot->wrench,
+                   "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N mm) at the tool point: the loaded mode")
       ->delimiter(',')
       ->excludes(load);
   design->add_option("--near-singular", robot->near_singular,
                      "points whose singularity measure (0..1) is below this are near-singular (default 0.01)");
   design->add_option("--threads", robot->threads, "threads per process (default 0: all cores)");
-  design->add_option("--max-postures", robot->max_postures,
-                     "refuse sweeps of more designs x region points than this (default 2e6, about 8 min on 2 cores)")
+  design
+      ->add_option("--max-postures", robot->max_postures,
+                   "refuse sweeps of more designs x region points than this (default 2e6, about 8 min on 2 cores)")
       ->check(CLI::PositiveNumber);
   design->add_option("--json", robot->json, "write every design and the best as JSON ('-': to stdout, nothing else)");
   design->add_option("--vti", robot->vti, "write the design map (one to three parameters) as VTK ImageData (.vti)");
@@ -385,4 +393,3 @@ void register_design_command(CLI::App& app, Context& ctx) {
 }
 
 }  // namespace kinestat::cli
-

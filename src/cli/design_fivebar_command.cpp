@@ -18,17 +18,17 @@
 #include <tuple>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/command_output.hpp"
-#include "kinestat/core/input_checks.hpp"
-#include "kinestat/core/units.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
+#include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/units.hpp"
 #include "kinestat/io/five_bar_design_output.hpp"
-#include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/io/results_json.hpp"
+#include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/io/workspace_vtk.hpp"
 #include "kinestat/mechanisms/five_bar_design_sweep.hpp"
 
@@ -40,9 +40,9 @@ using units::kMm;  // lengths are printed in mm
 struct FiveBarDesignArgs {
   std::string r1, r2;  // "lo:hi" or one value, mm
   int steps = 10;
-  std::vector<std::string> region;  // "x0:x1", "y0:y1", mm
-  std::optional<double> step;       // mm
-  std::optional<double> r3_mm;  // default: FiveBarParams' r3
+  std::vector<std::string> region;      // "x0:x1", "y0:y1", mm
+  std::optional<double> step;           // mm
+  std::optional<double> r3_mm;          // default: FiveBarParams' r3
   std::optional<double> min_stiffness;  // N/mm
   std::string mode = "++", assembly = "up", method = "msa";
   double near_singular = mechanisms::MapOptions{}.near_singular_threshold;
@@ -94,20 +94,21 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   } else {
     step = std::max(x.hi - x.lo, y.hi - y.lo) / (kPostureSideDefault - 1);
     if (!(step > 0.0))
-      return fail(Status::Invalid(fmt::format("--region {},{}: a point; give ranges x0:x1,y0:y1 (mm)", a.region[0],
-                                              a.region[1])));
+      return fail(Status::Invalid(
+          fmt::format("--region {},{}: a point; give ranges x0:x1,y0:y1 (mm)", a.region[0], a.region[1])));
   }
   // Counted before anything is allocated.
   const std::size_t max_points = MapOptions{}.max_points;
   const double points = map_axis_points(x, step) * map_axis_points(y, step);
   if (points > static_cast<double>(max_points))
-    return fail(Status::Invalid(fmt::format("--step {:g} mm over --region gives {:.3g} points per design, more than {}; "
-                                            "use a larger --step",
-                                            step / kMm, points, max_points)));
+    return fail(
+        Status::Invalid(fmt::format("--step {:g} mm over --region gives {:.3g} points per design, more than {}; "
+                                    "use a larger --step",
+                                    step / kMm, points, max_points)));
   auto region = make_map_grid({x, y, MapRange{}}, step, max_points);
   if (!region.ok())
-    return fail(Status::Invalid(
-        fmt::format("--region with --step {:g} mm: {}", step / kMm, region.status().message())));
+    return fail(
+        Status::Invalid(fmt::format("--region with --step {:g} mm: {}", step / kMm, region.status().message())));
   o.region = *region;
 
   using Clock = std::chrono::steady_clock;
@@ -122,15 +123,15 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   const std::size_t postures = sweep->results.size() * region->num_points();
   const auto& best = sweep->results[sweep->best];
-  const std::string region_text =
-      fmt::format("x {}, y {}", mm_range({x.lo, x.lo + (region->dimensions[0] - 1) * step}),
-                  mm_range({y.lo, y.lo + (region->dimensions[1] - 1) * step}));
+  const std::string region_text = fmt::format("x {}, y {}", mm_range({x.lo, x.lo + (region->dimensions[0] - 1) * step}),
+                                              mm_range({y.lo, y.lo + (region->dimensions[1] - 1) * step}));
   if (best.reachable == 0 && std::all_of(sweep->results.begin(), sweep->results.end(),
                                          [](const FiveBarDesignResult& r) { return r.reachable == 0; }))
-    return fail(Status::Invalid(fmt::format("no design reaches any point of --region ({}) in mode {} {}; nothing "
-                                            "written. The region is in the frame of the base (A1 = (-r3, 0), "
-                                            "A2 = (r3, 0)); a design reaches about r1 + r2 from its base joints",
-                                            region_text, a.mode, a.assembly)));
+    return fail(
+        Status::Invalid(fmt::format("no design reaches any point of --region ({}) in mode {} {}; nothing "
+                                    "written. The region is in the frame of the base (A1 = (-r3, 0), "
+                                    "A2 = (r3, 0)); a design reaches about r1 + r2 from its base joints",
+                                    region_text, a.mode, a.assembly)));
   const std::string criteria = io::design_sweep_criteria(*sweep);
 
   std::vector<std::string> written;
@@ -144,7 +145,8 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   }
   const bool json_to_stdout = a.json == "-";
   if (!a.json.empty())
-    if (Status s = write_sweep_json(io::design_sweep_to_json(*sweep), a.json, seconds, postures, a.threads, ctx, written);
+    if (Status s =
+            write_sweep_json(io::design_sweep_to_json(*sweep), a.json, seconds, postures, a.threads, ctx, written);
         !s.ok())
       return fail(s);
   if (json_to_stdout) return kExitOk;
@@ -156,7 +158,8 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   out << fmt::format("  region {}, step {:.4g} mm: {} x {} = {} points per design\n", region_text, step / kMm,
                      region->dimensions[0], region->dimensions[1], region->num_points());
   out << fmt::format("  share: the region's points reached with {}\n", criteria);
-  const unsigned cores = a.threads > 0 ? static_cast<unsigned>(a.threads) : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned cores =
+      a.threads > 0 ? static_cast<unsigned>(a.threads) : std::max(1u, std::thread::hardware_concurrency());
   out << fmt::format("  {} postures in {:.2f} s: {:.3g} postures/s on {} thread{}\n", postures, seconds,
                      postures / seconds, cores, cores == 1 ? "" : "s");
   auto line = [&](const FiveBarDesignResult& r) {
@@ -167,9 +170,10 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   if (best.stiff == 0)
     out << "  no design serves any point of the region with these criteria (see the reachable and singularity-free "
            "shares)\n";
-  out << fmt::format("  best design: r1 = {:.4g} mm, r2 = {:.4g} mm: {:.1f}% of the region, k_t_min >= {:.4g} N/mm "
-                     "on its singularity-free part\n",
-                     best.r1 / kMm, best.r2 / kMm, 100.0 * sweep->share(best.stiff), best.k_t_min_worst * kMm);
+  out << fmt::format(
+      "  best design: r1 = {:.4g} mm, r2 = {:.4g} mm: {:.1f}% of the region, k_t_min >= {:.4g} N/mm "
+      "on its singularity-free part\n",
+      best.r1 / kMm, best.r2 / kMm, 100.0 * sweep->share(best.stiff), best.k_t_min_worst * kMm);
   // The leading designs in the order of the choice, so that near-equal alternatives are visible.
   std::vector<std::size_t> order(sweep->results.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -188,8 +192,9 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
 void add_five_bar_design(CLI::App* design, Context& ctx) {
   auto a = std::make_shared<FiveBarDesignArgs>();
   CLI::App* cmd = design->add_subcommand(
-      "fivebar", "five-bar design sweep (docs/maps.md): for every design (r1, r2) of an N x N grid, the share of a "
-                 "region of the plane reached singularity-free and stiffer than --min-stiffness; the best design");
+      "fivebar",
+      "five-bar design sweep (docs/maps.md): for every design (r1, r2) of an N x N grid, the share of a "
+      "region of the plane reached singularity-free and stiffer than --min-stiffness; the best design");
   cmd->add_option("--r1", a->r1, "proximal link lengths A_iB_i to sweep, lo:hi in mm (or one value)")->required();
   cmd->add_option("--r2", a->r2, "distal link lengths B_iP to sweep, lo:hi in mm (or one value)")->required();
   cmd->add_option("--steps", a->steps, "designs per swept length, 2 to 1000 (default 10)");

@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/command_output.hpp"
+#include "kinestat/cli/app.hpp"
 #include "kinestat/core/input_checks.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/io/orthoglide_results_json.hpp"
-#include "kinestat/cli/app.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/workspace_vtk.hpp"
 #include "kinestat/mechanisms/orthoglide_design.hpp"
@@ -52,9 +52,12 @@ constexpr int kVolumeGrid = 80;
 
 const char* strategy_summary(int s) {
   switch (s) {
-    case 1: return "cube vertices at Q+ and Q-, upper joint limit raised to reach the cube";
-    case 2: return "joint limits at Q+ and Q-, the largest cube inside the joint-bounded workspace";
-    default: return "joint limits so that the whole joint-bounded workspace meets the bounds, cube inside it";
+    case 1:
+      return "cube vertices at Q+ and Q-, upper joint limit raised to reach the cube";
+    case 2:
+      return "joint limits at Q+ and Q-, the largest cube inside the joint-bounded workspace";
+    default:
+      return "joint limits so that the whole joint-bounded workspace meets the bounds, cube inside it";
   }
 }
 
@@ -73,9 +76,10 @@ void print_design(std::ostream& out, const mechanisms::OrthoglideDesign& d,
   out << fmt::format("  cube p_x, p_y, p_z          [{:.1f}, {:.1f}] mm (isotropic point at p = 0, rho = L)\n",
                      d.p_min / kMm, d.p_max / kMm);
   if (std::isfinite(d.joint_sum_limit))
-    out << fmt::format("  software joint limit        rho_x + rho_y + rho_z <= {:.1f} mm (= 3 rho(Q+); the joint box "
-                       "reaches the parallel singularity)\n",
-                       d.joint_sum_limit / kMm);
+    out << fmt::format(
+        "  software joint limit        rho_x + rho_y + rho_z <= {:.1f} mm (= 3 rho(Q+); the joint box "
+        "reaches the parallel singularity)\n",
+        d.joint_sum_limit / kMm);
   out << fmt::format("  unit manipulator (L = 1)    rho in [{:.4f}, {:.4f}], p in [{:.4f}, {:.4f}]\n", d.rho_min / L,
                      d.rho_max / L, d.p_min / L, d.p_max / L);
   if (std::isfinite(d.joint_sum_limit))
@@ -102,14 +106,16 @@ void print_paper_analyses(std::ostream& out, const mechanisms::MinimumSwitchPoin
                      m.rho_sr, m.mu_sr, m.search_mu_at_rho_sr);
   out << fmt::format("    R-|Q- switch of the formulas   rho_RQ = {:.4f}, mu = {:.4f}; numerical search there {:.4f}\n",
                      m.rho_rq, m.mu_rq, m.search_mu_at_rho_rq);
-  out << fmt::format("    true switch to Q-              rho = {:.4f}, mu = {:.4f} (below it the minimum is at no "
-                     "critical point: on the edge (rho_min, rho_min, t), or near S- on a face)\n",
-                     m.rho_q, m.mu_q);
+  out << fmt::format(
+      "    true switch to Q-              rho = {:.4f}, mu = {:.4f} (below it the minimum is at no "
+      "critical point: on the edge (rho_min, rho_min, t), or near S- on a face)\n",
+      m.rho_q, m.mu_q);
   out << fmt::format("  Fig. 3: singularity-free workspace V0 = {:.1f} % of the sphere |p| < L (paper: 97.2 %)\n",
                      100.0 * v.singularity_free_of_sphere);
-  out << fmt::format("  Table 2, factors bounded by 1/3 and 3: lower {:.3f} V0, two-sided {:.3f} V0, upper {:.3f} V0 "
-                     "(paper: 0.84, 0.67, 0.72)\n",
-                     v.lower_of_w0, v.two_sided_of_w0, v.upper_of_w0);
+  out << fmt::format(
+      "  Table 2, factors bounded by 1/3 and 3: lower {:.3f} V0, two-sided {:.3f} V0, upper {:.3f} V0 "
+      "(paper: 0.84, 0.67, 0.72)\n",
+      v.lower_of_w0, v.two_sided_of_w0, v.upper_of_w0);
 }
 
 int run_design(const DesignArgs& a, Context& ctx) {
@@ -170,12 +176,14 @@ int run_design(const DesignArgs& a, Context& ctx) {
 void add_orthoglide_design(CLI::App* design, Context& ctx) {
   auto args = std::make_shared<DesignArgs>();
   CLI::App* cmd = design->add_subcommand(
-      "orthoglide", "Orthoglide design strategies of Pashkevich, Wenger, Chablat 2005 (Table 3): link length, joint "
-                    "limits and cube location for a cubic workspace and transmission factors in [mu, 1/mu]");
+      "orthoglide",
+      "Orthoglide design strategies of Pashkevich, Wenger, Chablat 2005 (Table 3): link length, joint "
+      "limits and cube location for a cubic workspace and transmission factors in [mu, 1/mu]");
   cmd->add_option("--cube", args->cube_mm, "edge of the cubic workspace, in mm (or with a unit: 0.2m, 20cm)")
       ->required()
       ->transform(CLI::AsNumberWithUnit(std::map<std::string, double>{{"mm", 1.0}, {"cm", 10.0}, {"m", 1000.0}}));
-  cmd->add_option("--mu", args->mu, "lower bound mu of the velocity transmission factors (dimensionless), 0 < mu < 1 (upper: 1/mu)")
+  cmd->add_option("--mu", args->mu,
+                  "lower bound mu of the velocity transmission factors (dimensionless), 0 < mu < 1 (upper: 1/mu)")
       ->required();
   cmd->add_option("--strategy", args->strategy, "design strategy 1, 2 or 3 (default: all three)");
   CLI::Option* vtk = cmd->add_option("--vtk", args->vtk_dir,

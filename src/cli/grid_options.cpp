@@ -123,8 +123,7 @@ StatusOr<MapRange> parse_range_mm(const std::string& text, const std::string& wh
   const auto hi = colon == std::string::npos ? lo : parse_number(text.substr(colon + 1));
   if (!lo || !hi)
     return Status::Invalid(fmt::format("{} '{}' is not a range in mm; write lo:hi or a single value", what, text));
-  if (*lo > *hi)
-    return Status::Invalid(fmt::format("{} {} is reversed; write the smaller bound first", what, text));
+  if (*lo > *hi) return Status::Invalid(fmt::format("{} {} is reversed; write the smaller bound first", what, text));
   return MapRange{*lo * kMm, *hi * kMm};
 }
 
@@ -145,12 +144,14 @@ Status parse_five_bar_modes(const std::string& mode, const std::string& assembly
                             mechanisms::FiveBarKernelOptions& o) {
   using namespace mechanisms;
   const auto m = working_mode_from_name(mode);
-  if (!m) return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or -- (as --mode=--)", mode));
+  if (!m)
+    return Status::Invalid(fmt::format("--mode '{}' is not a working mode; use ++, +-, -+ or -- (as --mode=--)", mode));
   o.mode = *m;
   const auto a = assembly_from_name(assembly);
   if (!a) return Status::Invalid(fmt::format("--assembly '{}' must be up or down", assembly));
   o.assembly = *a;
-  if (method != "msa" && method != "vjm") return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", method));
+  if (method != "msa" && method != "vjm")
+    return Status::Invalid(fmt::format("--method '{}' must be msa or vjm", method));
   o.method = method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
   return Status::Ok();
 }

@@ -24,9 +24,8 @@ std::optional<double> parse_number(const std::string& s);
 StatusOr<mechanisms::MapRange> parse_range_mm(const std::string& text, const std::string& what);
 
 // `count` ranges for the axes x, y, z of `option`, given in the form `form` ("x0:x1,y0:y1").
-StatusOr<std::vector<mechanisms::MapRange>> parse_ranges_mm(const std::vector<std::string>& parts,
-                                                            std::size_t count, const char* option,
-                                                            const char* form);
+StatusOr<std::vector<mechanisms::MapRange>> parse_ranges_mm(const std::vector<std::string>& parts, std::size_t count,
+                                                            const char* option, const char* form);
 
 // Six numbers of a load option, each checked finite and in its physical range (core/input_checks)
 // in the unit written, then converted to SI. A wrench: Fx,Fy,Fz (N), Mx,My,Mz (N mm) -> N, N m.
@@ -65,7 +64,8 @@ Status parse_five_bar_modes(const std::string& mode, const std::string& assembly
 // silent. The line ends when the object goes.
 class Progress {
  public:
-  Progress(std::ostream& err, std::string label, std::string unit) : err_(err), label_(std::move(label)), unit_(std::move(unit)) {}
+  Progress(std::ostream& err, std::string label, std::string unit)
+      : err_(err), label_(std::move(label)), unit_(std::move(unit)) {}
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
   void operator()(std::size_t done, std::size_t total);

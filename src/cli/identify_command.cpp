@@ -6,8 +6,8 @@
 //   kinestat identify models/orthoglide_puu.yaml models/orthoglide_paper_targets.yaml
 #include <memory>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/command_output.hpp"
 #include "kinestat/core/units.hpp"
@@ -75,9 +75,10 @@ int run_identify(const IdentifyArgs& a, Context& ctx) {
 
 void register_identify_command(CLI::App& app, Context& ctx) {
   auto args = std::make_shared<IdentifyArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "identify", "identify an Orthoglide model's unknown inputs from compliance targets (docs/vjm.md): "
-                  "Levenberg-Marquardt from the model file's values (both files in their own 'units:')");
+  CLI::App* cmd =
+      app.add_subcommand("identify",
+                         "identify an Orthoglide model's unknown inputs from compliance targets (docs/vjm.md): "
+                         "Levenberg-Marquardt from the model file's values (both files in their own 'units:')");
   cmd->add_option("model", args->model, "start model (VJM model file with 'mechanism: orthoglide')")->required();
   cmd->add_option("targets", args->targets, "targets file (YAML: inputs and compliance terms)")->required();
   cmd->add_option("--tolerance", args->tolerance, "largest relative residual accepted (dimensionless, default 1e-8)")

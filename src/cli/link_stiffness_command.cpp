@@ -10,16 +10,16 @@
 #include <optional>
 #include <ostream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/command_output.hpp"
 #include "kinestat/core/input_checks.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
-#include "kinestat/fea/mesh_convergence.hpp"
 #include "kinestat/fea/link_stiffness_request.hpp"
+#include "kinestat/fea/mesh_convergence.hpp"
 #include "kinestat/io/fea_vtk.hpp"
 #include "kinestat/io/link_stiffness_json.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
@@ -47,7 +47,8 @@ std::string result_error_line(const fea::ConvergenceStudy& study, const Mat6& C,
   std::string out = fmt::format("  {:>20}", fmt::format("rel. error at {:g} m", size));
   for (int k = 0; k < 6; ++k) {
     const auto& e = study.diagonal[k];
-    out += e.ok() ? fmt::format(" {:12.3e}", (C(k, k) - e->extrapolated) / e->extrapolated) : fmt::format(" {:>12}", "n/a");
+    out += e.ok() ? fmt::format(" {:12.3e}", (C(k, k) - e->extrapolated) / e->extrapolated)
+                  : fmt::format(" {:>12}", "n/a");
   }
   return out + "  (the 6x6 printed above)\n";
 }
@@ -68,10 +69,12 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     OutputOptions out;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand(
-      "link-stiffness", "6x6 stiffness of one link by FEA: clamped at --clamp, loaded through a reference body at "
-                        "--reference (docs/fea.md); the report, JSON and VTK are in SI units");
-  cmd->add_option("mesh", args->mesh, "closed triangle surface of the link (STL, OFF, OBJ, PLY), in --unit")->required();
+  CLI::App* cmd =
+      app.add_subcommand("link-stiffness",
+                         "6x6 stiffness of one link by FEA: clamped at --clamp, loaded through a reference body at "
+                         "--reference (docs/fea.md); the report, JSON and VTK are in SI units");
+  cmd->add_option("mesh", args->mesh, "closed triangle surface of the link (STL, OFF, OBJ, PLY), in --unit")
+      ->required();
   cmd->add_option("--material", args->material,
                   "steel (7850 kg/m^3), aluminium (2700 kg/m^3), or E=MPA,nu=V[,rho=KG_M3] (Young's modulus in MPa, "
                   "density in kg/m^3, needed by --modes only)")
@@ -81,8 +84,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
                   "file, in --unit)")
       ->required();
   cmd->add_option("--reference", args->reference, "reference-end region, same syntax and unit as --clamp")->required();
-  cmd->add_option("--unit", args->unit, "length unit of the mesh file and so of --clamp, --reference, "
-                                        "--reference-point: mm or m")
+  cmd->add_option("--unit", args->unit,
+                  "length unit of the mesh file and so of --clamp, --reference, "
+                  "--reference-point: mm or m")
       ->check(CLI::IsMember({"mm", "m"}))
       ->capture_default_str();
   cmd->add_option("--size", args->size_mm, "tetrahedron size (mm; default: 1/20 of the part's largest extent)");
@@ -108,7 +112,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--vtk", args->vtk_dir,
                   "write the six deformed-link .vtu files and a .pvd that groups them (ParaView, SI units) to DIR; "
                   "with --modes also one .vtu per mode and PREFIX_modes.pvd");
-  cmd->add_option("--cache", args->cache_dir, "reuse / store results in this directory (keyed by mesh, material, options)");
+  cmd->add_option("--cache", args->cache_dir,
+                  "reuse / store results in this directory (keyed by mesh, material, options)");
   cmd->add_option("--solver", args->solver,
                   "cholmod (direct, shared memory), petsc-mumps (MUMPS direct over MPI) or petsc-cg (CG + multigrid "
                   "over MPI, for meshes no factor fits); run the PETSc ones under mpirun -np N (docs/fea.md)")
@@ -140,8 +145,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       if (Status s = solver::same_on_every_rank("the command line", ctx.command_line); !s.ok()) return fail(s);
     }
     if (!(args->cg_rtol > 0.0 && args->cg_rtol < 1.0))
-      return fail(Status::Invalid(fmt::format("--cg-rtol {:g}: give a relative tolerance between 0 and 1 (e.g. 1e-10)",
-                                              args->cg_rtol)));
+      return fail(Status::Invalid(
+          fmt::format("--cg-rtol {:g}: give a relative tolerance between 0 and 1 (e.g. 1e-10)", args->cg_rtol)));
     if (args->max_iterations < 1)
       return fail(Status::Invalid(fmt::format("--max-iterations {}: give at least 1", args->max_iterations)));
     // --modes is checked before meshing: a count out of range or a massless material fails at once.
@@ -149,9 +154,10 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     if (args->modes && (modes < 1 || modes > fea::kMaxLinkModes))
       return fail(Status::Invalid(fmt::format("--modes {}: give a count from 1 to {}", modes, fea::kMaxLinkModes)));
     if (modes > 0 && backend != solver::Backend::kCholmod)
-      return fail(Status::Invalid(fmt::format("--modes with --solver {}: the natural frequencies need the direct solver "
-                                              "on one process; use --solver cholmod",
-                                              args->solver)));
+      return fail(
+          Status::Invalid(fmt::format("--modes with --solver {}: the natural frequencies need the direct solver "
+                                      "on one process; use --solver cholmod",
+                                      args->solver)));
     Output out(ctx, args->out);
     const double scale = args->unit == "mm" ? kMm : 1.0;
     fea::LinkStiffnessRequest request;
@@ -169,9 +175,10 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     if (!material.ok()) return fail(material.status());
     request.material = *material;
     if (modes > 0 && !(material->density > 0.0))
-      return fail(Status::Invalid(fmt::format("--material {} has no density, which --modes needs (the link's mass); "
-                                              "give steel, aluminium or E=MPA,nu=V,rho=KG_M3 (kg/m^3)",
-                                              args->material)));
+      return fail(
+          Status::Invalid(fmt::format("--material {} has no density, which --modes needs (the link's mass); "
+                                      "give steel, aluminium or E=MPA,nu=V,rho=KG_M3 (kg/m^3)",
+                                      args->material)));
     fea::LinkStiffnessOptions& options = request.options;
     auto clamp = fea::parse_region(args->clamp, scale, "--clamp " + args->clamp);
     if (!clamp.ok()) return fail(clamp.status());
@@ -179,7 +186,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     if (!reference.ok()) return fail(reference.status());
     options.clamp = *clamp;
     options.reference = *reference;
-    options.reference_model = args->model == "rigid" ? fea::ReferenceModel::kRigidCoupling : fea::ReferenceModel::kStiffBody;
+    options.reference_model =
+        args->model == "rigid" ? fea::ReferenceModel::kRigidCoupling : fea::ReferenceModel::kStiffBody;
     options.stiff_body_ratio = args->stiff_ratio;
     if (!args->reference_point.empty()) {
       auto p = fea::parse_point(args->reference_point, scale, "--reference-point");

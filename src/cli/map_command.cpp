@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/command_output.hpp"
 #include "cli/grid_options.hpp"
@@ -21,10 +21,10 @@
 #include "kinestat/core/units.hpp"
 #include "kinestat/io/map_json.hpp"
 #include "kinestat/io/map_vti.hpp"
-#include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
+#include "kinestat/io/workspace_map_png.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
 #include "kinestat/mechanisms/five_bar_loci.hpp"
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
@@ -46,9 +46,9 @@ struct MapArgs {
   std::vector<std::string> region, box;  // "lo:hi" per axis, mm
   std::optional<double> step;            // mm
   std::vector<double> load, wrench, orientation, position;
-  std::vector<std::string> angles;        // "lo:hi" per rotation, deg
-  std::optional<double> angle_step;       // deg
-  std::optional<double> min_stiffness;   // N/mm
+  std::vector<std::string> angles;      // "lo:hi" per rotation, deg
+  std::optional<double> angle_step;     // deg
+  std::optional<double> min_stiffness;  // N/mm
   double near_singular = MapOptions{}.near_singular_threshold;
   std::size_t max_points = MapOptions{}.max_points;
   int threads = 0;
@@ -56,8 +56,8 @@ struct MapArgs {
   bool quiet = false;
   // Options given on the command line, to refuse those that do not apply to the target.
   CLI::Option *mode_opt = nullptr, *assembly_opt = nullptr, *method_opt = nullptr, *region_opt = nullptr,
-              *box_opt = nullptr, *wrench_opt = nullptr, *orientation_opt = nullptr,
-              *angles_opt = nullptr, *position_opt = nullptr, *angle_step_opt = nullptr;
+              *box_opt = nullptr, *wrench_opt = nullptr, *orientation_opt = nullptr, *angles_opt = nullptr,
+              *position_opt = nullptr, *angle_step_opt = nullptr;
 };
 
 // What the target needs before the grid: the kernel, the ranges, the curves, words for messages.
@@ -77,10 +77,11 @@ Status refuse_if_given(const CLI::Option* o, const std::string& why) {
 }
 
 StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
-  for (const CLI::Option* o : {a.box_opt, a.wrench_opt, a.orientation_opt, a.angles_opt, a.position_opt,
-                               a.angle_step_opt})
-    if (Status s = refuse_if_given(o, "applies to model files; the five-bar takes --region x0:x1,y0:y1 (mm) and "
-                                      "--load Fx,Fy,Fz,Mx,My,Mz (N, N mm)");
+  for (const CLI::Option* o :
+       {a.box_opt, a.wrench_opt, a.orientation_opt, a.angles_opt, a.position_opt, a.angle_step_opt})
+    if (Status s = refuse_if_given(o,
+                                   "applies to model files; the five-bar takes --region x0:x1,y0:y1 (mm) and "
+                                   "--load Fx,Fy,Fz,Mx,My,Mz (N, N mm)");
         !s.ok())
       return s;
   FiveBarKernelOptions o;
@@ -116,10 +117,11 @@ StatusOr<MapSetup> five_bar_setup(const MapArgs& a) {
 }
 
 StatusOr<MapSetup> model_setup(const MapArgs& a) {
-  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt, a.orientation_opt,
-                               a.angles_opt, a.position_opt, a.angle_step_opt})
-    if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a model file takes --box, --step, "
-                                      "--load or --wrench");
+  for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.method_opt, a.region_opt, a.orientation_opt, a.angles_opt,
+                               a.position_opt, a.angle_step_opt})
+    if (Status s = refuse_if_given(o,
+                                   "applies to `kinestat map fivebar` only; a model file takes --box, --step, "
+                                   "--load or --wrench");
         !s.ok())
       return s;
   if (a.box.empty()) return Status::Invalid("--box x0:x1,y0:y1,z0:z1 (mm) is required with a model file");
@@ -137,9 +139,10 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
   auto model = io::read_vjm_model_yaml(a.target);
   if (!model.ok()) return model.status();
   if (!model->orthoglide)
-    return Status::Invalid(fmt::format("{}: a `chains:` model fixes one posture, so it has no workspace to map; use "
-                                       "a model with `mechanism: orthoglide` (models/orthoglide_puu.yaml)",
-                                       a.target));
+    return Status::Invalid(
+        fmt::format("{}: a `chains:` model fixes one posture, so it has no workspace to map; use "
+                    "a model with `mechanism: orthoglide` (models/orthoglide_puu.yaml)",
+                    a.target));
   o.model = *model->orthoglide;
   o.architecture = model->architecture;
   s.workspace_hint = fmt::format("every point is outside a leg's reach (L = {:.1f} mm about the slider axes)",
@@ -153,9 +156,10 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
 // task coordinates from --orientation.
 StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
   for (const CLI::Option* o : {a.mode_opt, a.assembly_opt, a.region_opt})
-    if (Status s = refuse_if_given(o, "applies to `kinestat map fivebar` only; a robot file takes --box, --step, "
-                                      "--orientation, --angles, --angle-step, --position, --method, --load or "
-                                      "--wrench");
+    if (Status s = refuse_if_given(o,
+                                   "applies to `kinestat map fivebar` only; a robot file takes --box, --step, "
+                                   "--orientation, --angles, --angle-step, --position, --method, --load or "
+                                   "--wrench");
         !s.ok())
       return s;
   RobotKernelOptions o;
@@ -179,8 +183,9 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
   if (s.angular && !a.orientation.empty())
     return Status::Invalid("--orientation fixes the angles a map over orientation (--angles) varies; give one");
   if (!s.angular && !a.position.empty())
-    return Status::Invalid("--position fixes the position of a map over orientation (--angles); a position map "
-                           "takes --box");
+    return Status::Invalid(
+        "--position fixes the position of a map over orientation (--angles); a position map "
+        "takes --box");
   if (s.angular ? !a.angle_step : !a.step)
     return Status::Invalid(s.angular ? "--angle-step DEG is required for a map over orientation"
                                      : "--step MM is required with a robot file");
@@ -199,9 +204,9 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
   } else if (d.workspace && d.workspace_angular == s.angular) {
     for (int i = 0; i < 3; ++i) s.ranges[i] = {(*d.workspace)[i].first, (*d.workspace)[i].second};
   } else {
-    return Status::Invalid(fmt::format("{}: no `workspace:` in the file for this map; give {}", a.target,
-                                       s.angular ? "--angles rx0:rx1,ry0:ry1,rz0:rz1 (deg)"
-                                                 : "--box x0:x1,y0:y1,z0:z1 (mm)"));
+    return Status::Invalid(
+        fmt::format("{}: no `workspace:` in the file for this map; give {}", a.target,
+                    s.angular ? "--angles rx0:rx1,ry0:ry1,rz0:rz1 (deg)" : "--box x0:x1,y0:y1,z0:z1 (mm)"));
   }
   auto axes = robot_grid_axes(d, s.ranges, s.angular, s.range_option);
   if (!axes.ok()) return axes.status();
@@ -219,9 +224,9 @@ std::string ranges_text(const std::array<MapRange, 3>& ranges, const MapGrid& ax
   for (int i = 0; i < 3; ++i) {
     const MapRange& r = ranges[i];
     const UnitDisplay u = axis_display(axes, i);
-    out += r.lo == r.hi ? fmt::format("{}{} = {:g} {}", i ? ", " : "", axes.names[i], r.lo * u.scale, u.unit)
-                        : fmt::format("{}{} {:g}:{:g} {}", i ? ", " : "", axes.names[i], r.lo * u.scale,
-                                      r.hi * u.scale, u.unit);
+    out += r.lo == r.hi
+               ? fmt::format("{}{} = {:g} {}", i ? ", " : "", axes.names[i], r.lo * u.scale, u.unit)
+               : fmt::format("{}{} {:g}:{:g} {}", i ? ", " : "", axes.names[i], r.lo * u.scale, r.hi * u.scale, u.unit);
   }
   return out;
 }
@@ -240,9 +245,8 @@ std::string summary_text(const WorkspaceMap& map, const std::string& step) {
   const MapGrid& g = map.grid;
   std::array<MapRange, 3> extent;
   for (int i = 0; i < 3; ++i) extent[i] = {g.origin(i), g.origin(i) + (g.dimensions[i] - 1) * g.spacing(i)};
-  std::string out = fmt::format("{}\n  grid {} x {} x {} = {} points, step {}: {}\n", map.description,
-                                g.dimensions[0], g.dimensions[1], g.dimensions[2], g.num_points(), step,
-                                ranges_text(extent, g));
+  std::string out = fmt::format("{}\n  grid {} x {} x {} = {} points, step {}: {}\n", map.description, g.dimensions[0],
+                                g.dimensions[1], g.dimensions[2], g.num_points(), step, ranges_text(extent, g));
   out += "  points:";
   for (int s = 0; s < kNumPostureStatuses; ++s)
     out += fmt::format("{} {} {}", s ? "," : "", map.status_counts[s], to_string(static_cast<PostureStatus>(s)));
@@ -294,15 +298,18 @@ int run_map(MapArgs& a, Context& ctx) {
   }
   if (!setup.ok()) return fail(setup.status());
   if ((*field == MapField::kDeflectionTranslation || *field == MapField::kDeflectionRotation) && !setup->with_load)
-    return fail(Status::Invalid(fmt::format("--field {} needs a load (--load{})", a.field, five_bar ? "" : " or --wrench")));
+    return fail(
+        Status::Invalid(fmt::format("--field {} needs a load (--load{})", a.field, five_bar ? "" : " or --wrench")));
   // Only the loaded mode of a model iterates; the five-bar's --load is a deflection C w.
   const bool loaded_mode = setup->with_load && !five_bar;
   if (*field == MapField::kNewtonIterations && !loaded_mode)
-    return fail(Status::Invalid(fmt::format("--field {} needs the loaded mode of a model (--load or --wrench)", a.field)));
+    return fail(
+        Status::Invalid(fmt::format("--field {} needs the loaded mode of a model (--load or --wrench)", a.field)));
 
   // The grid's step in SI and as the user gave it.
   const double step = setup->angular ? *a.angle_step * kDeg : *a.step * kMm;
-  const std::string step_text = setup->angular ? fmt::format("{:g} deg", *a.angle_step) : fmt::format("{:g} mm", *a.step);
+  const std::string step_text =
+      setup->angular ? fmt::format("{:g} deg", *a.angle_step) : fmt::format("{:g} mm", *a.step);
   const char* step_option = setup->angular ? "--angle-step" : "--step";
   // The point count is estimated before anything is allocated.
   double points = 1.0;
@@ -313,16 +320,17 @@ int run_map(MapArgs& a, Context& ctx) {
     // 2e5 postures/s unloaded, 1e4 loaded), so that the limit reads as a cost, not a rule.
     const int threads = a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const double minutes = points / ((setup->with_load ? 1e4 : 2e5) * threads) / 60.0;
-    return fail(Status::Invalid(fmt::format("{} {} over {} gives {:.3g} points (about {:.2g} min on {} "
-                                            "thread{}), more than --max-points {}; use a larger {} or a smaller "
-                                            "{}, or raise --max-points",
-                                            step_option, step_text, region, points, minutes, threads,
-                                            threads > 1 ? "s" : "", a.max_points, step_option, setup->range_option)));
+    return fail(
+        Status::Invalid(fmt::format("{} {} over {} gives {:.3g} points (about {:.2g} min on {} "
+                                    "thread{}), more than --max-points {}; use a larger {} or a smaller "
+                                    "{}, or raise --max-points",
+                                    step_option, step_text, region, points, minutes, threads, threads > 1 ? "s" : "",
+                                    a.max_points, step_option, setup->range_option)));
   }
   auto grid = make_map_grid(setup->ranges, step, a.max_points);
   if (!grid.ok())
-    return fail(Status::Invalid(fmt::format("{} with {} {}: {}", setup->range_option, step_option, step_text,
-                                            grid.status().message())));
+    return fail(Status::Invalid(
+        fmt::format("{} with {} {}: {}", setup->range_option, step_option, step_text, grid.status().message())));
   const MapGrid axes = grid_axes(setup->angular);
   grid->angular = axes.angular;
   grid->names = axes.names;
@@ -349,10 +357,10 @@ int run_map(MapArgs& a, Context& ctx) {
   const auto count = [&map](PostureStatus s) { return map->status_counts[static_cast<int>(s)]; };
   if (count(PostureStatus::kOk) + count(PostureStatus::kNearSingular) == 0) {
     const std::size_t failed = count(PostureStatus::kFailed), singular = count(PostureStatus::kSingular);
-    const std::string what = fmt::format("no point of {} ({}) has a stiffness: {} failed, {} singular, {} unreachable; "
-                                         "nothing written",
-                                         setup->range_option, region, failed, singular,
-                                         count(PostureStatus::kUnreachable));
+    const std::string what = fmt::format(
+        "no point of {} ({}) has a stiffness: {} failed, {} singular, {} unreachable; "
+        "nothing written",
+        setup->range_option, region, failed, singular, count(PostureStatus::kUnreachable));
     if (failed > 0)
       return fail(Status::NotConverged(what + ". The loaded equilibrium was not found at any posture: the load may "
                                               "exceed the buckling load; give a smaller --load or --wrench"));
@@ -392,11 +400,14 @@ int run_map(MapArgs& a, Context& ctx) {
 void register_map_command(CLI::App& app, Context& ctx) {
   auto a = std::make_shared<MapArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "map", "workspace stiffness map (docs/maps.md): the tool-point stiffness at every point of a grid, as VTI "
-             "(ParaView), JSON and PNG. Targets: `fivebar` (the 5R five-bar of Goncalves et al. 2010, the plane "
-             "of P), a VJM model file with `mechanism: orthoglide` (a 3D box or a slice) or a robot file (`robot:`, "
-             "docs/robots.md; models/robots/)");
-  cmd->add_option("target", a->target, "`fivebar`, a VJM model file (YAML, mechanism: orthoglide) or a robot file (YAML, robot:)")->required();
+      "map",
+      "workspace stiffness map (docs/maps.md): the tool-point stiffness at every point of a grid, as VTI "
+      "(ParaView), JSON and PNG. Targets: `fivebar` (the 5R five-bar of Goncalves et al. 2010, the plane "
+      "of P), a VJM model file with `mechanism: orthoglide` (a 3D box or a slice) or a robot file (`robot:`, "
+      "docs/robots.md; models/robots/)");
+  cmd->add_option("target", a->target,
+                  "`fivebar`, a VJM model file (YAML, mechanism: orthoglide) or a robot file (YAML, robot:)")
+      ->required();
   a->mode_opt = cmd->add_option("--mode", a->mode, "fivebar: working mode ++ (default), +-, -+ or --");
   a->assembly_opt = cmd->add_option("--assembly", a->assembly, "fivebar: assembly mode up (default) or down");
   a->method_opt = cmd->add_option("--method", a->method,
@@ -405,9 +416,9 @@ void register_map_command(CLI::App& app, Context& ctx) {
   a->region_opt = cmd->add_option("--region", a->region,
                                   "fivebar: x0:x1,y0:y1 in mm (default: the bounding box of the mode's workspace)")
                       ->delimiter(',');
-  a->box_opt = cmd->add_option("--box", a->box,
-                               "model: x0:x1,y0:y1,z0:z1 in mm (a single value for one axis: a 2D slice)")
-                   ->delimiter(',');
+  a->box_opt =
+      cmd->add_option("--box", a->box, "model: x0:x1,y0:y1,z0:z1 in mm (a single value for one axis: a 2D slice)")
+          ->delimiter(',');
   cmd->add_option("--step", a->step, "grid step in mm (fivebar default 5)");
   a->angles_opt = cmd->add_option("--angles", a->angles,
                                   "robot file: a map over the orientation rx0:rx1,ry0:ry1,rz0:rz1 in deg (a single "

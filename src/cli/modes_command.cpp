@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <ostream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/msa_output.hpp"
 #include "kinestat/io/frame3dd.hpp"
@@ -23,14 +23,16 @@ constexpr std::size_t kMaxPrintedNodes = 50;  // larger models: --json or --vtk
 std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lumped) {
   std::string t;
   if (r.prestress)
-    t = fmt::format("Natural frequencies of the structure prestressed by load case '{}' ((K + K_G) phi = omega^2 M phi, "
-                    "K_G of its {} axial forces, {} beam masses, {} free dofs)\n",
-                    r.prestress->load_case_name, r.prestress->second_order ? "second-order" : "linear",
-                    lumped ? "lumped" : "consistent", r.num_free_dofs);
+    t = fmt::format(
+        "Natural frequencies of the structure prestressed by load case '{}' ((K + K_G) phi = omega^2 M phi, "
+        "K_G of its {} axial forces, {} beam masses, {} free dofs)\n",
+        r.prestress->load_case_name, r.prestress->second_order ? "second-order" : "linear",
+        lumped ? "lumped" : "consistent", r.num_free_dofs);
   else
-    t = fmt::format("Natural frequencies of the unstressed structure (K phi = omega^2 M phi, {} beam masses, {} free "
-                    "dofs)\n",
-                    lumped ? "lumped" : "consistent", r.num_free_dofs);
+    t = fmt::format(
+        "Natural frequencies of the unstressed structure (K phi = omega^2 M phi, {} beam masses, {} free "
+        "dofs)\n",
+        lumped ? "lumped" : "consistent", r.num_free_dofs);
   t += fmt::format("Total mass: {:.6g} kg (x), {:.6g} kg (y), {:.6g} kg (z)\n", r.total_mass(0), r.total_mass(1),
                    r.total_mass(2));
   t += fmt::format("  {:>4}  {:>14}  {:>14}  {:>26}  {:>9}\n", "mode", "f (Hz)", "omega (rad/s)",
@@ -39,8 +41,8 @@ std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lump
     const auto& m = r.modes[k];
     Vec3 pct = Vec3::Zero();
     for (int d = 0; d < 3; ++d) pct(d) = r.total_mass(d) > 0 ? 100 * m.effective_mass(d) / r.total_mass(d) : 0.0;
-    t += fmt::format("  {:>4}  {:>14.8g}  {:>14.8g}  {:>8.3f} {:>8.3f} {:>8.3f}  {:>9.1e}\n", k + 1, m.frequency, m.omega,
-                     pct(0), pct(1), pct(2), m.residual);
+    t += fmt::format("  {:>4}  {:>14.8g}  {:>14.8g}  {:>8.3f} {:>8.3f} {:>8.3f}  {:>9.1e}\n", k + 1, m.frequency,
+                     m.omega, pct(0), pct(1), pct(2), m.residual);
   }
   t += "Mode shapes (mass-normalized, phi' M phi = 1: translations m/sqrt(kg), rotations rad/sqrt(kg)):\n";
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
@@ -49,11 +51,12 @@ std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lump
       t += fmt::format("    ({} nodes: see --json or --vtk)\n", s.nodes().size());
       continue;
     }
-    t += fmt::format("    {:>10} {:>11} {:>11} {:>11} {:>11} {:>11} {:>11}\n", "node", "ux", "uy", "uz", "rx", "ry", "rz");
+    t += fmt::format("    {:>10} {:>11} {:>11} {:>11} {:>11} {:>11} {:>11}\n", "node", "ux", "uy", "uz", "rx", "ry",
+                     "rz");
     for (std::size_t n = 0; n < s.nodes().size(); ++n) {
       const Vec6& v = r.modes[k].shape[n];
-      t += fmt::format("    {:>10} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e}\n", s.nodes()[n].id, v(0),
-                       v(1), v(2), v(3), v(4), v(5));
+      t += fmt::format("    {:>10} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e}\n", s.nodes()[n].id,
+                       v(0), v(1), v(2), v(3), v(4), v(5));
     }
   }
   return t;
@@ -70,8 +73,9 @@ void register_modes_command(CLI::App& app, Context& ctx) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand(
-      "modes", "natural frequencies and mode shapes of a YAML structure file or a Frame3DD .3dd file (with --units; "
-               "docs/stability-and-modes.md; materials need a density); report, JSON and VTK in SI units");
+      "modes",
+      "natural frequencies and mode shapes of a YAML structure file or a Frame3DD .3dd file (with --units; "
+      "docs/stability-and-modes.md; materials need a density); report, JSON and VTK in SI units");
   cmd->add_option("file", args->file, "structure file (.yaml) or Frame3DD input file (.3dd)")->required();
   cmd->add_option("--units", args->units,
                   "FORCE-LENGTH of a .3dd file, which states none (required there, refused for YAML): force N, kN, "
@@ -79,8 +83,9 @@ void register_modes_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--count", args->count,
                   "how many of the lowest frequencies (1 to 100, default 6, or a .3dd file's number of modes)")
       ->check(CLI::Range(1, 100));
-  cmd->add_flag("--lumped", args->lumped, "lumped beam masses instead of consistent ones (a .3dd file's lumped flag 1 "
-                                          "asks for them too)");
+  cmd->add_flag("--lumped", args->lumped,
+                "lumped beam masses instead of consistent ones (a .3dd file's lumped flag 1 "
+                "asks for them too)");
   auto* by_name = cmd->add_option(
       "--prestress", args->prestress,
       "the load case whose axial forces prestress the structure (K + K_G), by name (a .3dd file's cases are 'case 1', "
@@ -108,19 +113,22 @@ void register_modes_command(CLI::App& app, Context& ctx) {
     const bool asked_none = args->prestress == "none";
     if (args->prestress_index >= 0) {
       if (args->prestress_index >= nc)
-        return fail(Status::Invalid(fmt::format("{}: --prestress-index {}: the file has {} load case{}{}; give an index "
-                                                "from 0 to {}",
-                                                args->file, args->prestress_index, nc, nc == 1 ? "" : "s",
-                                                nc == 0 ? " (none to prestress it)" : "", nc - 1)));
+        return fail(
+            Status::Invalid(fmt::format("{}: --prestress-index {}: the file has {} load case{}{}; give an index "
+                                        "from 0 to {}",
+                                        args->file, args->prestress_index, nc, nc == 1 ? "" : "s",
+                                        nc == 0 ? " (none to prestress it)" : "", nc - 1)));
       prestress = args->prestress_index;
     } else if (!args->prestress.empty() && !asked_none) {
-      auto it = std::find_if(cases.begin(), cases.end(), [&](const msa::LoadCase& c) { return c.name == args->prestress; });
+      auto it =
+          std::find_if(cases.begin(), cases.end(), [&](const msa::LoadCase& c) { return c.name == args->prestress; });
       if (it == cases.end()) {
         std::string names;
         for (const auto& c : cases) names += (names.empty() ? "'" : ", '") + c.name + "'";
-        return fail(Status::Invalid(fmt::format("{}: no load case named '{}' (it has {}); give one of them to "
-                                                "--prestress, or 'none'",
-                                                args->file, args->prestress, names.empty() ? "none" : names)));
+        return fail(
+            Status::Invalid(fmt::format("{}: no load case named '{}' (it has {}); give one of them to "
+                                        "--prestress, or 'none'",
+                                        args->file, args->prestress, names.empty() ? "none" : names)));
       }
       prestress = static_cast<int>(it - cases.begin());
     }
@@ -129,15 +137,17 @@ void register_modes_command(CLI::App& app, Context& ctx) {
       // The file's modal data: its number of modes and mass matrix unless the options say otherwise.
       if (analysis.modes > 0 && cmd->count("--count") == 0) {
         if (analysis.modes > 100)
-          return fail(Status::Invalid(fmt::format("{}: {} dynamic modes: kinestat modes computes 1 to 100; write "
-                                                  "fewer there, or give --count",
-                                                  analysis.modes_source, analysis.modes)));
+          return fail(
+              Status::Invalid(fmt::format("{}: {} dynamic modes: kinestat modes computes 1 to 100; write "
+                                          "fewer there, or give --count",
+                                          analysis.modes_source, analysis.modes)));
         args->count = analysis.modes;
       }
       if (analysis.lumped && !args->lumped) {
         args->lumped = true;
-        notes.push_back(analysis.lumped_source + ": lumped mass flag 1: kinestat's lumped beam masses (no rotary "
-                                                 "inertia of the bending rotations, unlike Frame3DD's)");
+        notes.push_back(analysis.lumped_source +
+                        ": lumped mass flag 1: kinestat's lumped beam masses (no rotary "
+                        "inertia of the bending rotations, unlike Frame3DD's)");
       }
       // Frame3DD's modal analysis takes the stiffness its static analysis leaves, which with this flag
       // holds the geometric stiffness of the last load case's second-order axial forces: its
@@ -158,14 +168,16 @@ void register_modes_command(CLI::App& app, Context& ctx) {
         }
       }
       if (analysis.modes == 0)
-        notes.push_back(analysis.modes_source + ": 0 dynamic modes and no modal data: beam masses from the densities, "
-                                                "count from --count");
+        notes.push_back(analysis.modes_source +
+                        ": 0 dynamic modes and no modal data: beam masses from the densities, "
+                        "count from --count");
     }
     if (!args->out.quiet)
       for (const std::string& note : notes) ctx.err << "kinestat modes: note: " << note << "\n";
     if (second_order && prestress < 0 && args->second_order)
-      return fail(Status::Invalid("--second-order is for the prestress's axial forces: add --prestress CASE (or "
-                                  "--prestress-index I), or omit --second-order"));
+      return fail(
+          Status::Invalid("--second-order is for the prestress's axial forces: add --prestress CASE (or "
+                          "--prestress-index I), or omit --second-order"));
     msa::ModalOptions opt;
     opt.count = args->count;
     opt.lumped = args->lumped;
@@ -175,10 +187,10 @@ void register_modes_command(CLI::App& app, Context& ctx) {
     std::vector<io::VtkModeShape> modes;
     for (std::size_t k = 0; k < r.modes.size(); ++k)
       modes.push_back({fmt::format("mode {}: f = {:.6g} Hz", k + 1, r.modes[k].frequency), r.modes[k].shape});
-    ctx.exit_code = finish_mode_run("modes", *s, report(*s, r, args->lumped),
-                                    [&] { return io::modes_to_json(*s, r, args->lumped); }, modes, args->vtk_dir,
-                                    std::filesystem::path(args->file).stem().string() + "_modes",
-                                    "m/sqrt(kg), rad/sqrt(kg) (mass-normalized)", args->out, r.status, ctx);
+    ctx.exit_code = finish_mode_run(
+        "modes", *s, report(*s, r, args->lumped), [&] { return io::modes_to_json(*s, r, args->lumped); }, modes,
+        args->vtk_dir, std::filesystem::path(args->file).stem().string() + "_modes",
+        "m/sqrt(kg), rad/sqrt(kg) (mass-normalized)", args->out, r.status, ctx);
   });
 }
 

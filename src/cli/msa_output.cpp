@@ -14,13 +14,15 @@ StatusOr<msa::Structure> read_structure_file(const std::string& file, const std:
                                              std::vector<std::string>& notes, io::Frame3ddAnalysis& analysis) {
   if (!io::is_frame3dd_file(file)) {
     if (!units.empty())
-      return Status::Invalid("--units is for Frame3DD .3dd files; a YAML structure file states its units in its "
-                             "'units:' key (docs/structure-format.md); remove --units");
+      return Status::Invalid(
+          "--units is for Frame3DD .3dd files; a YAML structure file states its units in its "
+          "'units:' key (docs/structure-format.md); remove --units");
     return io::read_structure_yaml(file);
   }
   if (units.empty())
-    return Status::Invalid(file + ": a .3dd file states no units; give them with --units FORCE-LENGTH, e.g. "
-                                  "--units kip-in or --units N-mm");
+    return Status::Invalid(file +
+                           ": a .3dd file states no units; give them with --units FORCE-LENGTH, e.g. "
+                           "--units kip-in or --units N-mm");
   const StatusOr<io::FileUnits> u = io::units_from_name(units, "--units");
   if (!u.ok()) return u.status();
   return io::read_frame3dd(file, *u, &notes, &analysis);

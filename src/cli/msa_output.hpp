@@ -23,10 +23,10 @@ StatusOr<msa::Structure> read_structure_file(const std::string& file, const std:
                                              std::vector<std::string>& notes, io::Frame3ddAnalysis& analysis);
 
 struct MsaOutputOptions {
-  OutputOptions out;      // --json, --quiet
-  std::string vtk_dir;    // empty: no VTK
-  std::string basename;   // of the .vtu/.pvd files
-  int stations = 0;       // --stations: along-member results per beam in the JSON (0: none)
+  OutputOptions out;     // --json, --quiet
+  std::string vtk_dir;   // empty: no VTK
+  std::string basename;  // of the .vtu/.pvd files
+  int stations = 0;      // --stations: along-member results per beam in the JSON (0: none)
 };
 
 // Adds --vtk, --json and --quiet to a command.

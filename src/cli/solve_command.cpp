@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <ostream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/msa_output.hpp"
 #include "kinestat/io/frame3dd.hpp"
@@ -23,9 +23,10 @@ void register_solve_command(CLI::App& app, Context& ctx) {
     MsaOutputOptions out;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand(
-      "solve", "solve a YAML structure file (format: docs/structure-format.md; its numbers are in the file's "
-               "'units:') or a Frame3DD .3dd file (with --units); the report, JSON and VTK are in SI units");
+  CLI::App* cmd =
+      app.add_subcommand("solve",
+                         "solve a YAML structure file (format: docs/structure-format.md; its numbers are in the file's "
+                         "'units:') or a Frame3DD .3dd file (with --units); the report, JSON and VTK are in SI units");
   cmd->add_option("file", args->file, "structure file (.yaml) or Frame3DD input file (.3dd)")->required();
   cmd->add_option("--units", args->units,
                   "FORCE-LENGTH of a .3dd file, which states none (required there, refused for YAML): force N, kN, "
@@ -51,9 +52,10 @@ void register_solve_command(CLI::App& app, Context& ctx) {
     io::Frame3ddAnalysis analysis;
     StatusOr<msa::Structure> s = read_structure_file(args->file, args->units, notes, analysis);
     if (s.ok() && analysis.modes > 0)
-      notes.push_back(fmt::format("{}: {} dynamic modes asked for: kinestat solve is static and computes none; "
-                                  "kinestat modes computes them with the file's modal data",
-                                  analysis.modes_source, analysis.modes));
+      notes.push_back(
+          fmt::format("{}: {} dynamic modes asked for: kinestat solve is static and computes none; "
+                      "kinestat modes computes them with the file's modal data",
+                      analysis.modes_source, analysis.modes));
     // Frame3DD's geometric stiffness flag asks for its second-order analysis: honoured, said.
     if (s.ok() && analysis.geometric_stiffness && !args->second_order) {
       args->second_order = true;
@@ -69,17 +71,20 @@ void register_solve_command(CLI::App& app, Context& ctx) {
       for (const std::string& note : notes) ctx.err << "kinestat solve: note: " << note << "\n";
     auto refuse = [&](const std::string& m) { ctx.exit_code = report_failure(ctx, "solve", Status::Invalid(m)); };
     if (!args->second_order && (cmd->count("--tolerance") > 0 || cmd->count("--max-iterations") > 0))
-      return refuse("--tolerance and --max-iterations set the second-order iteration: add --second-order, or remove "
-                    "them");
+      return refuse(
+          "--tolerance and --max-iterations set the second-order iteration: add --second-order, or remove "
+          "them");
     if (args->second_order && args->regularize)
-      return refuse("--regularize and --second-order do not go together: a singular structure has no axial forces "
-                    "to iterate on; solve it without --second-order");
+      return refuse(
+          "--regularize and --second-order do not go together: a singular structure has no axial forces "
+          "to iterate on; solve it without --second-order");
     // Along a member in second order the moment gains N times the deflection from the chord, which the
     // stations' linear equilibrium of [0, x] does not hold: no numbers rather than wrong ones.
     if (args->second_order && args->out.stations > 0)
-      return refuse("--stations is not available with --second-order: the along-member forces would miss the axial "
-                    "force's moment on the member's own deflection; divide the members into more beams and read "
-                    "their end forces instead");
+      return refuse(
+          "--stations is not available with --second-order: the along-member forces would miss the axial "
+          "force's moment on the member's own deflection; divide the members into more beams and read "
+          "their end forces instead");
     msa::SolveOptions opt;
     opt.regularize = args->regularize;
     const msa::Solution sol = args->second_order ? msa::solve_second_order(*s, args->second, opt) : msa::solve(*s, opt);

@@ -1,17 +1,17 @@
-// kinestat vjm MODEL|ROBOT [--point x,y,z] [--orientation rx,ry,rz] [--load dx,dy,dz,rx,ry,rz | --wrench Fx,Fy,Fz,Mx,My,Mz] [--json FILE|-]
-// Virtual joint method stiffness (Pashkevich et al. 2009) of a platform read from a VJM model file
-// (docs/vjm.md): unloaded (eq. 9-10) and, with a load, loaded (eq. 11-21).
+// kinestat vjm MODEL|ROBOT [--point x,y,z] [--orientation rx,ry,rz] [--load dx,dy,dz,rx,ry,rz | --wrench
+// Fx,Fy,Fz,Mx,My,Mz] [--json FILE|-] Virtual joint method stiffness (Pashkevich et al. 2009) of a platform read from a
+// VJM model file (docs/vjm.md): unloaded (eq. 9-10) and, with a load, loaded (eq. 11-21).
 #include <sstream>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/command_output.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/core/units.hpp"
-#include "kinestat/io/vjm_results_json.hpp"
 #include "kinestat/io/robot_yaml.hpp"
+#include "kinestat/io/vjm_results_json.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 #include "kinestat/mechanisms/robot_model.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
@@ -26,10 +26,10 @@ using units::kNMm;
 
 struct VjmArgs {
   std::string model;
-  std::vector<double> point;   // mm
+  std::vector<double> point;        // mm
   std::vector<double> orientation;  // deg (robot files)
-  std::vector<double> load;    // mm, deg
-  std::vector<double> wrench;  // N, N mm
+  std::vector<double> load;         // mm, deg
+  std::vector<double> wrench;       // N, N mm
   int max_coordinates = vjm::kDefaultMaxChainCoordinates;
   OutputOptions out;
 };
@@ -60,13 +60,14 @@ StatusOr<ModelChains> robot_chains(const VjmArgs& a, const std::optional<Vec3>& 
   if (k.status == mechanisms::KinematicsStatus::kSingular)
     return Status::Singular(fmt::format("{}: the posture is singular: {}", a.model, k.message));
   if (k.status != mechanisms::KinematicsStatus::kOk)
-    return Status::Invalid(fmt::format("{}: the task values are not reached from home ({}): {}; choose a point "
-                                       "inside the workspace",
-                                       a.model, to_string(k.status), k.message));
+    return Status::Invalid(
+        fmt::format("{}: the task values are not reached from home ({}): {}; choose a point "
+                    "inside the workspace",
+                    a.model, to_string(k.status), k.message));
   ModelChains out;
   out.title = d.name;
-  out.posture = fmt::format("  posture solved from home in {} Newton steps; singularity measure {:.4g}\n",
-                            k.iterations, k.singularity_measure);
+  out.posture = fmt::format("  posture solved from home in {} Newton steps; singularity measure {:.4g}\n", k.iterations,
+                            k.singularity_measure);
   for (int i = 0; i < model->num_coordinates(); ++i) {
     const mechanisms::RobotModel::Coordinate& c = model->coordinates()[i];
     const mechanisms::RobotJoint& j = model->joint(c);
@@ -178,9 +179,10 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
 void register_vjm_command(CLI::App& app, Context& ctx) {
   auto args = std::make_shared<VjmArgs>();
   CLI::App* cmd = app.add_subcommand(
-      "vjm", "virtual joint method stiffness of a VJM model file (docs/vjm.md) or a robot file (docs/robots.md) "
-             "at one posture (their numbers are in the file's 'units:'): unloaded, and loaded under --load or "
-             "--wrench; stiffness printed in SI units");
+      "vjm",
+      "virtual joint method stiffness of a VJM model file (docs/vjm.md) or a robot file (docs/robots.md) "
+      "at one posture (their numbers are in the file's 'units:'): unloaded, and loaded under --load or "
+      "--wrench; stiffness printed in SI units");
   cmd->add_option("model", args->model, "VJM model file or robot file (YAML)")->required();
   cmd->add_option("--point", args->point,
                   "tool point x,y,z in mm (Orthoglide models, default Q0 = 0,0,0; robot files, default home)")
@@ -188,9 +190,9 @@ void register_vjm_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--orientation", args->orientation,
                   "robot files: the tool's orientation rx,ry,rz in deg for the task's angles (default home's, 0)")
       ->delimiter(',');
-  CLI::Option* load = cmd->add_option("--load", args->load,
-                                      "prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg): loaded mode")
-                          ->delimiter(',');
+  CLI::Option* load =
+      cmd->add_option("--load", args->load, "prescribed tool displacement dx,dy,dz (mm), rx,ry,rz (deg): loaded mode")
+          ->delimiter(',');
   cmd->add_option("--wrench", args->wrench,
                   "external wrench Fx,Fy,Fz (N), Mx,My,Mz (N mm) about the tool point: loaded mode")
       ->delimiter(',')

@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 std::string reason(int error) { return std::strerror(error); }
 
 Status cannot_write(const std::string& path, const std::string& why) {
-  return Status::Invalid(
-      fmt::format("{}: cannot write the file: {}; check that its folder exists and is writable and has room", path, why));
+  return Status::Invalid(fmt::format(
+      "{}: cannot write the file: {}; check that its folder exists and is writable and has room", path, why));
 }
 
 // Writes all of `data` to `fd`, retrying short writes and interruptions; the errno of a failure.

@@ -38,8 +38,9 @@ CartesianStiffness cartesian_from_compliance(const Mat6& compliance, const Vec3&
   if (!(cmax > 0)) {
     c.note = "the point is fully supported: its stiffness is infinite";
   } else if (!c.rigid_directions.empty()) {
-    c.note = "the compliance is singular (a supported or rigidly tied dof at this point): the stiffness is "
-             "infinite in some direction; see the compliance";
+    c.note =
+        "the compliance is singular (a supported or rigidly tied dof at this point): the stiffness is "
+        "infinite in some direction; see the compliance";
   } else {
     c.stiffness = eig.eigenvectors() * eig.eigenvalues().cwiseInverse().asDiagonal() * eig.eigenvectors().transpose();
     c.stiffness_defined = true;
@@ -53,8 +54,8 @@ std::string describe_twist(const Vec6& t) {
   const double scale = t.norm();
   if (r.norm() <= 1e-9 * scale) return "translation along " + direction_words(v);
   if (v.norm() <= 1e-9 * scale) return "rotation about " + direction_words(r) + " through the point";
-  return fmt::format("screw motion: rotation about {} with point translation {:.3g} m/rad along {}",
-                     direction_words(r), v.norm() / r.norm(), direction_words(v));
+  return fmt::format("screw motion: rotation about {} with point translation {:.3g} m/rad along {}", direction_words(r),
+                     v.norm() / r.norm(), direction_words(v));
 }
 
 std::string cartesian_stiffness_report(const CartesianStiffness& c, const std::string& title) {

@@ -59,8 +59,8 @@ Status check_quantity(double value, Quantity q, const std::string& item, const U
 Status check_size(double estimate, double limit, const std::string& what, const std::string& units,
                   const std::string& advice) {
   if (estimate <= limit) return Status::Ok();  // NaN estimates are refused too
-  return Status::Invalid(fmt::format("{}: about {:.3g} {}, above the limit of {:.3g}; {}", what, estimate, units, limit,
-                                     advice));
+  return Status::Invalid(
+      fmt::format("{}: about {:.3g} {}, above the limit of {:.3g}; {}", what, estimate, units, limit, advice));
 }
 
 std::string entry_name(const std::string& item, long i, long j, bool vector) {

@@ -7,11 +7,16 @@ namespace kinestat {
 
 const char* status_code_name(StatusCode code) {
   switch (code) {
-    case StatusCode::kOk: return "kOk";
-    case StatusCode::kInvalidInput: return "kInvalidInput";
-    case StatusCode::kSingular: return "kSingular";
-    case StatusCode::kNotConverged: return "kNotConverged";
-    case StatusCode::kInternal: return "kInternal";
+    case StatusCode::kOk:
+      return "kOk";
+    case StatusCode::kInvalidInput:
+      return "kInvalidInput";
+    case StatusCode::kSingular:
+      return "kSingular";
+    case StatusCode::kNotConverged:
+      return "kNotConverged";
+    case StatusCode::kInternal:
+      return "kInternal";
   }
   return "unknown status code";
 }

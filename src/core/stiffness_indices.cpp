@@ -78,9 +78,10 @@ CartesianIndices cartesian_indices(const Mat6& K) {
 std::string indices_report(const StiffnessIndices& ix) {
   std::string out;
   out += fmt::format("    size {}x{}, symmetry error {:.1e}\n", ix.size, ix.size, ix.symmetry_error);
-  out += fmt::format("    determinant       {} (sign {}, log10|det| = {:.4f})\n",
-                     std::isfinite(ix.determinant) ? fmt::format("{:.4e}", ix.determinant) : std::string("overflows double"),
-                     ix.det_sign, ix.log10_abs_det);
+  out += fmt::format(
+      "    determinant       {} (sign {}, log10|det| = {:.4f})\n",
+      std::isfinite(ix.determinant) ? fmt::format("{:.4e}", ix.determinant) : std::string("overflows double"),
+      ix.det_sign, ix.log10_abs_det);
   out += fmt::format("    trace             {:.4e}\n", ix.trace);
   out += fmt::format("    1-norm            {:.4e}\n", ix.norm_1);
   out += fmt::format("    2-norm            {:.4e}\n", ix.norm_2);

@@ -72,8 +72,9 @@ StatusOr<ReleasePartition> partition_releases(const Mat12& K, const BeamReleases
   // ends, ...) makes K_rr singular.
   const double scale = Krr.diagonal().cwiseAbs().maxCoeff();
   if (p.ldlt.info() != Eigen::Success || !(p.ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * scale))
-    return Status::Invalid("the end releases leave the beam free to move on its own (e.g. torsion or axial "
-                           "released at both ends); release at one end only");
+    return Status::Invalid(
+        "the end releases leave the beam free to move on its own (e.g. torsion or axial "
+        "released at both ends); release at one end only");
   return p;
 }
 

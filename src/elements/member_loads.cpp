@@ -69,8 +69,8 @@ Vec12 trapezoidal_load_fixed_end_forces(const BeamSpan& beam, double a, double b
   const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
   for (int g = 0; g < 3; ++g) {
     const double t = 0.5 * (1.0 + kPoint[g]);  // 0 at a, 1 at b
-    add_concentrated(beam, phi, mid + half * kPoint[g], (kWeight[g] * half) * ((1.0 - t) * w1 + t * w2),
-                     Vec3::Zero(), fef);
+    add_concentrated(beam, phi, mid + half * kPoint[g], (kWeight[g] * half) * ((1.0 - t) * w1 + t * w2), Vec3::Zero(),
+                     fef);
   }
   return fef;
 }
@@ -89,8 +89,8 @@ Vec12 temperature_fixed_end_forces(const BeamSpan& beam, const ThermalLoad& t) {
   const double E = beam.material.E;
   const Section& s = beam.section;
   // Clamped: the mechanical strain cancels the thermal one, -alpha (dT + dTy y / hy + dTz z / hz).
-  const double N = E * s.A * t.alpha * t.dT;                                // compression in the beam
-  const double Mz = t.dTy != 0.0 ? E * s.Iz * t.alpha * t.dTy / t.hy : 0.0;  // internal moment about z
+  const double N = E * s.A * t.alpha * t.dT;                                  // compression in the beam
+  const double Mz = t.dTy != 0.0 ? E * s.Iz * t.alpha * t.dTy / t.hy : 0.0;   // internal moment about z
   const double My = t.dTz != 0.0 ? -E * s.Iy * t.alpha * t.dTz / t.hz : 0.0;  // internal moment about y
   Vec12 fef = Vec12::Zero();
   // At the second end the force on the beam is the internal force, at the first end its negative.

@@ -241,10 +241,10 @@ struct ElementScatter {
                 if (row < col) continue;
                 // Column in node j/3's block, row in node i/3's: the same block or a later one.
                 const int cb = node_block[j / 3], rb = node_block[i / 3];
-                const long pos = outer[col] + blocks.list_offset(cb, k_of[j / 3][i / 3]) + (row - blocks.first_dof(rb, ref_dof)) -
-                                 (col - blocks.first_dof(cb, ref_dof));
-                std::atomic_ref<double>(values[pos]).fetch_add(ti.coef[a] * tj.coef[b] * Ke(i, j),
-                                                                std::memory_order_relaxed);
+                const long pos = outer[col] + blocks.list_offset(cb, k_of[j / 3][i / 3]) +
+                                 (row - blocks.first_dof(rb, ref_dof)) - (col - blocks.first_dof(cb, ref_dof));
+                std::atomic_ref<double>(values[pos])
+                    .fetch_add(ti.coef[a] * tj.coef[b] * Ke(i, j), std::memory_order_relaxed);
               }
           }
         }
@@ -279,8 +279,10 @@ Status assemble_elements(const TetMesh& mesh, const DofMap& map, solver::SparseM
     for (int d = 0; d < blocks.size(a); ++d) {
       const long next = static_cast<long>(outer[first + d]) + column_length - d;
       if (next > std::numeric_limits<int>::max())
-        return Status::Invalid(fmt::format("stiffness assembly: more than {} matrix entries (32-bit indices); "
-                                           "use a coarser mesh", std::numeric_limits<int>::max()));
+        return Status::Invalid(
+            fmt::format("stiffness assembly: more than {} matrix entries (32-bit indices); "
+                        "use a coarser mesh",
+                        std::numeric_limits<int>::max()));
       outer[first + d + 1] = static_cast<int>(next);
     }
   }
@@ -306,9 +308,10 @@ Status assemble_elements(const TetMesh& mesh, const DofMap& map, solver::SparseM
   else
     scatter.add_elements<4>(set, bad_element, element_matrix);
   if (bad_element >= 0)
-    return Status::Invalid(fmt::format("tetrahedral mesh: element {} has a non-positive Jacobian (inverted or "
-                                       "degenerate); remesh the link",
-                                       bad_element.load()));
+    return Status::Invalid(
+        fmt::format("tetrahedral mesh: element {} has a non-positive Jacobian (inverted or "
+                    "degenerate); remesh the link",
+                    bad_element.load()));
   return Status::Ok();
 }
 

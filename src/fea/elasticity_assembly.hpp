@@ -25,9 +25,9 @@ struct DofMap {
     std::array<int, 3> index{};
     std::array<double, 3> coef{};
   };
-  std::vector<Terms> terms;      // 3 per mesh node
-  int num_dofs = 0;              // reduced dofs
-  int reference_dof = -1;        // first of the 6 reference-node dofs (ux uy uz rx ry rz), -1 if none
+  std::vector<Terms> terms;  // 3 per mesh node
+  int num_dofs = 0;          // reduced dofs
+  int reference_dof = -1;    // first of the 6 reference-node dofs (ux uy uz rx ry rz), -1 if none
 };
 
 // Clamped nodes lose their dofs; `coupled` nodes follow a reference node at `reference_point`

@@ -13,9 +13,9 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include "fea/elasticity_assembly.hpp"
 #include "kinestat/core/frame.hpp"
 #include "kinestat/core/input_checks.hpp"
-#include "fea/elasticity_assembly.hpp"
 #include "kinestat/fea/tet_element.hpp"
 #include "kinestat/solver/generalized_eigen.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
@@ -55,8 +55,8 @@ Vec6 symmetric_eigenvalues(const Mat6& A) {
 }
 
 // Von Mises stress at each element's centroid for the displacement field u.
-std::vector<double> centroid_von_mises(const TetMesh& mesh, const std::vector<Mat6>& D, const std::vector<int>& material,
-                                       const std::vector<Vec3>& u) {
+std::vector<double> centroid_von_mises(const TetMesh& mesh, const std::vector<Mat6>& D,
+                                       const std::vector<int>& material, const std::vector<Vec3>& u) {
   std::vector<double> vm(mesh.num_elements());
   const int npe = mesh.nodes_per_element;
   tbb::parallel_for(0, mesh.num_elements(), [&](int e) {
@@ -104,15 +104,17 @@ Status memory_refusal(const TetMesh& mesh, int dofs, const solver::Factorization
 Status check_modes_request(const Material& material, const LinkStiffnessOptions& options) {
   if (options.modes == 0) return Status::Ok();
   if (options.modes < 0 || options.modes > kMaxLinkModes)
-    return Status::Invalid(fmt::format("link modes: {} modes asked for; give a count from 1 to {}", options.modes,
-                                       kMaxLinkModes));
+    return Status::Invalid(
+        fmt::format("link modes: {} modes asked for; give a count from 1 to {}", options.modes, kMaxLinkModes));
   if (!(material.density > 0.0) || !std::isfinite(material.density))
-    return Status::Invalid(fmt::format("link modes: material '{}' has no density (density = {:g} kg/m^3), so the link "
-                                       "has no mass and no natural frequencies; give the material a density in kg/m^3",
-                                       material.id, material.density));
+    return Status::Invalid(
+        fmt::format("link modes: material '{}' has no density (density = {:g} kg/m^3), so the link "
+                    "has no mass and no natural frequencies; give the material a density in kg/m^3",
+                    material.id, material.density));
   if (options.cholesky.backend != solver::Backend::kCholmod)
-    return Status::Invalid("link modes: natural frequencies need the direct solver on one process (cholmod): the "
-                           "Lanczos iteration solves with K's factor; drop the PETSc solver for modes");
+    return Status::Invalid(
+        "link modes: natural frequencies need the direct solver on one process (cholmod): the "
+        "Lanczos iteration solves with K's factor; drop the PETSc solver for modes");
   return Status::Ok();
 }
 
@@ -140,10 +142,11 @@ Status solve_link_modes(const TetMesh& mesh, const DofMap& map, const solver::Sp
     const VecX Mq = M.selfadjointView<Eigen::Lower>() * q;
     m.residual = (Kq - m.omega * m.omega * Mq).norm() / Kq.norm();
     if (!(m.residual <= kLinkModeResidualLimit))
-      return Status::NotConverged(fmt::format("link modes: mode {} ({:.6g} Hz) has the residual ||K q - omega^2 M q|| / "
-                                              "||K q|| = {:.2e}, above {:g}; the eigensolver did not converge on this "
-                                              "mesh: ask for fewer modes or remesh",
-                                              k + 1, m.frequency, m.residual, kLinkModeResidualLimit));
+      return Status::NotConverged(
+          fmt::format("link modes: mode {} ({:.6g} Hz) has the residual ||K q - omega^2 M q|| / "
+                      "||K q|| = {:.2e}, above {:g}; the eigensolver did not converge on this "
+                      "mesh: ask for fewer modes or remesh",
+                      k + 1, m.frequency, m.residual, kLinkModeResidualLimit));
     std::vector<Vec3> u = expand(map, q);
     // The sign is arbitrary: the largest node displacement component is made positive.
     double largest = 0.0;
@@ -235,7 +238,8 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
       if (in_body[n]) reference_nodes.push_back(n);
     if (reference_nodes.empty())
       return Status::Invalid("link stiffness: no element lies entirely in the reference region (" +
-                             options.reference.describe() + "), so there is no pseudo-rigid body; give a box "
+                             options.reference.describe() +
+                             "), so there is no pseudo-rigid body; give a box "
                              "around the reference body");
   } else {
     reference_nodes = select_nodes(mesh, options.reference);
@@ -247,10 +251,10 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   std::set_intersection(clamped.begin(), clamped.end(), reference_nodes.begin(), reference_nodes.end(),
                         std::back_inserter(overlap));
   if (!overlap.empty())
-    return Status::Invalid(fmt::format("link stiffness: {} nodes are both clamped and on the reference (first at "
-                                       "({:g}, {:g}, {:g}) m); the clamp and reference regions must not touch",
-                                       overlap.size(), mesh.nodes[overlap[0]].x(), mesh.nodes[overlap[0]].y(),
-                                       mesh.nodes[overlap[0]].z()));
+    return Status::Invalid(fmt::format(
+        "link stiffness: {} nodes are both clamped and on the reference (first at "
+        "({:g}, {:g}, {:g}) m); the clamp and reference regions must not touch",
+        overlap.size(), mesh.nodes[overlap[0]].x(), mesh.nodes[overlap[0]].y(), mesh.nodes[overlap[0]].z()));
   r.num_clamped_nodes = static_cast<int>(clamped.size());
   r.num_reference_nodes = static_cast<int>(reference_nodes.size());
   Vec3 reference_point;
@@ -368,7 +372,8 @@ std::string link_stiffness_report(const LinkStiffness& r) {
                     reference_model_name(r.reference_model));
   os << fmt::format("  mesh: {} nodes, {} elements; {} clamped nodes, {} reference nodes", r.num_nodes, r.num_elements,
                     r.num_clamped_nodes, r.num_reference_nodes);
-  if (r.reference_model == ReferenceModel::kStiffBody) os << fmt::format(", {} stiff-body elements", r.num_stiff_elements);
+  if (r.reference_model == ReferenceModel::kStiffBody)
+    os << fmt::format(", {} stiff-body elements", r.num_stiff_elements);
   os << "\n";
   if (!r.backend.empty()) {  // empty for a result read back from the cache
     const solver::FactorizationReport& f = r.factorization;
@@ -379,10 +384,11 @@ std::string link_stiffness_report(const LinkStiffness& r) {
       for (int count : r.elements_per_rank) os << fmt::format(" {}", count);
       os << fmt::format(" (rank 0: {:.1f} %)\n", 100.0 * r.elements_per_rank[0] / std::max(1, r.num_elements));
     }
-    os << fmt::format("  time: assembly {:.3f} s, analysis {:.3f} s, factorization {:.3f} s ({:.3g} Gflop), "
-                      "six solves {:.3f} s; peak memory {:.0f} MB\n",
-                      r.assembly_seconds, f.analyze_seconds, f.factor_seconds, f.flops * 1e-9, r.solve_seconds,
-                      r.peak_memory_bytes / 1e6);
+    os << fmt::format(
+        "  time: assembly {:.3f} s, analysis {:.3f} s, factorization {:.3f} s ({:.3g} Gflop), "
+        "six solves {:.3f} s; peak memory {:.0f} MB\n",
+        r.assembly_seconds, f.analyze_seconds, f.factor_seconds, f.flops * 1e-9, r.solve_seconds,
+        r.peak_memory_bytes / 1e6);
     if (r.solve.relative_tolerance > 0.0) {
       os << fmt::format("  iterations (Fx Fy Fz Mx My Mz, relative tolerance {:g}):", r.solve.relative_tolerance);
       for (int it : r.solve.iterations) os << fmt::format(" {}", it);

@@ -1,9 +1,9 @@
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 
 #include <cmath>
-#include <optional>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -69,7 +69,8 @@ StatusOr<Region> parse_region(const std::string& text, double scale, const std::
   const auto colon = text.find(':');
   const std::string kind = text.substr(0, colon);
   if (colon == std::string::npos || (kind != "plane" && kind != "box"))
-    return Status::Invalid(what + ": give x=V, y=V, z=V, plane:PX,PY,PZ,NX,NY,NZ or box:X0,Y0,Z0,X1,Y1,Z1 (mesh units)");
+    return Status::Invalid(what +
+                           ": give x=V, y=V, z=V, plane:PX,PY,PZ,NX,NY,NZ or box:X0,Y0,Z0,X1,Y1,Z1 (mesh units)");
   auto v = parse_numbers(text.substr(colon + 1), 6, what);
   if (!v.ok()) return v.status();
   StatusOr<Vec3> a = lengths(*v, 0, scale, what);
@@ -93,9 +94,12 @@ StatusOr<Material> parse_material(const std::string& text, const std::string& wh
   if (text == "steel") return with_density(Material::from_E_nu("steel", 210e9, 0.3), kSteelDensity);
   if (text == "aluminium" || text == "aluminum")
     return with_density(Material::from_E_nu("aluminium", 70e9, 0.33), kAluminiumDensity);
-  const std::string unit = modulus_unit == units::kMPa ? "MPa" : modulus_unit == 1.0 ? "Pa" : fmt::format("x {:g} Pa", modulus_unit);
+  const std::string unit = modulus_unit == units::kMPa ? "MPa"
+                           : modulus_unit == 1.0       ? "Pa"
+                                                       : fmt::format("x {:g} Pa", modulus_unit);
   const std::string form = fmt::format(
-      "give steel, aluminium or E=VALUE,nu=V[,rho=KG_M3] (E > 0 in {}, -1 < nu < 0.5, density rho > 0 in kg/m^3)", unit);
+      "give steel, aluminium or E=VALUE,nu=V[,rho=KG_M3] (E > 0 in {}, -1 < nu < 0.5, density rho > 0 in kg/m^3)",
+      unit);
   std::optional<double> E, nu, rho;
   std::stringstream ss(text);
   std::string item;
@@ -130,8 +134,8 @@ StatusOr<std::string> surface_mesh_identity(const std::string& path, const Meshi
   if (!in) return Status::Invalid(path + ": cannot read the surface file");
   std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   // The same text as the cache keys written before this function existed, so old entries stay valid.
-  return bytes + fmt::format("|size {:.17g} unit {:.17g} quadratic {}", meshing.size, meshing.unit_scale,
-                             meshing.quadratic);
+  return bytes +
+         fmt::format("|size {:.17g} unit {:.17g} quadratic {}", meshing.size, meshing.unit_scale, meshing.quadratic);
 }
 
 }  // namespace kinestat::fea

@@ -29,8 +29,15 @@ StatusOr<SurfaceInfo> surface_from_rank0(const std::string& file) {
   StatusOr<SurfaceInfo> surface = root ? check_surface_file(file) : StatusOr<SurfaceInfo>(SurfaceInfo{});
   if (Status s = solver::agree_on_status(surface.status()); !s.ok()) return s;
   SurfaceInfo& info = *surface;
-  std::vector<double> values = {static_cast<double>(info.triangles), info.lo.x(), info.lo.y(), info.lo.z(),
-                                info.hi.x(), info.hi.y(), info.hi.z(), info.volume, info.area};
+  std::vector<double> values = {static_cast<double>(info.triangles),
+                                info.lo.x(),
+                                info.lo.y(),
+                                info.lo.z(),
+                                info.hi.x(),
+                                info.hi.y(),
+                                info.hi.z(),
+                                info.volume,
+                                info.area};
   if (Status s = solver::broadcast_from_root(values); !s.ok()) return s;
   info = {static_cast<int>(values[0]), Vec3(values[1], values[2], values[3]), Vec3(values[4], values[5], values[6]),
           values[7], values[8]};
@@ -81,9 +88,9 @@ StatusOr<LinkStiffnessRun> compute_link_stiffness(const LinkStiffnessRequest& re
   run.surface = *surface;
   run.mesh_size = request.mesh_size > 0.0 ? request.mesh_size : default_mesh_size(*surface, request.unit_scale);
   const MeshingOptions meshing = meshing_options(request, run.mesh_size);
-  const std::string header =
-      fmt::format("{}: {} triangles, meshed with size {:g} m; material {} (E = {:g} Pa, nu = {:g})\n", request.mesh_file,
-                  surface->triangles, run.mesh_size, request.material.id, request.material.E, request.material.nu());
+  const std::string header = fmt::format(
+      "{}: {} triangles, meshed with size {:g} m; material {} (E = {:g} Pa, nu = {:g})\n", request.mesh_file,
+      surface->triangles, run.mesh_size, request.material.id, request.material.E, request.material.nu());
 
   std::string key;
   if (!request.cache_dir.empty()) {

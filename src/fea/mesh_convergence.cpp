@@ -23,7 +23,9 @@ StatusOr<RichardsonEstimate> richardson_estimate(const std::vector<double>& h, c
   // Solve (h1^p - h2^p) / (h2^p - h3^p) = d12 / d23 for p by bisection on log(ratio), which
   // increases monotonically with p.
   const double target = std::log(d12 / d23);
-  auto g = [&](double p) { return std::log((std::pow(h1, p) - std::pow(h2, p)) / (std::pow(h2, p) - std::pow(h3, p))); };
+  auto g = [&](double p) {
+    return std::log((std::pow(h1, p) - std::pow(h2, p)) / (std::pow(h2, p) - std::pow(h3, p)));
+  };
   double lo = 1e-3, hi = 20.0;
   if (target <= g(lo) || target >= g(hi))
     return Status::NotConverged(fmt::format("Richardson estimate: no order in [{:g}, {:g}] fits", lo, hi));
@@ -48,9 +50,10 @@ StatusOr<ConvergenceStudy> mesh_convergence_study(const std::function<StatusOr<T
         !s.ok())
       return s;
     if (i > 0 && !(sizes[i] < sizes[i - 1]))
-      return Status::Invalid(fmt::format("sizes[{}] = {:g} m after {:g} m: give the mesh sizes in strictly decreasing "
-                                         "order, coarse to fine (e.g. 0.004, 0.002, 0.001)",
-                                         i, sizes[i], sizes[i - 1]));
+      return Status::Invalid(
+          fmt::format("sizes[{}] = {:g} m after {:g} m: give the mesh sizes in strictly decreasing "
+                      "order, coarse to fine (e.g. 0.004, 0.002, 0.001)",
+                      i, sizes[i], sizes[i - 1]));
   }
   ConvergenceStudy study;
   study.sizes = sizes;

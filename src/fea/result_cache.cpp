@@ -4,8 +4,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -13,8 +13,8 @@
 #include <limits>
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <fmt/format.h>
+#include <Eigen/Cholesky>
 
 #include "fea/sha256.hpp"
 #include "kinestat/core/atomic_file.hpp"
@@ -35,16 +35,18 @@ constexpr std::size_t kMaxEntryBytes = 64 * 1024;
 constexpr double kMaxSymmetryError = 1e-4;
 
 std::string region_text(const Region& r) {
-  return fmt::format("{} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} "
-                     "{:.17g} {:.17g}",
-                     static_cast<int>(r.kind), r.point.x(), r.point.y(), r.point.z(), r.normal.x(), r.normal.y(),
-                     r.normal.z(), r.lo.x(), r.lo.y(), r.lo.z(), r.hi.x(), r.hi.y(), r.hi.z(), r.tolerance);
+  return fmt::format(
+      "{} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} {:.17g} "
+      "{:.17g} {:.17g}",
+      static_cast<int>(r.kind), r.point.x(), r.point.y(), r.point.z(), r.normal.x(), r.normal.y(), r.normal.z(),
+      r.lo.x(), r.lo.y(), r.lo.z(), r.hi.x(), r.hi.y(), r.hi.z(), r.tolerance);
 }
 
 Status bad_key(const std::string& key) {
-  return Status::Invalid(fmt::format("link stiffness cache key '{}' is not {} lowercase hex digits; use "
-                                     "link_stiffness_cache_key",
-                                     key, kKeyDigits));
+  return Status::Invalid(
+      fmt::format("link stiffness cache key '{}' is not {} lowercase hex digits; use "
+                  "link_stiffness_cache_key",
+                  key, kKeyDigits));
 }
 
 // The bytes of the regular file `path`: nullopt and `why` when absent (why empty) or not usable.
@@ -199,8 +201,7 @@ std::string link_stiffness_cache_path(const std::string& dir, const std::string&
 }
 
 bool is_link_stiffness_cache_key(std::string_view key) {
-  return key.size() == kKeyDigits &&
-         key.find_first_not_of("0123456789abcdef") == std::string_view::npos;
+  return key.size() == kKeyDigits && key.find_first_not_of("0123456789abcdef") == std::string_view::npos;
 }
 
 std::string link_stiffness_cache_key(std::string_view mesh_identity, const Material& m, const LinkStiffnessOptions& o) {
@@ -237,7 +238,8 @@ Status store_cached_link_stiffness(const std::string& dir, const std::string& ke
   if (!is_link_stiffness_cache_key(key)) return bad_key(key);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) return Status::Invalid(fmt::format("{}: cannot create the link stiffness cache folder: {}", dir, ec.message()));
+  if (ec)
+    return Status::Invalid(fmt::format("{}: cannot create the link stiffness cache folder: {}", dir, ec.message()));
   const std::string path = link_stiffness_cache_path(dir, key);
   // Not an entry (a FIFO, a link) but in its place: removed, since writing into it could block or
   // go elsewhere, while write_file_atomically would write into it rather than replace it.

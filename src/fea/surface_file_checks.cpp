@@ -59,9 +59,10 @@ Status check_off(const std::string& path, std::uintmax_t bytes) {
   char c;
   while (in.get(c) && std::isalnum(static_cast<unsigned char>(c)) && keyword.size() < 40) keyword += c;
   if (keyword != "OFF")
-    return bad(fmt::format("the OFF header is '{}'; only plain ASCII OFF is read (no binary, colour, normal or texture "
-                           "variant): export a plain OFF, STL, OBJ or PLY",
-                           keyword));
+    return bad(
+        fmt::format("the OFF header is '{}'; only plain ASCII OFF is read (no binary, colour, normal or texture "
+                    "variant): export a plain OFF, STL, OBJ or PLY",
+                    keyword));
   long long nv = -1, nf = -1, ne = -1;
   skip_comments(in);
   if (!(in >> nv >> nf >> ne) || nv < 0 || nf < 0 || ne < 0)
@@ -69,9 +70,10 @@ Status check_off(const std::string& path, std::uintmax_t bytes) {
   // Shortest records: "0 0 0\n" and "3 0 1 2\n".
   const double needed = 6.0 * static_cast<double>(nv) + 8.0 * static_cast<double>(nf);
   if (needed > static_cast<double>(bytes) + 8.0)
-    return bad(fmt::format("the OFF header announces {} vertices and {} faces, more than the file's {} bytes can hold; "
-                           "the file is truncated or its header is wrong",
-                           nv, nf, bytes));
+    return bad(
+        fmt::format("the OFF header announces {} vertices and {} faces, more than the file's {} bytes can hold; "
+                    "the file is truncated or its header is wrong",
+                    nv, nf, bytes));
   std::string line;
   std::vector<double> v;
   for (long long i = 0; i < nv; ++i) {
@@ -88,7 +90,8 @@ Status check_off(const std::string& path, std::uintmax_t bytes) {
       return bad(fmt::format("face {}: '{}' does not list as many vertex indices as its first number says", f, line));
     for (std::size_t j = 1; j <= static_cast<std::size_t>(k); ++j)
       if (!(v[j] >= 0 && v[j] < static_cast<double>(nv) && v[j] == std::floor(v[j])))
-        return bad(fmt::format("face {}: vertex index {} is not one of the {} vertices (0 to {})", f, v[j], nv, nv - 1));
+        return bad(
+            fmt::format("face {}: vertex index {} is not one of the {} vertices (0 to {})", f, v[j], nv, nv - 1));
   }
   return Status::Ok();
 }
@@ -109,30 +112,33 @@ Status check_ply(const std::string& path, std::uintmax_t bytes) {
       element_seen = true;
       element = name;
       // A count is digits only: CGAL reads "90000001eader" as 90000001 (found by fuzz_surface_mesh).
-      const bool digits = !count_text.empty() && count_text.size() <= 18 &&
-                          std::all_of(count_text.begin(), count_text.end(), [](char c) { return c >= '0' && c <= '9'; });
+      const bool digits =
+          !count_text.empty() && count_text.size() <= 18 &&
+          std::all_of(count_text.begin(), count_text.end(), [](char c) { return c >= '0' && c <= '9'; });
       if (!digits)
-        return Status::Invalid(fmt::format("{}: the PLY element '{}' has the count '{}'; write a whole number", path,
-                                           name, count_text));
+        return Status::Invalid(
+            fmt::format("{}: the PLY element '{}' has the count '{}'; write a whole number", path, name, count_text));
       const double count = std::stod(count_text);
       // Every element takes at least one byte, in any format.
       if (!(count >= 0 && count <= static_cast<double>(bytes)))
-        return Status::Invalid(fmt::format("{}: the PLY header announces {} '{}' elements, more than the file's {} "
-                                           "bytes can hold; the file is truncated or its header is wrong",
-                                           path, count, name, bytes));
+        return Status::Invalid(
+            fmt::format("{}: the PLY header announces {} '{}' elements, more than the file's {} "
+                        "bytes can hold; the file is truncated or its header is wrong",
+                        path, count, name, bytes));
     } else if (first == "property") {
       // CGAL attaches a property to the last element read: with none, it reads past an empty vector.
       if (!element_seen)
-        return Status::Invalid(fmt::format("{}: a PLY property is declared before any element; check the header",
-                                           path));
+        return Status::Invalid(
+            fmt::format("{}: a PLY property is declared before any element; check the header", path));
       std::string kind, length_type;
       words >> kind >> length_type;
       static const char* kNarrow[] = {"char", "uchar", "int8", "uint8", "short", "ushort", "int16", "uint16"};
-      if (kind == "list" && std::none_of(std::begin(kNarrow), std::end(kNarrow),
-                                         [&](const char* t) { return length_type == t; }))
-        return Status::Invalid(fmt::format("{}: a PLY list's length is of type '{}'; write uchar (as exporters do): "
-                                           "wider lengths are not read",
-                                           path, length_type));
+      if (kind == "list" &&
+          std::none_of(std::begin(kNarrow), std::end(kNarrow), [&](const char* t) { return length_type == t; }))
+        return Status::Invalid(
+            fmt::format("{}: a PLY list's length is of type '{}'; write uchar (as exporters do): "
+                        "wider lengths are not read",
+                        path, length_type));
       // CGAL reads a vertex's coordinates and normals as float or double and dereferences anything
       // else as a float (found by fuzz_surface_mesh): refuse other types here.
       static const char* kCoordinates[] = {"x", "y", "z", "nx", "ny", "nz"};
@@ -141,9 +147,10 @@ Status check_ply(const std::string& path, std::uintmax_t bytes) {
       if (element == "vertex" && kind != "list" &&
           std::any_of(std::begin(kCoordinates), std::end(kCoordinates), [&](const char* c) { return name == c; }) &&
           std::none_of(std::begin(kReal), std::end(kReal), [&](const char* t) { return kind == t; }))
-        return Status::Invalid(fmt::format("{}: the PLY vertex property '{}' is of type '{}'; coordinates and "
-                                           "normals must be float or double",
-                                           path, name, kind));
+        return Status::Invalid(
+            fmt::format("{}: the PLY vertex property '{}' is of type '{}'; coordinates and "
+                        "normals must be float or double",
+                        path, name, kind));
     }
   }
   return Status::Ok();  // no end_header: CGAL's reader refuses the file
@@ -157,9 +164,10 @@ Status check_binary_stl(const std::string& path, std::uintmax_t bytes) {
   std::uint32_t count = 0;
   for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(head[80 + i]);  // little endian
   if (84.0 + 50.0 * count > static_cast<double>(bytes))
-    return Status::Invalid(fmt::format("{}: the binary STL header announces {} triangles, more than the file's {} "
-                                       "bytes can hold; the file is truncated or not an STL",
-                                       path, count, bytes));
+    return Status::Invalid(
+        fmt::format("{}: the binary STL header announces {} triangles, more than the file's {} "
+                    "bytes can hold; the file is truncated or not an STL",
+                    path, count, bytes));
   return Status::Ok();
 }
 

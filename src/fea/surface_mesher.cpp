@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
@@ -19,12 +20,11 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/make_mesh_3.h>
 #include <fmt/format.h>
 
-#include "kinestat/core/input_checks.hpp"
 #include "fea/surface_file_checks.hpp"
+#include "kinestat/core/input_checks.hpp"
 
 namespace kinestat::fea {
 
@@ -58,8 +58,8 @@ Status check_edges(const std::string& path, const std::vector<Point>& points,
       return Status::Invalid(path + ": the surface is not closed: " + where +
                              " bounds only one triangle (a hole); close the surface in the CAD export");
     if (total > 2)
-      return Status::Invalid(fmt::format("{}: the surface is not manifold: {} is shared by {} triangles", path, where,
-                                         total));
+      return Status::Invalid(
+          fmt::format("{}: the surface is not manifold: {} is shared by {} triangles", path, where, total));
     if (count[0] != 1)
       return Status::Invalid(path + ": inconsistent orientation: the two triangles at " + where +
                              " run the same way round; orient all faces outward");
@@ -92,14 +92,15 @@ StatusOr<Surface> read_checked_surface(const std::string& path) {
       return Status::Invalid(fmt::format("{}: a face has {} vertices; triangulate the surface", path, p.size()));
     for (std::size_t v : p)
       if (v >= points.size())
-        return Status::Invalid(fmt::format("{}: a face refers to vertex {} of {}; repair the file", path, v,
-                                           points.size()));
+        return Status::Invalid(
+            fmt::format("{}: a face refers to vertex {} of {}; repair the file", path, v, points.size()));
   }
   for (const Point& p : points)
     if (!(std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate && std::abs(p.z()) <= kMaxCoordinate))
-      return Status::Invalid(fmt::format("{}: the vertex {} is not finite or beyond {:g} (mm or m); check the file's "
-                                         "unit and content",
-                                         path, point_text(p), kMaxCoordinate));
+      return Status::Invalid(
+          fmt::format("{}: the vertex {} is not finite or beyond {:g} (mm or m); check the file's "
+                      "unit and content",
+                      path, point_text(p), kMaxCoordinate));
   // STL repeats every vertex per triangle: merge duplicates first (this also drops degenerate faces).
   PMP::repair_polygon_soup(points, polygons);
   if (Status s = check_edges(path, points, polygons); !s.ok()) return s;
@@ -112,10 +113,11 @@ StatusOr<Surface> read_checked_surface(const std::string& path) {
   const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
   const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
   if (!(volume > 0.0 && 3.0 * volume >= kMinThicknessRatio * diagonal * area))
-    return Status::Invalid(fmt::format("{}: the solid is {:.3g} thick on average (3 volume / area) for a size of {:.3g} "
-                                       "(file units): a needle or a sheet that tetrahedra cannot resolve; model it as "
-                                       "a beam or thicken it",
-                                       path, 3.0 * volume / area, diagonal));
+    return Status::Invalid(
+        fmt::format("{}: the solid is {:.3g} thick on average (3 volume / area) for a size of {:.3g} "
+                    "(file units): a needle or a sheet that tetrahedra cannot resolve; model it as "
+                    "a beam or thicken it",
+                    path, 3.0 * volume / area, diagonal));
   return surface;
 }
 
@@ -150,11 +152,12 @@ double estimate_tetrahedra(const SurfaceInfo& surface, double unit_scale, double
 }
 
 StatusOr<TetMesh> mesh_surface_file(const std::string& path, const MeshingOptions& o) {
-  if (!(o.unit_scale > 0.0) || !(o.size > 0.0) || o.facet_distance < 0.0 || !(o.facet_angle > 0.0 && o.facet_angle <= 30.0) ||
-      !(o.cell_radius_edge_ratio >= 2.0))
-    return Status::Invalid(fmt::format("meshing options: need unit scale > 0, size > 0 m, facet distance >= 0 m, "
-                                       "0 < facet angle <= 30 deg, radius-edge ratio >= 2 (got {:g}, {:g}, {:g}, {:g}, {:g})",
-                                       o.unit_scale, o.size, o.facet_distance, o.facet_angle, o.cell_radius_edge_ratio));
+  if (!(o.unit_scale > 0.0) || !(o.size > 0.0) || o.facet_distance < 0.0 ||
+      !(o.facet_angle > 0.0 && o.facet_angle <= 30.0) || !(o.cell_radius_edge_ratio >= 2.0))
+    return Status::Invalid(
+        fmt::format("meshing options: need unit scale > 0, size > 0 m, facet distance >= 0 m, "
+                    "0 < facet angle <= 30 deg, radius-edge ratio >= 2 (got {:g}, {:g}, {:g}, {:g}, {:g})",
+                    o.unit_scale, o.size, o.facet_distance, o.facet_angle, o.cell_radius_edge_ratio));
   if (Status st = check_quantity(o.size, Quantity::kLength, path + ": mesh size", {}, Sign::kPositive); !st.ok())
     return st;
   StatusOr<Surface> surface = read_checked_surface(path);
@@ -183,8 +186,9 @@ StatusOr<TetMesh> mesh_surface_file(const std::string& path, const MeshingOption
   Criteria criteria(params::edge_size = o.size, params::facet_angle = o.facet_angle, params::facet_size = o.size,
                     params::facet_distance = distance, params::cell_radius_edge_ratio = o.cell_radius_edge_ratio,
                     params::cell_size = o.size);
-  const Complex c3t3 = o.optimize ? CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::exude())
-                                  : CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::no_exude());
+  const Complex c3t3 = o.optimize
+                           ? CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::exude())
+                           : CGAL::make_mesh_3<Complex>(domain, criteria, params::no_perturb(), params::no_exude());
 
   TetMesh mesh;
   std::unordered_map<Complex::Vertex_handle, int> index;
@@ -211,8 +215,8 @@ StatusOr<TetMesh> mesh_surface_file(const std::string& path, const MeshingOption
     if (volume < 0.0) std::swap(mesh.connectivity[4 * e + 2], mesh.connectivity[4 * e + 3]);
   }
   if (mesh.num_elements() == 0)
-    return Status::Invalid(fmt::format("{}: meshing produced no tetrahedra; is the size {:g} m larger than the part?",
-                                       path, o.size));
+    return Status::Invalid(
+        fmt::format("{}: meshing produced no tetrahedra; is the size {:g} m larger than the part?", path, o.size));
   return o.quadratic ? to_quadratic(mesh) : mesh;
 }
 

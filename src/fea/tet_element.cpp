@@ -126,8 +126,10 @@ std::vector<std::pair<Vec3, double>> tet_quadrature_rule(int degree) {
 template <int N>
 bool tet_mass(const Vec3* x, double density, TetMatrix<N>* M) {
   static const auto rule = [] {
-    if constexpr (N == 4) return degree2_rule();
-    else return degree5_rule();
+    if constexpr (N == 4)
+      return degree2_rule();
+    else
+      return degree5_rule();
   }();
   // The scalar mass rho N N^T, then one copy per direction: M(3a+d, 3b+d) = m(a, b).
   Eigen::Matrix<double, N, N> m = Eigen::Matrix<double, N, N>::Zero();

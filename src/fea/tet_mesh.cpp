@@ -24,8 +24,8 @@ Status check_box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, do
   if (Status s = check_entries(hi, Quantity::kLength, "hi"); !s.ok()) return s;
   for (int a = 0; a < 3; ++a)
     if (!(lo(a) < hi(a)))
-      return Status::Invalid(fmt::format("lo[{0}] = {1:g} m, hi[{0}] = {2:g} m: the box needs lo < hi on every axis",
-                                         a, lo(a), hi(a)));
+      return Status::Invalid(
+          fmt::format("lo[{0}] = {1:g} m, hi[{0}] = {2:g} m: the box needs lo < hi on every axis", a, lo(a), hi(a)));
   const std::array<std::pair<const char*, int>, 3> cells = {{{"nx", nx}, {"ny", ny}, {"nz", nz}}};
   for (const auto& [name, n] : cells)
     if (n < 1) return Status::Invalid(fmt::format("{} = {}: give at least 1 cell along each axis", name, n));
@@ -91,8 +91,9 @@ Status validate(const TetMesh& mesh) {
   if (mesh.nodes_per_element != 4 && mesh.nodes_per_element != 10)
     return Status::Invalid(fmt::format("tetrahedral mesh: {} nodes per element; use 4 or 10", mesh.nodes_per_element));
   if (mesh.connectivity.empty() || mesh.connectivity.size() % mesh.nodes_per_element != 0)
-    return Status::Invalid("tetrahedral mesh: no elements, or a connectivity length that is not a multiple of the "
-                           "nodes per element");
+    return Status::Invalid(
+        "tetrahedral mesh: no elements, or a connectivity length that is not a multiple of the "
+        "nodes per element");
   for (int e = 0; e < mesh.num_elements(); ++e) {
     const int* v = mesh.element(e);
     for (int i = 0; i < mesh.nodes_per_element; ++i)
@@ -100,9 +101,10 @@ Status validate(const TetMesh& mesh) {
         return Status::Invalid(fmt::format("tetrahedral mesh: element {} refers to node {}, but there are {} nodes", e,
                                            v[i], mesh.num_nodes()));
     if (!(element_volume(mesh, e) > 0.0))
-      return Status::Invalid(fmt::format("tetrahedral mesh: element {} has volume {:.3g} m^3; its vertices must form "
-                                         "a right-handed tetrahedron of positive volume",
-                                         e, element_volume(mesh, e)));
+      return Status::Invalid(
+          fmt::format("tetrahedral mesh: element {} has volume {:.3g} m^3; its vertices must form "
+                      "a right-handed tetrahedron of positive volume",
+                      e, element_volume(mesh, e)));
   }
   return Status::Ok();
 }

@@ -8,12 +8,12 @@
 
 #include <fmt/format.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkCellData.h>
 #include <vtkPoints.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
@@ -77,9 +77,10 @@ void add_node_vectors(vtkUnstructuredGrid& grid, const std::string& name, const 
 Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const fea::LinkStiffness& result, int k) {
   if (k < 0 || k > 5 || result.displacement[k].size() != static_cast<size_t>(mesh.num_nodes()) ||
       result.von_mises[k].size() != static_cast<size_t>(mesh.num_elements()))
-    return Status::Invalid(fmt::format("{}: no displacement field of load case {} for this mesh (compute the link "
-                                       "stiffness with keep_fields on the same mesh)",
-                                       path, k));
+    return Status::Invalid(
+        fmt::format("{}: no displacement field of load case {} for this mesh (compute the link "
+                    "stiffness with keep_fields on the same mesh)",
+                    path, k));
   auto grid = link_grid(mesh);
   const bool force = k < 3;
   add_node_vectors(*grid, "displacement", result.displacement[k], "");
@@ -91,11 +92,11 @@ Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const f
   // Units and load case travel with the file (ParaView shows field data in its information panel).
   vtkNew<vtkStringArray> note;
   note->SetName("load_case");
-  note->InsertNextValue(fmt::format("unit {} = 1 {} on the reference point ({:g}, {:g}, {:g}) m; coordinates m, "
-                                    "displacement m per {}, von_mises Pa per {}",
-                                    link_load_case_name(k), force ? "N" : "N m", result.cartesian.point.x(),
-                                    result.cartesian.point.y(), result.cartesian.point.z(), force ? "N" : "N m",
-                                    force ? "N" : "N m"));
+  note->InsertNextValue(
+      fmt::format("unit {} = 1 {} on the reference point ({:g}, {:g}, {:g}) m; coordinates m, "
+                  "displacement m per {}, von_mises Pa per {}",
+                  link_load_case_name(k), force ? "N" : "N m", result.cartesian.point.x(), result.cartesian.point.y(),
+                  result.cartesian.point.z(), force ? "N" : "N m", force ? "N" : "N m"));
   grid->GetFieldData()->AddArray(note);
   const std::string per = force ? "N" : "N m";
   add_units(*grid, {{"coordinates", "m"}, {"displacement", "m per " + per}, {"von_mises", "Pa per " + per}});
@@ -124,22 +125,26 @@ Status write_link_vtu_files(const std::string& dir, const std::string& prefix, c
   return Status::Ok();
 }
 
-std::string link_mode_name(const fea::LinkMode& m, int k) { return fmt::format("mode {}: {:.6g} Hz", k + 1, m.frequency); }
+std::string link_mode_name(const fea::LinkMode& m, int k) {
+  return fmt::format("mode {}: {:.6g} Hz", k + 1, m.frequency);
+}
 
 Status write_link_mode_vtu(const std::string& path, const fea::TetMesh& mesh, const fea::LinkStiffness& result, int k) {
   if (k < 0 || k >= static_cast<int>(result.modes.size()) ||
       result.modes[k].shape.size() != static_cast<size_t>(mesh.num_nodes()))
-    return Status::Invalid(fmt::format("{}: no shape of mode {} for this mesh (compute the link modes with keep_fields "
-                                       "on the same mesh)",
-                                       path, k + 1));
+    return Status::Invalid(
+        fmt::format("{}: no shape of mode {} for this mesh (compute the link modes with keep_fields "
+                    "on the same mesh)",
+                    path, k + 1));
   const fea::LinkMode& m = result.modes[k];
   auto grid = link_grid(mesh);
   add_node_vectors(*grid, "mode_shape", m.shape, link_mode_name(m, k));
   vtkNew<vtkStringArray> note;
   note->SetName("mode");
-  note->InsertNextValue(fmt::format("mode {} of the link clamped at its origin, reference body massless: {:.9g} Hz "
-                                    "({:.9g} rad/s); mode_shape mass-normalized (q' M q = 1), m/sqrt(kg)",
-                                    k + 1, m.frequency, m.omega));
+  note->InsertNextValue(
+      fmt::format("mode {} of the link clamped at its origin, reference body massless: {:.9g} Hz "
+                  "({:.9g} rad/s); mode_shape mass-normalized (q' M q = 1), m/sqrt(kg)",
+                  k + 1, m.frequency, m.omega));
   grid->GetFieldData()->AddArray(note);
   vtkNew<vtkDoubleArray> frequency;
   frequency->SetName("frequency_Hz");

@@ -15,21 +15,35 @@ UnitOfInput FileUnits::of(Quantity q) const {
   const std::string& F = force_name;
   const bool n_mm = L == "mm" && F == "N";  // mm-N-s keeps its customary names (MPa, t)
   switch (q) {
-    case Quantity::kLength: return {length, L};
-    case Quantity::kForce: return {force, F};
-    case Quantity::kMoment: return {force * length, F + " " + L};
-    case Quantity::kModulus: return {force / area, n_mm ? "MPa" : F + "/" + L + "^2"};
-    case Quantity::kArea: return {area, L + "^2"};
-    case Quantity::kInertia: return {area * area, L + "^4"};
-    case Quantity::kTranslationalStiffness: return {force / length, F + "/" + L};
-    case Quantity::kRotationalStiffness: return {force * length, F + " " + L + "/rad"};
+    case Quantity::kLength:
+      return {length, L};
+    case Quantity::kForce:
+      return {force, F};
+    case Quantity::kMoment:
+      return {force * length, F + " " + L};
+    case Quantity::kModulus:
+      return {force / area, n_mm ? "MPa" : F + "/" + L + "^2"};
+    case Quantity::kArea:
+      return {area, L + "^2"};
+    case Quantity::kInertia:
+      return {area * area, L + "^4"};
+    case Quantity::kTranslationalStiffness:
+      return {force / length, F + "/" + L};
+    case Quantity::kRotationalStiffness:
+      return {force * length, F + " " + L + "/rad"};
     // Mass is force / acceleration: N s^2/mm = 1000 kg = 1 t, so a density is in t/mm^3.
-    case Quantity::kDensity: return {force / (area * area), n_mm ? "t/mm^3" : F + " s^2/" + L + "^4"};
-    case Quantity::kAcceleration: return {length, L + "/s^2"};
-    case Quantity::kForcePerLength: return {force / length, F + "/" + L};
-    case Quantity::kMass: return {force / length, n_mm ? "t" : F + " s^2/" + L};
-    case Quantity::kMassInertia: return {force * length, n_mm ? "t mm^2" : F + " s^2 " + L};
-    default: return {};
+    case Quantity::kDensity:
+      return {force / (area * area), n_mm ? "t/mm^3" : F + " s^2/" + L + "^4"};
+    case Quantity::kAcceleration:
+      return {length, L + "/s^2"};
+    case Quantity::kForcePerLength:
+      return {force / length, F + "/" + L};
+    case Quantity::kMass:
+      return {force / length, n_mm ? "t" : F + " s^2/" + L};
+    case Quantity::kMassInertia:
+      return {force * length, n_mm ? "t mm^2" : F + " s^2 " + L};
+    default:
+      return {};
   }
 }
 

@@ -13,9 +13,9 @@
 #include <tuple>
 #include <utility>
 
-#include "kinestat/core/units.hpp"
 #include "io/roll_orientation.hpp"
 #include "io/yaml_fields.hpp"
+#include "kinestat/core/units.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -36,8 +36,8 @@ struct Line {
 
 // What a count introduced, for the messages of the records it counts.
 struct Block {
-  std::string what;  // "nodes"
-  int line = 0;      // where its count is
+  std::string what;    // "nodes"
+  int line = 0;        // where its count is
   std::string hint{};  // instead of "check the number of WHAT at line LINE"
 };
 
@@ -119,10 +119,10 @@ class Reader {
   // check when it holds another number (a count that does not match its records shows this way).
   const Line& next(const std::string& item, std::size_t n, const std::string& fields, const Block& block) {
     const std::string hint = !block.hint.empty() ? "; " + block.hint
-                             : block.line > 0 ? fmt::format("; check the number of {} at line {}", block.what, block.line)
-                                              : "";
-    if (pos_ >= lines_.size())
-      fail(last_line_, item, fmt::format("the file ends here, before {}{}", fields, hint));
+                             : block.line > 0
+                                 ? fmt::format("; check the number of {} at line {}", block.what, block.line)
+                                 : "";
+    if (pos_ >= lines_.size()) fail(last_line_, item, fmt::format("the file ends here, before {}{}", fields, hint));
     const Line& l = lines_[pos_++];
     if (l.tokens.size() != n)
       fail(l.number, item,
@@ -172,8 +172,8 @@ class Reader {
     const int i = integer(t, line, item);
     if (i < 1 || i > n)
       fail(line, item,
-           fmt::format("{} {} does not exist: the file has {} {}s, numbered 1 to {}; refer to one of them", kind, i,
-                       n, kind, n));
+           fmt::format("{} {} does not exist: the file has {} {}s, numbered 1 to {}; refer to one of them", kind, i, n,
+                       kind, n));
     return i;
   }
 
@@ -195,8 +195,9 @@ class Reader {
       const int id = index(l.tokens[0], l.number, "node record", n, "node");
       const std::string item = fmt::format("node {}", id);
       if (const auto it = records.find(id); it != records.end())
-        fail(l.number, item, fmt::format("node {} is defined twice (also at line {}); number the nodes 1 to {}", id,
-                                         it->second.line, n));
+        fail(l.number, item,
+             fmt::format("node {} is defined twice (also at line {}); number the nodes 1 to {}", id, it->second.line,
+                         n));
       NodeRecord r{Vec3::Zero(), l.number};
       for (int c = 0; c < 3; ++c)
         r.position[c] = value(l.tokens[1 + c], l.number, fmt::format("{} {}", item, "xyz"[c]), Quantity::kLength);
@@ -222,8 +223,8 @@ class Reader {
       const int node = index(l.tokens[0], l.number, "reaction record", nodes_, "node");
       const std::string item = fmt::format("reactions of node {}", node);
       if (const auto it = seen.find(node); it != seen.end())
-        fail(l.number, item, fmt::format("node {} is listed twice (also at line {}); give one line per node", node,
-                                         it->second));
+        fail(l.number, item,
+             fmt::format("node {} is listed twice (also at line {}); give one line per node", node, it->second));
       seen[node] = l.number;
       msa::DofMask fixed{};
       bool any = false;
@@ -240,7 +241,8 @@ class Reader {
 
   void read_elements() {
     const auto [n, count_line] = count("number of frame elements", count_block_);
-    if (n < 1) fail(count_line, "number of frame elements", "a frame needs elements; write their number and one line each");
+    if (n < 1)
+      fail(count_line, "number of frame elements", "a frame needs elements; write their number and one line each");
     const Block block{"frame elements", count_line};
     for (int k = 0; k < n; ++k) {
       const Line& l = next("frame element record", 13, "e n1 n2 Ax Asy Asz Jxx Iyy Izz E G roll density", block);
@@ -267,7 +269,8 @@ class Reader {
       e.G = v(10, "G", Quantity::kModulus, Sign::kPositive);
       e.roll = value(l.tokens[11], l.number, item + " roll", Quantity::kAngle, Sign::kAny, UnitOfInput{kDeg, "deg"});
       e.density = v(12, "density", Quantity::kDensity, Sign::kNonNegative);
-      const Vec3 d = s_.nodes()[static_cast<std::size_t>(e.n2 - 1)].position - s_.nodes()[static_cast<std::size_t>(e.n1 - 1)].position;
+      const Vec3 d = s_.nodes()[static_cast<std::size_t>(e.n2 - 1)].position -
+                     s_.nodes()[static_cast<std::size_t>(e.n1 - 1)].position;
       if (!(d.norm() > 1e-9 * s_.length_scale()))
         fail(l.number, item,
              fmt::format("its nodes {} and {} are at the same place (zero length); connect two distinct nodes", e.n1,
@@ -307,8 +310,8 @@ class Reader {
       // The shear areas count only with the shear flag, as in Frame3DD. The polar moment of the twist
       // (its rotary mass and K_G's Wagner term) is J: Frame3DD's mass and geometric stiffness matrices
       // take Jxx there (docs/structure-format.md), where kinestat's default is Iy + Iz.
-      const int sec = s_.add_section(
-          Section{name, e.A, e.Iy, e.Iz, e.J, shear_ ? e.Asy : 0.0, shear_ ? e.Asz : 0.0, e.J});
+      const int sec =
+          s_.add_section(Section{name, e.A, e.Iy, e.Iz, e.J, shear_ ? e.Asy : 0.0, shear_ ? e.Asz : 0.0, e.J});
       msa::Beam b;
       b.id = name;
       b.node1 = e.n1 - 1;
@@ -406,10 +409,11 @@ class Reader {
                        analysis_.condensation));
     if (analysis_.condensation > 0) {
       if (notes)
-        notes->push_back(fmt::format("{}:{}: matrix condensation method {} asked for: kinestat computes no condensed "
-                                     "model (the modes are those of the full model); the condensation data after this "
-                                     "line is not read",
-                                     file_, c.number, analysis_.condensation));
+        notes->push_back(
+            fmt::format("{}:{}: matrix condensation method {} asked for: kinestat computes no condensed "
+                        "model (the modes are those of the full model); the condensation data after this "
+                        "line is not read",
+                        file_, c.number, analysis_.condensation));
       pos_ = lines_.size();
     }
   }
@@ -440,8 +444,8 @@ class Reader {
     const Line& g = next(cs + " gravity", 3, "gX gY gZ, the gravitational acceleration", count_block_);
     lc.source = source(g.number);
     for (int c = 0; c < 3; ++c)
-      lc.gravity[c] = value(g.tokens[static_cast<std::size_t>(c)], g.number,
-                            fmt::format("{} g{}", cs, "XYZ"[c]), Quantity::kAcceleration);
+      lc.gravity[c] = value(g.tokens[static_cast<std::size_t>(c)], g.number, fmt::format("{} g{}", cs, "XYZ"[c]),
+                            Quantity::kAcceleration);
 
     // Loaded nodes: n Fx Fy Fz Mxx Myy Mzz, global axes.
     auto [n, line] = count(cs + ": number of loaded nodes", {});
@@ -452,8 +456,10 @@ class Reader {
       const int node = index(l.tokens[0], l.number, cs + " nodal load", nodes_, "node");
       const std::string item = fmt::format("{}: load on node {}", cs, node);
       if (const auto it = seen.find(node); it != seen.end())
-        fail(l.number, item, fmt::format("node {} is loaded twice in this case (also at line {}); give one line per "
-                                         "node with the sum", node, it->second));
+        fail(l.number, item,
+             fmt::format("node {} is loaded twice in this case (also at line {}); give one line per "
+                         "node with the sum",
+                         node, it->second));
       seen[node] = l.number;
       msa::NodalLoad load;
       load.node = node - 1;
@@ -576,8 +582,10 @@ class Reader {
       const int node = index(l.tokens[0], l.number, cs + " prescribed displacement", nodes_, "node");
       const std::string item = fmt::format("{}: prescribed displacement of node {}", cs, node);
       if (const auto it = seen.find(node); it != seen.end())
-        fail(l.number, item, fmt::format("node {} is listed twice in this case (also at line {}); give one line per "
-                                         "node", node, it->second));
+        fail(l.number, item,
+             fmt::format("node {} is listed twice in this case (also at line {}); give one line per "
+                         "node",
+                         node, it->second));
       seen[node] = l.number;
       static constexpr std::array<const char*, 6> kKeys = {"Dx", "Dy", "Dz", "Dxx", "Dyy", "Dzz"};
       for (int d = 0; d < 6; ++d) {
@@ -606,7 +614,7 @@ class Reader {
   int last_line_ = 0;
   Block count_block_{};  // the last block read: a count line after it may be one of its records
   int nodes_ = 0;
-  std::map<int, msa::DofMask> fixed_;     // node index -> fixed dofs
+  std::map<int, msa::DofMask> fixed_;      // node index -> fixed dofs
   std::map<int, ElementRecord> elements_;  // element number -> record
   std::map<int, double> lengths_;          // element number -> length (m)
   bool shear_ = false;
@@ -640,8 +648,8 @@ bool is_frame3dd_file(const std::string& path) {
   return ext == ".3dd";
 }
 
-StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units,
-                                       std::vector<std::string>* notes, Frame3ddAnalysis* analysis) {
+StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units, std::vector<std::string>* notes,
+                                       Frame3ddAnalysis* analysis) {
   StatusOr<std::string> text = read_text_file(path, "Frame3DD file");
   if (!text.ok()) return text.status();
   return read_frame3dd_string(*text, path, units, notes, analysis);

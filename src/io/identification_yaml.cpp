@@ -57,9 +57,10 @@ class TargetsParser : public YamlFields {
       // Translation rows/columns carry length / force, rotation ones 1 / (force length) together.
       const int rotations = (c.row >= 3) + (c.col >= 3);
       const bool si = u.length == 1.0;
-      const UnitOfInput unit = rotations == 0   ? UnitOfInput{u.length / u.force, si ? "m/N" : "mm/N"}
-                               : rotations == 1 ? UnitOfInput{1.0 / u.force, "1/N"}
-                                                : UnitOfInput{1.0 / (u.force * u.length), si ? "rad/(N m)" : "rad/(N mm)"};
+      const UnitOfInput unit = rotations == 0 ? UnitOfInput{u.length / u.force, si ? "m/N" : "mm/N"}
+                               : rotations == 1
+                                   ? UnitOfInput{1.0 / u.force, "1/N"}
+                                   : UnitOfInput{1.0 / (u.force * u.length), si ? "rad/(N m)" : "rad/(N mm)"};
       // A diagonal term of a compliance is positive (C is positive definite); another one is non-zero.
       const YAML::Node v = require(n, item, "value");
       c.value = value(v, item, "value", Quantity::kCompliance, unit, c.row == c.col ? Sign::kPositive : Sign::kAny);
@@ -86,17 +87,22 @@ class TargetsParser : public YamlFields {
 
 const char* input_key(OrthoglideInput input) {
   switch (input) {
-    case OrthoglideInput::kActuatorStiffness: return "actuator_stiffness";
-    case OrthoglideInput::kBarScale: return "bar_scale";
-    case OrthoglideInput::kParallelogramWidth: return "parallelogram_width";
-    case OrthoglideInput::kPlatformOffset: return "platform_offset";
-    case OrthoglideInput::kFootLength: return "foot_length";
+    case OrthoglideInput::kActuatorStiffness:
+      return "actuator_stiffness";
+    case OrthoglideInput::kBarScale:
+      return "bar_scale";
+    case OrthoglideInput::kParallelogramWidth:
+      return "parallelogram_width";
+    case OrthoglideInput::kPlatformOffset:
+      return "platform_offset";
+    case OrthoglideInput::kFootLength:
+      return "foot_length";
   }
   return "?";
 }
 
 StatusOr<IdentificationTargets> read_identification_targets_yaml_string(const std::string& text,
-                                                                         const std::string& display_name) {
+                                                                        const std::string& display_name) {
   return parse_yaml_text<IdentificationTargets>(
       text, display_name, kDoc, [&](const YAML::Node& root) { return TargetsParser(display_name).parse(root); });
 }

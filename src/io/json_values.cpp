@@ -11,7 +11,8 @@ nlohmann::json unit_matrix(bool compliance) {
   for (int i = 0; i < 6; ++i) {
     nlohmann::json row = nlohmann::json::array();
     for (int j = 0; j < 6; ++j)
-      row.push_back(compliance ? (j < 3 ? per_force : per_moment)[i / 3] : (j < 3 ? per_translation : per_rotation)[i / 3]);
+      row.push_back(compliance ? (j < 3 ? per_force : per_moment)[i / 3]
+                               : (j < 3 ? per_translation : per_rotation)[i / 3]);
     rows.push_back(row);
   }
   return rows;
@@ -19,11 +20,16 @@ nlohmann::json unit_matrix(bool compliance) {
 
 const char* status_name(StatusCode c) {
   switch (c) {
-    case StatusCode::kOk: return "ok";
-    case StatusCode::kInvalidInput: return "invalid_input";
-    case StatusCode::kSingular: return "singular";
-    case StatusCode::kNotConverged: return "not_converged";
-    case StatusCode::kInternal: return "internal";
+    case StatusCode::kOk:
+      return "ok";
+    case StatusCode::kInvalidInput:
+      return "invalid_input";
+    case StatusCode::kSingular:
+      return "singular";
+    case StatusCode::kNotConverged:
+      return "not_converged";
+    case StatusCode::kInternal:
+      return "internal";
   }
   return "unknown";
 }

@@ -9,22 +9,34 @@ using nlohmann::json;
 
 json link_stiffness_to_json(const std::string& mesh_file, double mesh_size, const fea::LinkStiffness& r,
                             bool from_cache) {
-  json j = {{"schema", "kinestat-link-stiffness"},
-            {"version", 1},
-            {"units", {{"length", "m"}, {"force", "N"}, {"moment", "N m"}, {"angle", "rad"}, {"stress", "Pa"},
-                       {"dofs", "ux uy uz rx ry rz in the mesh (link) frame"}}},
-            {"mesh", {{"file", mesh_file}, {"size_m", mesh_size}, {"nodes", r.num_nodes},
-                      {"elements", r.num_elements}, {"nodes_per_element", r.nodes_per_element}, {"dofs", r.num_dofs}}},
-            {"from_cache", from_cache},
-            {"reference_model", fea::reference_model_name(r.reference_model)},
-            {"reference_point_m", to_array(r.cartesian.point)},
-            {"stiffness", to_rows(r.cartesian.stiffness)},
-            {"stiffness_units", unit_matrix(false)},
-            {"compliance", to_rows(r.cartesian.compliance)},
-            {"compliance_units", unit_matrix(true)},
-            {"symmetry_error", {{"compliance", r.compliance_symmetry_error}, {"stiffness", r.stiffness_symmetry_error}}},
-            {"eigenvalues_SI_mixed_units",
-             {{"stiffness", r.cartesian.indices ? to_array(r.cartesian.indices->eigenvalues) : json::array()}, {"compliance", to_array(r.compliance_eigenvalues)}}}};
+  json j = {
+      {"schema", "kinestat-link-stiffness"},
+      {"version", 1},
+      {"units",
+       {{"length", "m"},
+        {"force", "N"},
+        {"moment", "N m"},
+        {"angle", "rad"},
+        {"stress", "Pa"},
+        {"dofs", "ux uy uz rx ry rz in the mesh (link) frame"}}},
+      {"mesh",
+       {{"file", mesh_file},
+        {"size_m", mesh_size},
+        {"nodes", r.num_nodes},
+        {"elements", r.num_elements},
+        {"nodes_per_element", r.nodes_per_element},
+        {"dofs", r.num_dofs}}},
+      {"from_cache", from_cache},
+      {"reference_model", fea::reference_model_name(r.reference_model)},
+      {"reference_point_m", to_array(r.cartesian.point)},
+      {"stiffness", to_rows(r.cartesian.stiffness)},
+      {"stiffness_units", unit_matrix(false)},
+      {"compliance", to_rows(r.cartesian.compliance)},
+      {"compliance_units", unit_matrix(true)},
+      {"symmetry_error", {{"compliance", r.compliance_symmetry_error}, {"stiffness", r.stiffness_symmetry_error}}},
+      {"eigenvalues_SI_mixed_units",
+       {{"stiffness", r.cartesian.indices ? to_array(r.cartesian.indices->eigenvalues) : json::array()},
+        {"compliance", to_array(r.compliance_eigenvalues)}}}};
   if (!r.backend.empty()) {  // a computed result (not read from the cache): how it was solved
     const auto& f = r.factorization;
     j["solver"] = {{"backend", r.backend},
@@ -53,12 +65,13 @@ json link_stiffness_to_json(const std::string& mesh_file, double mesh_size, cons
                        {"effective_mass", to_array(m.effective_mass)},
                        {"reference_motion", to_array(m.reference_motion)}});
     }
-    j["vibration"] = {{"units", {{"frequency", "Hz"},
-                                 {"omega", "rad/s"},
-                                 {"link_mass", "kg"},
-                                 {"participation", "sqrt(kg)"},
-                                 {"effective_mass", "kg"},
-                                 {"reference_motion", "m/sqrt(kg) (ux uy uz), rad/sqrt(kg) (rx ry rz)"}}},
+    j["vibration"] = {{"units",
+                       {{"frequency", "Hz"},
+                        {"omega", "rad/s"},
+                        {"link_mass", "kg"},
+                        {"participation", "sqrt(kg)"},
+                        {"effective_mass", "kg"},
+                        {"reference_motion", "m/sqrt(kg) (ux uy uz), rad/sqrt(kg) (rx ry rz)"}}},
                       {"mass_matrix", "consistent"},
                       {"reference_body_mass", 0.0},
                       {"link_mass", r.mass},
@@ -74,8 +87,8 @@ json convergence_study_to_json(const fea::ConvergenceStudy& study) {
   for (std::size_t i = 0; i < study.sizes.size(); ++i)
     meshes.push_back({{"size_m", study.sizes[i]},
                       {"dofs", i < study.num_dofs.size() ? study.num_dofs[i] : 0},
-                      {"compliance_diagonal", i < study.compliance.size() ? to_array(study.compliance[i].diagonal())
-                                                                          : json::array()}});
+                      {"compliance_diagonal",
+                       i < study.compliance.size() ? to_array(study.compliance[i].diagonal()) : json::array()}});
   json estimates = json::array();
   for (std::size_t k = 0; k < study.diagonal.size(); ++k) {
     const auto& e = study.diagonal[k];

@@ -42,7 +42,7 @@ json workspace_map_to_json(const WorkspaceMap& map) {
     fields[info.name] = std::move(values);
     units[info.name] = info.unit;
     const FieldSummary& s = f.summary;
-    field_summary[info.name] = {{"count", s.count},     {"min", number(s.min)},       {"max", number(s.max)},
+    field_summary[info.name] = {{"count", s.count},       {"min", number(s.min)},     {"max", number(s.max)},
                                 {"mean", number(s.mean)}, {"argmin", vec3(s.argmin)}, {"unit", info.unit}};
   }
   j["fields"] = std::move(fields);

@@ -54,9 +54,12 @@ struct CurvePen {
 };
 CurvePen curve_pen(CurveStyle style) {
   switch (style) {
-    case CurveStyle::kDashedRed: return {kRed, 3};
-    case CurveStyle::kShortDashedMagenta: return {kMagenta, 2};
-    case CurveStyle::kSolidBlack: break;
+    case CurveStyle::kDashedRed:
+      return {kRed, 3};
+    case CurveStyle::kShortDashedMagenta:
+      return {kMagenta, 2};
+    case CurveStyle::kSolidBlack:
+      break;
   }
   return {kBlack, 1};
 }
@@ -87,9 +90,10 @@ std::string escape_text(const std::string& s) {
 Status check_input(const std::string& path, const std::vector<PlotField2D>& fields, const PlotOptions& o) {
   constexpr int kMaxPixels = 8192;  // per side: the cairo surface is 4 bytes per pixel
   if (o.width < 200 || o.height < 150 || o.width > kMaxPixels || o.height > kMaxPixels)
-    return Status::Invalid(fmt::format("{}: image size {} x {} pixels: width must lie in [200, {}], height in "
-                                       "[150, {}]",
-                                       path, o.width, o.height, kMaxPixels, kMaxPixels));
+    return Status::Invalid(
+        fmt::format("{}: image size {} x {} pixels: width must lie in [200, {}], height in "
+                    "[150, {}]",
+                    path, o.width, o.height, kMaxPixels, kMaxPixels));
   if (fields.empty()) return Status::Invalid(path + ": no field to draw");
   constexpr long long kMaxCells = 1LL << 26;
   bool any_value = false;
@@ -97,14 +101,17 @@ Status check_input(const std::string& path, const std::vector<PlotField2D>& fiel
     const PlotField2D& f = fields[k];
     const std::string which = fields.size() > 1 ? fmt::format(" (panel {})", k + 1) : std::string();
     if (f.nx < 1 || f.ny < 1 || static_cast<long long>(f.nx) * f.ny > kMaxCells)
-      return Status::Invalid(fmt::format("{}{}: grid {} x {}: needs 1 to {} cells", path, which, f.nx, f.ny, kMaxCells));
+      return Status::Invalid(
+          fmt::format("{}{}: grid {} x {}: needs 1 to {} cells", path, which, f.nx, f.ny, kMaxCells));
     if (f.values.size() != static_cast<std::size_t>(f.nx) * static_cast<std::size_t>(f.ny))
-      return Status::Invalid(fmt::format("{}{}: {} values for a {} x {} grid", path, which, f.values.size(), f.nx, f.ny));
+      return Status::Invalid(
+          fmt::format("{}{}: {} values for a {} x {} grid", path, which, f.values.size(), f.nx, f.ny));
     if (!(std::isfinite(f.x0) && std::isfinite(f.y0) && std::isfinite(f.dx) && std::isfinite(f.dy) && f.dx > 0.0 &&
           f.dy > 0.0))
-      return Status::Invalid(fmt::format("{}{}: grid origin ({}, {}) and spacing ({}, {}) must be finite, spacing "
-                                         "positive",
-                                         path, which, f.x0, f.y0, f.dx, f.dy));
+      return Status::Invalid(
+          fmt::format("{}{}: grid origin ({}, {}) and spacing ({}, {}) must be finite, spacing "
+                      "positive",
+                      path, which, f.x0, f.y0, f.dx, f.dy));
     for (std::size_t i = 0; i < f.values.size(); ++i) {
       const double v = f.values[i];
       if (std::isnan(v)) continue;
@@ -182,8 +189,8 @@ void draw_field(const PlotField2D& f, const PlotWindow& w, bool log_scale, const
   PlotWindow cell_corners = w;  // x0, y0: corner of cell (0, 0); x1, y1: the cell size
   cell_corners.x1 = f.dx, cell_corners.y1 = f.dy;
   constexpr double kAll = std::numeric_limits<double>::max();  // every finite value is drawn, clamped to the range
-  plimagefr(columns.data(), f.nx, f.ny, w.x0, w.x1, w.y0, w.y1, -kAll, kAll, range[0], range[1],
-            cell_corner_transform, &cell_corners);
+  plimagefr(columns.data(), f.nx, f.ny, w.x0, w.x1, w.y0, w.y1, -kAll, kAll, range[0], range[1], cell_corner_transform,
+            &cell_corners);
 }
 
 // A tick spacing of 1, 2 or 5 times a power of ten that leaves `label_px` pixels per label along
@@ -238,8 +245,8 @@ void draw_colorbar(const PageBox& box, const std::string& label, bool log_scale,
   const PLFLT ticks[] = {0.0};
   const PLINT sub_ticks[] = {0};
   PLFLT width = 0.0, height = 0.0;
-  plcolorbar(&width, &height, PL_COLORBAR_IMAGE, PL_POSITION_LEFT | PL_POSITION_INSIDE | PL_POSITION_VIEWPORT, 0.0,
-             0.0, 1.0, 1.0, kBackground, kBlack, 1, 0.0, 0.0, kBlack, 1.0, label.empty() ? 0 : 1, label_opts, labels, 1,
+  plcolorbar(&width, &height, PL_COLORBAR_IMAGE, PL_POSITION_LEFT | PL_POSITION_INSIDE | PL_POSITION_VIEWPORT, 0.0, 0.0,
+             1.0, 1.0, kBackground, kBlack, 1, 0.0, 0.0, kBlack, 1.0, label.empty() ? 0 : 1, label_opts, labels, 1,
              axis_opts, ticks, sub_ticks, n_values, value_rows);
 }
 
@@ -259,9 +266,9 @@ void draw_legend(const PageBox& box, const std::vector<PlotCurve>& curves, doubl
   }
   PLFLT width = 0.0, height = 0.0;
   pllegend(&width, &height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX,
-           PL_POSITION_TOP | PL_POSITION_INSIDE | PL_POSITION_VIEWPORT, 0.0, 0.0, 0.07, kBackground, kBlack, 1,
-           1, n, n, opts.data(), 1.0, 1.0, 2.0, 0.0, text_colours.data(), text_ptrs.data(), nullptr, nullptr, nullptr,
-           nullptr, line_colours.data(), line_styles.data(), line_widths.data(), nullptr, nullptr, nullptr, nullptr);
+           PL_POSITION_TOP | PL_POSITION_INSIDE | PL_POSITION_VIEWPORT, 0.0, 0.0, 0.07, kBackground, kBlack, 1, 1, n, n,
+           opts.data(), 1.0, 1.0, 2.0, 0.0, text_colours.data(), text_ptrs.data(), nullptr, nullptr, nullptr, nullptr,
+           line_colours.data(), line_styles.data(), line_widths.data(), nullptr, nullptr, nullptr, nullptr);
 }
 
 // Draws the whole picture into the current (initialized) stream.
@@ -384,7 +391,8 @@ Status write_png(const std::string& path, const std::vector<PlotField2D>& fields
       return Status::Invalid(fmt::format("{}: an image of {} x {} pixels is too small for {} panel(s)", path, o.width,
                                          o.height, fields.size()));
 
-  return write_file_atomically(path, [&](const std::string& temp) { return render_png(temp, path, fields, o, layout); });
+  return write_file_atomically(path,
+                               [&](const std::string& temp) { return render_png(temp, path, fields, o, layout); });
 }
 
 }  // namespace
@@ -429,7 +437,8 @@ std::vector<std::array<double, 2>> contour_lines(const PlotField2D& p, double le
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c) {
     out->GetCellPoints(c, ids);
-    if (!lines.empty()) lines.push_back({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});
+    if (!lines.empty())
+      lines.push_back({std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()});
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) {
       const double* x = out->GetPoint(ids->GetId(k));
       lines.push_back({x[0], x[1]});

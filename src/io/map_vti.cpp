@@ -50,12 +50,15 @@ Status write_map_vti(const std::string& path, const mechanisms::WorkspaceMap& ma
   // ParaView colours by the active scalars on opening: the weakest-direction stiffness, the map's
   // headline field, rather than the first array in the file.
   for (const mechanisms::FieldValues& f : map.fields)
-    if (f.field == mechanisms::MapField::kTranslationalMin) image->GetPointData()->SetActiveScalars(vti_array_name(f.field).c_str());
+    if (f.field == mechanisms::MapField::kTranslationalMin)
+      image->GetPointData()->SetActiveScalars(vti_array_name(f.field).c_str());
 
   add_vti_string(image, "length_unit", "m");
   const mechanisms::MapGrid& grid = map.grid;
   add_vti_string(image, "axis_names", fmt::format("{},{},{}", grid.names[0], grid.names[1], grid.names[2]));
-  add_vti_string(image, "axis_units", fmt::format("{},{},{}", mechanisms::axis_unit(grid, 0), mechanisms::axis_unit(grid, 1), mechanisms::axis_unit(grid, 2)));
+  add_vti_string(image, "axis_units",
+                 fmt::format("{},{},{}", mechanisms::axis_unit(grid, 0), mechanisms::axis_unit(grid, 1),
+                             mechanisms::axis_unit(grid, 2)));
   add_vti_string(image, "description", map.description);
   std::string codes;
   for (int s = 0; s < mechanisms::kNumPostureStatuses; ++s)

@@ -17,12 +17,9 @@ json range_json(const mechanisms::TransmissionRange& r) {
 }
 
 json search_json(const mechanisms::WorkspaceSearch& s) {
-  return {{"range", range_json(s.range)},
-          {"p_at_min", to_array(s.p_at_min)},
-          {"rho_at_min", to_array(s.rho_at_min)},
-          {"p_at_max", to_array(s.p_at_max)},
-          {"rho_at_max", to_array(s.rho_at_max)},
-          {"evaluations", s.evaluations},
+  return {{"range", range_json(s.range)},         {"p_at_min", to_array(s.p_at_min)},
+          {"rho_at_min", to_array(s.rho_at_min)}, {"p_at_max", to_array(s.p_at_max)},
+          {"rho_at_max", to_array(s.rho_at_max)}, {"evaluations", s.evaluations},
           {"singular_samples", s.singular}};
 }
 
@@ -81,9 +78,10 @@ json identification_to_json(const std::vector<mechanisms::OrthoglideInput>& inpu
   }
   json j = {{"schema", "kinestat-identification"},
             {"schema_version", 1},
-            {"units", {{"inputs", "SI as named (N/m, m; bar section scale -)"},
-                       {"compliance", "m/N, 1/N (= m/(N m) = rad/N), rad/(N m) by row and column"},
-                       {"point", "m"}}},
+            {"units",
+             {{"inputs", "SI as named (N/m, m; bar section scale -)"},
+              {"compliance", "m/N, 1/N (= m/(N m) = rad/N), rad/(N m) by row and column"},
+              {"point", "m"}}},
             {"inputs", in},
             {"targets", t},
             {"iterations", id.iterations},

@@ -81,7 +81,8 @@ json stations_json(const std::string& beam, const msa::BeamStations& st) {
     for (std::size_t k = 0; k < st.x.size(); ++k) values.push_back(q < 6 ? st.forces[k](q) : st.displacement[k](q - 6));
     b[kStationNames[q]] = values;
     const auto& e = st.extremes[static_cast<std::size_t>(q)];
-    b["extremes"][kStationNames[q]] = {{"max", e.max}, {"x_at_max", e.x_at_max}, {"min", e.min}, {"x_at_min", e.x_at_min}};
+    b["extremes"][kStationNames[q]] = {
+        {"max", e.max}, {"x_at_max", e.x_at_max}, {"min", e.min}, {"x_at_min", e.x_at_min}};
   }
   return b;
 }
@@ -219,9 +220,8 @@ StatusOr<json> solution_to_json(const msa::Structure& s, const msa::Solution& so
       json N = json::array();
       for (std::size_t b = 0; b < s.beams().size(); ++b)
         N.push_back({{"beam", id_of(s.beams(), b)}, {"N", so.axial_force[c][b]}});
-      lc["second_order"] = {{"iterations", so.iterations[c]},
-                            {"relative_change", so.relative_change[c]},
-                            {"axial_force", std::move(N)}};
+      lc["second_order"] = {
+          {"iterations", so.iterations[c]}, {"relative_change", so.relative_change[c]}, {"axial_force", std::move(N)}};
     }
     if (stations && c < stations->size()) {
       lc["beam_stations"] = json::array();
@@ -264,8 +264,9 @@ StatusOr<json> buckling_to_json(const msa::Structure& s, const msa::BucklingResu
       return Status::Invalid(fmt::format("buckling mode {}: {} node motions for a structure of {} nodes", k + 1,
                                          m.shape.size(), s.nodes().size()));
     json mode = {{"mode", k + 1}, {"load_factor", m.load_factor}, {"residual", m.residual}};
-    mode["most_compressed_beam"] = {{"beam", s.beams()[static_cast<std::size_t>(most)].id},
-                                    {"critical_axial_force", m.load_factor * r.axial_force[static_cast<std::size_t>(most)]}};
+    mode["most_compressed_beam"] = {
+        {"beam", s.beams()[static_cast<std::size_t>(most)].id},
+        {"critical_axial_force", m.load_factor * r.axial_force[static_cast<std::size_t>(most)]}};
     mode["shape"] = json::array();
     for (std::size_t n = 0; n < m.shape.size(); ++n) mode["shape"].push_back(node_motion(s.nodes()[n].id, m.shape[n]));
     j["modes"].push_back(std::move(mode));
@@ -278,9 +279,12 @@ StatusOr<json> modes_to_json(const msa::Structure& s, const msa::ModalResult& r,
   json j;
   j["schema"] = "kinestat-modes-results";
   j["schema_version"] = kResultsSchemaVersion;
-  j["units"] = {{"length", "m"},         {"mass", "kg"},
-                {"angle", "rad"},        {"frequency", "Hz"},
-                {"angular_frequency", "rad/s"}, {"shape", "m/sqrt(kg) (translation), rad/sqrt(kg) (rotation)"},
+  j["units"] = {{"length", "m"},
+                {"mass", "kg"},
+                {"angle", "rad"},
+                {"frequency", "Hz"},
+                {"angular_frequency", "rad/s"},
+                {"shape", "m/sqrt(kg) (translation), rad/sqrt(kg) (rotation)"},
                 {"participation", "sqrt(kg)"}};
   j["model"] = {{"title", s.title()},
                 {"num_nodes", s.nodes().size()},
@@ -306,8 +310,8 @@ StatusOr<json> modes_to_json(const msa::Structure& s, const msa::ModalResult& r,
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     const msa::VibrationMode& m = r.modes[k];
     if (m.shape.size() != s.nodes().size())
-      return Status::Invalid(fmt::format("mode {}: {} node motions for a structure of {} nodes", k + 1, m.shape.size(),
-                                         s.nodes().size()));
+      return Status::Invalid(
+          fmt::format("mode {}: {} node motions for a structure of {} nodes", k + 1, m.shape.size(), s.nodes().size()));
     json mode = {{"mode", k + 1},
                  {"frequency", m.frequency},
                  {"omega", m.omega},

@@ -54,8 +54,9 @@ json robot_design_sweep_to_json(const RobotDesignSweep& s, const std::string& ro
                    {"min_stiffness", s.min_stiffness},
                    {"min_stiffness_unit", "N/m"},
                    {"min_stiffness_field", "k_t_min"},
-                   {"score", "stiff_measure: the region's area or volume where k_t_min >= min_stiffness; the best "
-                             "design has the largest, of equal ones the first"}};
+                   {"score",
+                    "stiff_measure: the region's area or volume where k_t_min >= min_stiffness; the best "
+                    "design has the largest, of equal ones the first"}};
   j["measure_unit"] = s.volume() ? "m^3" : "m^2";
   json table = json::array();
   for (std::size_t k = 0; k < s.results.size(); ++k) table.push_back(design_to_json(s, k));
@@ -71,9 +72,10 @@ json robot_design_sweep_to_json(const RobotDesignSweep& s, const std::string& ro
 
 Status write_robot_design_sweep_vti(const std::string& path, const RobotDesignSweep& s, const std::string& units) {
   if (s.parameters.size() > 3)
-    return Status::Invalid(fmt::format("{}: a VTI image has three axes; this sweep has {} parameters (write --json "
-                                       "instead)",
-                                       path, s.parameters.size()));
+    return Status::Invalid(
+        fmt::format("{}: a VTI image has three axes; this sweep has {} parameters (write --json "
+                    "instead)",
+                    path, s.parameters.size()));
   // One cell per design, centred on its values: a design's value fills its cell.
   mechanisms::MapGrid cells;
   for (std::size_t p = 0; p < s.parameters.size(); ++p) {

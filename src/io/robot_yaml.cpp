@@ -41,8 +41,7 @@ class RobotReader : public YamlFields {
     u_ = units(root["units"]);
     parse_params(root["params"], d);
     if (const YAML::Node p = root["planar"]; p.IsDefined()) {
-      if (!p.IsScalar() || (p.Scalar() != "true" && p.Scalar() != "false"))
-        fail(p, "planar", "write true or false");
+      if (!p.IsScalar() || (p.Scalar() != "true" && p.Scalar() != "false")) fail(p, "planar", "write true or false");
       d.planar = p.Scalar() == "true";
     }
     const YAML::Node task = require(root, "file", "task");
@@ -59,8 +58,10 @@ class RobotReader : public YamlFields {
     if (const YAML::Node w = root["workspace"]; w.IsDefined()) {
       // {x, y, z} (lengths) or {rx, ry, rz} (deg: an orientation map at the home position).
       d.workspace_angular = w.IsMap() && w["rx"].IsDefined();
-      if (d.workspace_angular) check_map(w, "workspace", {"rx", "ry", "rz"});
-      else check_map(w, "workspace", {"x", "y", "z"});
+      if (d.workspace_angular)
+        check_map(w, "workspace", {"rx", "ry", "rz"});
+      else
+        check_map(w, "workspace", {"x", "y", "z"});
       std::array<std::pair<double, double>, 3> box;
       for (int a = 0; a < 3; ++a) {
         static constexpr const char* kKeys[2][3] = {{"x", "y", "z"}, {"rx", "ry", "rz"}};
@@ -97,9 +98,10 @@ class RobotReader : public YamlFields {
       if (!std::isfinite(x)) fail(v, item, fmt::format("'{}' = {} is not finite", key, v.Scalar()));
       return x;
     } catch (const mu::Parser::exception_type& e) {
-      fail(v, item, fmt::format("'{}': cannot evaluate '{}': {}; use numbers, the parameters ({}), deg, pi and "
-                                "functions such as sqrt, sin (radians), cos, atan2",
-                                key, v.Scalar(), e.GetMsg(), param_names()));
+      fail(v, item,
+           fmt::format("'{}': cannot evaluate '{}': {}; use numbers, the parameters ({}), deg, pi and "
+                       "functions such as sqrt, sin (radians), cos, atan2",
+                       key, v.Scalar(), e.GetMsg(), param_names()));
     }
   }
   double quantity(const YAML::Node& v, const std::string& item, const std::string& key, Quantity q,
@@ -178,8 +180,7 @@ class RobotReader : public YamlFields {
   const T& named(const std::map<std::string, T>& all, const YAML::Node& v, const std::string& item, const char* what) {
     const std::string name = text(v, item, what);
     const auto it = all.find(name);
-    if (it == all.end())
-      fail(v, item, fmt::format("no {} named '{}'; define it under `{}s:`", what, name, what));
+    if (it == all.end()) fail(v, item, fmt::format("no {} named '{}'; define it under `{}s:`", what, name, what));
     return it->second;
   }
 
@@ -211,7 +212,7 @@ class RobotReader : public YamlFields {
     Vec6 dscale;
     dscale << Vec3::Constant(1.0 / std::sqrt(u_.length)), Vec3::Constant(std::sqrt(u_.length));
     auto entry = [&](const YAML::Node& v, int i, int j, const std::string& key) {
-      const Quantity q = i < 3 && j < 3 ? Quantity::kTranslationalStiffness
+      const Quantity q = i < 3 && j < 3     ? Quantity::kTranslationalStiffness
                          : i >= 3 && j >= 3 ? Quantity::kRotationalStiffness
                                             : Quantity::kForce;
       const double x = expr(v, item, key);
@@ -226,9 +227,11 @@ class RobotReader : public YamlFields {
       if (!k.IsSequence() || k.size() != 6) fail(k, item, "'matrix' must be 6 rows of 6 numbers");
       for (int i = 0; i < 6; ++i) {
         const YAML::Node row = k[static_cast<std::size_t>(i)];
-        if (!row.IsSequence() || row.size() != 6) fail(row, item, fmt::format("'matrix' row {} needs 6 numbers", i + 1));
+        if (!row.IsSequence() || row.size() != 6)
+          fail(row, item, fmt::format("'matrix' row {} needs 6 numbers", i + 1));
         for (int j = 0; j < 6; ++j)
-          s.stiffness(i, j) = entry(row[static_cast<std::size_t>(j)], i, j, fmt::format("matrix ({}, {})", i + 1, j + 1));
+          s.stiffness(i, j) =
+              entry(row[static_cast<std::size_t>(j)], i, j, fmt::format("matrix ({}, {})", i + 1, j + 1));
       }
     } else {
       const YAML::Node g = n["diagonal"];
@@ -281,8 +284,10 @@ class RobotReader : public YamlFields {
       BeamTheory theory = BeamTheory::kEulerBernoulli;
       if (const YAML::Node t = b["theory"]; t.IsDefined()) {
         const std::string name = text(t, label, "theory");
-        if (name == "timoshenko") theory = BeamTheory::kTimoshenko;
-        else if (name != "euler-bernoulli") fail(t, label, "theory is euler-bernoulli (default) or timoshenko");
+        if (name == "timoshenko")
+          theory = BeamTheory::kTimoshenko;
+        else if (name != "euler-bernoulli")
+          fail(t, label, "theory is euler-bernoulli (default) or timoshenko");
       }
       // `x` and `length`: an equivalent cantilever off the drawing (e.g. a foot whose compliance
       // stands for a carriage and its guide), at the link's end.
@@ -318,9 +323,9 @@ class RobotReader : public YamlFields {
 
   RobotJoint joint(const YAML::Node& n, const std::string& kind, const std::string& label, const Mat3& turn) {
     static const std::map<std::string, RobotJointType> kTypes = {
-        {"revolute", RobotJointType::kRevolute},         {"prismatic", RobotJointType::kPrismatic},
-        {"universal", RobotJointType::kUniversal},       {"spherical", RobotJointType::kSpherical},
-        {"cylindrical", RobotJointType::kCylindrical},   {"parallelogram", RobotJointType::kParallelogram}};
+        {"revolute", RobotJointType::kRevolute},       {"prismatic", RobotJointType::kPrismatic},
+        {"universal", RobotJointType::kUniversal},     {"spherical", RobotJointType::kSpherical},
+        {"cylindrical", RobotJointType::kCylindrical}, {"parallelogram", RobotJointType::kParallelogram}};
     RobotJoint j;
     j.type = kTypes.at(kind);
     j.label = fmt::format("{} ({}, {})", label, kind, source(n));
@@ -339,8 +344,10 @@ class RobotReader : public YamlFields {
     } else {
       for (int i = 0; i < 3; ++i) j.axes[i] = turn * Vec3::Unit(i);  // spherical: x, y, z by default
     }
-    if (j.type == RobotJointType::kParallelogram) j.to = turn * point(require(n, label, "to"), label, "to");
-    else if (n["to"].IsDefined()) fail(n["to"], label, "'to' belongs to a parallelogram");
+    if (j.type == RobotJointType::kParallelogram)
+      j.to = turn * point(require(n, label, "to"), label, "to");
+    else if (n["to"].IsDefined())
+      fail(n["to"], label, "'to' belongs to a parallelogram");
     if (const YAML::Node a = n["actuated"]; a.IsDefined()) {
       if (!a.IsScalar() || (a.Scalar() != "true" && a.Scalar() != "false")) fail(a, label, "actuated: true or false");
       j.actuated = a.Scalar() == "true";
@@ -349,10 +356,9 @@ class RobotReader : public YamlFields {
     if (const YAML::Node k = n["stiffness"]; k.IsDefined()) {
       if (!j.actuated)
         fail(k, label, "'stiffness' is the actuator's; a passive joint's compliance is a 'spring' (6x6)");
-      j.actuator_stiffness =
-          quantity(k, label, "stiffness",
-                   prismatic_first ? Quantity::kTranslationalStiffness : Quantity::kRotationalStiffness,
-                   Sign::kPositive);
+      j.actuator_stiffness = quantity(
+          k, label, "stiffness", prismatic_first ? Quantity::kTranslationalStiffness : Quantity::kRotationalStiffness,
+          Sign::kPositive);
     }
     if (const YAML::Node s = n["spring"]; s.IsDefined()) {
       RobotSpring sp = spring(s, j.label, turn);
@@ -387,15 +393,17 @@ class RobotReader : public YamlFields {
       copies = static_cast<int>(x);
     }
     double turn = 0.0;
-    if (const YAML::Node t = n["turn"]; t.IsDefined()) turn = expr(t, item, "turn") * kDeg;
-    else if (copies > 1) turn = 2.0 * M_PI / copies;
+    if (const YAML::Node t = n["turn"]; t.IsDefined())
+      turn = expr(t, item, "turn") * kDeg;
+    else if (copies > 1)
+      turn = 2.0 * M_PI / copies;
     const Vec3 turn_axis = n["turn_axis"].IsDefined() ? axis(n["turn_axis"], item, "turn_axis") : Vec3::UnitZ();
     const YAML::Node chain = require(n, item, "chain");
     if (!chain.IsSequence() || chain.size() == 0) fail(chain, item, "'chain' lists the leg's joints and links");
     for (int k = 0; k < copies; ++k) {
       RobotLeg leg;
       // Unnamed legs are numbered through the file, copies of a named one by copy.
-      leg.name = !named_leg ? fmt::format("leg {}", d.legs.size() + 1)
+      leg.name = !named_leg   ? fmt::format("leg {}", d.legs.size() + 1)
                  : copies > 1 ? fmt::format("{} {}", name, k + 1)
                               : name;
       const Mat3 R = Eigen::AngleAxisd(k * turn, turn_axis).toRotationMatrix();
@@ -403,8 +411,9 @@ class RobotReader : public YamlFields {
       int joints = 0, links = 0;
       for (const YAML::Node& e : chain) {
         if (!e.IsMap() || e.size() != 1)
-          fail(e, item, "each chain entry is one of revolute, prismatic, universal, spherical, cylindrical, "
-                        "parallelogram or link, with its fields in braces");
+          fail(e, item,
+               "each chain entry is one of revolute, prismatic, universal, spherical, cylindrical, "
+               "parallelogram or link, with its fields in braces");
         const std::string kind = e.begin()->first.Scalar();
         const YAML::Node body = e.begin()->second;
         if (kind == "link") {
@@ -417,8 +426,10 @@ class RobotReader : public YamlFields {
           at = j.type == RobotJointType::kParallelogram ? j.to : j.at;
           leg.items.emplace_back(std::move(j));
         } else {
-          fail(e, item, fmt::format("unknown chain entry '{}'; use revolute, prismatic, universal, spherical, "
-                                    "cylindrical, parallelogram or link", kind));
+          fail(e, item,
+               fmt::format("unknown chain entry '{}'; use revolute, prismatic, universal, spherical, "
+                           "cylindrical, parallelogram or link",
+                           kind));
         }
       }
       d.legs.push_back(std::move(leg));
@@ -437,7 +448,7 @@ class RobotReader : public YamlFields {
 }  // namespace
 
 StatusOr<RobotDescription> read_robot_description_string(const std::string& text, const std::string& display_name,
-                                                          const ParamOverrides& overrides) {
+                                                         const ParamOverrides& overrides) {
   RobotReader reader(display_name, overrides);
   return parse_yaml_text<RobotDescription>(text, display_name, kDoc,
                                            [&](const YAML::Node& root) { return reader.parse(root); });

@@ -9,13 +9,13 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "io/roll_orientation.hpp"
+#include "io/yaml_fields.hpp"
 #include "kinestat/core/frame.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
-#include "io/roll_orientation.hpp"
-#include "io/yaml_fields.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -114,9 +114,8 @@ class Parser : public YamlFields {
     const std::string id = entry_id(n, "node", i, node_ids_);
     const std::string item = fmt::format("node '{}'", id);
     check_keys(n, item, {"id", "xyz"});
-    node_index_[id] =
-        s_.add_node(id, vec3(require(n, item, "xyz"), item, "xyz", Quantity::kLength, units_.of(Quantity::kLength)),
-                    source(n));
+    node_index_[id] = s_.add_node(
+        id, vec3(require(n, item, "xyz"), item, "xyz", Quantity::kLength, units_.of(Quantity::kLength)), source(n));
   }
 
   void parse_material(const YAML::Node& n, int i) {
@@ -382,7 +381,8 @@ class Parser : public YamlFields {
     });
     if (const YAML::Node g = n["gravity"]; g.IsDefined())
       lc.gravity = vec3(g, item, "gravity", Quantity::kAcceleration, units_.of(Quantity::kAcceleration));
-    for_each(n, "member_loads", false, [&](const YAML::Node& l, int) { lc.member_loads.push_back(member_load(l, item)); });
+    for_each(n, "member_loads", false,
+             [&](const YAML::Node& l, int) { lc.member_loads.push_back(member_load(l, item)); });
     s_.add_load_case(lc);
   }
 
@@ -406,11 +406,12 @@ class Parser : public YamlFields {
       const YAML::Node v = require(l, item, key);
       const double x = value(v, item, key, Quantity::kLength, lu, Sign::kNonNegative);
       if (x > length * (1.0 + 1e-12))
-        fail(v, item,
-             fmt::format("{} = {:g} {} lies beyond the end of the beam (length {:g} {}); give a distance from its first "
-                         "node between 0 and the length",
-                         key, x / lu.scale, lu.name.empty() ? "m" : lu.name, length / lu.scale,
-                         lu.name.empty() ? "m" : lu.name));
+        fail(
+            v, item,
+            fmt::format("{} = {:g} {} lies beyond the end of the beam (length {:g} {}); give a distance from its first "
+                        "node between 0 and the length",
+                        key, x / lu.scale, lu.name.empty() ? "m" : lu.name, length / lu.scale,
+                        lu.name.empty() ? "m" : lu.name));
       return std::min(x, length);
     };
     auto per_length = [&](const char* key) {
@@ -469,7 +470,8 @@ class Parser : public YamlFields {
       if (th.dT == 0.0 && th.dTy == 0.0 && th.dTz == 0.0)
         fail(l, item, "a temperature load needs dT (uniform change) and/or dTy, dTz (differences across the depths)");
     } else {
-      fail(tn, item, fmt::format("unknown member load type '{}'; use uniform, trapezoidal, point or temperature", type));
+      fail(tn, item,
+           fmt::format("unknown member load type '{}'; use uniform, trapezoidal, point or temperature", type));
     }
     return ml;
   }
@@ -486,8 +488,9 @@ class Parser : public YamlFields {
 }  // namespace
 
 StatusOr<msa::Structure> read_structure_yaml_string(const std::string& text, const std::string& display_name) {
-  StatusOr<msa::Structure> s = parse_yaml_text<msa::Structure>(
-      text, display_name, "docs/structure-format.md", [&](const YAML::Node& root) { return Parser(display_name).parse(root); });
+  StatusOr<msa::Structure> s =
+      parse_yaml_text<msa::Structure>(text, display_name, "docs/structure-format.md",
+                                      [&](const YAML::Node& root) { return Parser(display_name).parse(root); });
   if (!s.ok()) return s;
   // Its messages start with the item's "FILE:LINE" (or the file name for the whole structure).
   if (const Status st = s->validate(); !st.ok()) return st;

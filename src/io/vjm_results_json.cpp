@@ -44,12 +44,13 @@ json vjm_results_to_json(const VjmResults& r) {
                    {"rotation", to_array(r.state->displacement.tail<3>())},
                    {"force", to_array(r.state->wrench.head<3>())},
                    {"moment", to_array(r.state->wrench.tail<3>())},
-                   {"equilibrium", {{"converged", c.converged},
-                                    {"method", c.method},
-                                    {"fixed_point_iterations", c.fixed_point_iterations},
-                                    {"newton_iterations", c.newton_iterations},
-                                    {"kinematic_residual", c.kinematic_residual},
-                                    {"static_residual", c.static_residual}}},
+                   {"equilibrium",
+                    {{"converged", c.converged},
+                     {"method", c.method},
+                     {"fixed_point_iterations", c.fixed_point_iterations},
+                     {"newton_iterations", c.newton_iterations},
+                     {"kinematic_residual", c.kinematic_residual},
+                     {"static_residual", c.static_residual}}},
                    {"stiffness", r.loaded ? stiffness_json(*r.loaded) : json()}};
   }
   encode_non_finite(j);

@@ -8,12 +8,12 @@
 #include <limits>
 #include <map>
 
+#include "io/yaml_fields.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
 #include "kinestat/vjm/link_spring.hpp"
 #include "kinestat/vjm/platform.hpp"
-#include "io/yaml_fields.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -36,8 +36,9 @@ class VjmParser : public YamlFields {
     if (const YAML::Node t = root["title"]; t.IsDefined()) m.title = text(t, "file", "title");
     if (const YAML::Node mech = root["mechanism"]; mech.IsDefined()) {
       if (text(mech, "file", "mechanism") != "orthoglide")
-        fail(mech, "file", fmt::format("unknown mechanism '{}'; the only one is orthoglide (or omit it and give chains)",
-                                       mech.Scalar()));
+        fail(mech, "file",
+             fmt::format("unknown mechanism '{}'; the only one is orthoglide (or omit it and give chains)",
+                         mech.Scalar()));
       if (root["chains"].IsDefined())
         fail(root["chains"], "file", "an orthoglide model builds its chains; remove 'chains' or 'mechanism'");
       parse_orthoglide(require(root, "file", "orthoglide"), m);
@@ -61,8 +62,10 @@ class VjmParser : public YamlFields {
  private:
   Material material(const YAML::Node& n, const std::string& item) const {
     const double nu = number(require(n, item, "nu"), item, "nu");
-    if (!(nu > -1.0 && nu < 0.5)) fail(n["nu"], item, fmt::format("'nu' = {} is not in (-1, 0.5); give Poisson's ratio", nu));
-    return Material::from_E_nu(item, quantity(require(n, item, "E"), item, "E", Quantity::kModulus, Sign::kPositive), nu);
+    if (!(nu > -1.0 && nu < 0.5))
+      fail(n["nu"], item, fmt::format("'nu' = {} is not in (-1, 0.5); give Poisson's ratio", nu));
+    return Material::from_E_nu(item, quantity(require(n, item, "E"), item, "E", Quantity::kModulus, Sign::kPositive),
+                               nu);
   }
 
   Section section(const YAML::Node& n, const std::string& item) const {
@@ -72,9 +75,9 @@ class VjmParser : public YamlFields {
 
   void parse_orthoglide(const YAML::Node& n, VjmModel& m) const {
     const std::string item = "orthoglide";
-    check_map(n, item,
-              {"architecture", "link_length", "parallelogram_width", "platform_offset", "actuator_stiffness", "bar",
-               "foot"});
+    check_map(
+        n, item,
+        {"architecture", "link_length", "parallelogram_width", "platform_offset", "actuator_stiffness", "bar", "foot"});
     const YAML::Node a = require(n, item, "architecture");
     const std::string arch = text(a, item, "architecture");
     const std::optional<mechanisms::OrthoglideArchitecture> known = mechanisms::architecture_from_name(arch);
@@ -147,15 +150,17 @@ class VjmParser : public YamlFields {
       Mat6 K;
       for (int i = 0; i < 6; ++i) {
         const YAML::Node row = k[static_cast<std::size_t>(i)];
-        if (!row.IsSequence() || row.size() != 6) fail(row, item, fmt::format("'matrix' row {} must have 6 numbers", i + 1));
+        if (!row.IsSequence() || row.size() != 6)
+          fail(row, item, fmt::format("'matrix' row {} must have 6 numbers", i + 1));
         for (int j = 0; j < 6; ++j) {
           // Translation block N/m, rotation block N m/rad, coupling N (in the file's units).
-          const Quantity q = i < 3 && j < 3   ? Quantity::kTranslationalStiffness
+          const Quantity q = i < 3 && j < 3     ? Quantity::kTranslationalStiffness
                              : i >= 3 && j >= 3 ? Quantity::kRotationalStiffness
                                                 : Quantity::kForce;
           UnitOfInput unit = u_.of(q);
           unit.scale = u_.force * d(i) * d(j);
-          K(i, j) = value(row[static_cast<std::size_t>(j)], item, fmt::format("matrix ({}, {})", i + 1, j + 1), q, unit);
+          K(i, j) =
+              value(row[static_cast<std::size_t>(j)], item, fmt::format("matrix ({}, {})", i + 1, j + 1), q, unit);
         }
       }
       return K;
@@ -166,16 +171,18 @@ class VjmParser : public YamlFields {
       BeamTheory theory = BeamTheory::kEulerBernoulli;
       if (const YAML::Node t = c["theory"]; t.IsDefined()) {
         const std::string s = text(t, it, "theory");
-        if (s == "timoshenko") theory = BeamTheory::kTimoshenko;
-        else if (s != "euler") fail(t, it, fmt::format("unknown theory '{}'; write euler or timoshenko", s));
+        if (s == "timoshenko")
+          theory = BeamTheory::kTimoshenko;
+        else if (s != "euler")
+          fail(t, it, fmt::format("unknown theory '{}'; write euler or timoshenko", s));
       }
       // `bars`: identical bars side by side on the same axis (the paper's doubled leg section).
       double bars = 1.0;
-      if (const YAML::Node b = c["bars"]; b.IsDefined()) bars = value(b, it, "bars", Quantity::kRatio, {}, Sign::kPositive);
-      return bars * vjm::cantilever_spring(material(c, it), section(require(c, it, "section"), it),
-                                           quantity(require(c, it, "length"), it, "length", Quantity::kLength,
-                                                    Sign::kPositive),
-                                           theory);
+      if (const YAML::Node b = c["bars"]; b.IsDefined())
+        bars = value(b, it, "bars", Quantity::kRatio, {}, Sign::kPositive);
+      return bars * vjm::cantilever_spring(
+                        material(c, it), section(require(c, it, "section"), it),
+                        quantity(require(c, it, "length"), it, "length", Quantity::kLength, Sign::kPositive), theory);
     }
     const YAML::Node p = n["parallelogram"];
     const std::string it = item + " parallelogram";
@@ -198,16 +205,19 @@ class VjmParser : public YamlFields {
     item = fmt::format("chain '{}'", chain.name());
     std::map<std::string, int> passive_ids;
     const YAML::Node list = require(c, item, "elements");
-    if (!list.IsSequence() || list.size() == 0) fail(list, item, "'elements' must be a non-empty list, in eq. (1)'s order");
+    if (!list.IsSequence() || list.size() == 0)
+      fail(list, item, "'elements' must be a non-empty list, in eq. (1)'s order");
     for (std::size_t e = 0; e < list.size(); ++e) {
       const YAML::Node el = list[e];
       const std::string it = fmt::format("{} element {}", item, e + 1);
       check_map(el, it, {"name", "rotate", "translate", "actuator", "spring", "passive", "coupled"});
       if (el.size() != (el["name"].IsDefined() ? 2u : 1u))
-        fail(el, it, "give exactly one of rotate, translate, actuator, spring, passive, coupled (and an optional name)");
-      const std::string kind = el.begin()->first.Scalar() == "name" ? std::next(el.begin())->first.Scalar()
-                                                                   : el.begin()->first.Scalar();
-      const std::string label = el["name"].IsDefined() ? text(el["name"], it, "name") : fmt::format("{} {}", kind, e + 1);
+        fail(el, it,
+             "give exactly one of rotate, translate, actuator, spring, passive, coupled (and an optional name)");
+      const std::string kind =
+          el.begin()->first.Scalar() == "name" ? std::next(el.begin())->first.Scalar() : el.begin()->first.Scalar();
+      const std::string label =
+          el["name"].IsDefined() ? text(el["name"], it, "name") : fmt::format("{} {}", kind, e + 1);
       const YAML::Node v = el[kind];
       const std::string vit = fmt::format("{} ({})", it, kind);
       if (kind == "translate") {
@@ -241,14 +251,16 @@ class VjmParser : public YamlFields {
         const vjm::JointType t = joint_type(v, vit);
         const int k = chain.add_passive(t, axis(v, vit), coordinate(require(v, vit, "q"), t, vit, "q"), label);
         if (const YAML::Node id = v["id"]; id.IsDefined() && !passive_ids.emplace(text(id, vit, "id"), k).second)
-          fail(id, vit, fmt::format("passive id '{}' is already used in this chain; give each a unique id", id.Scalar()));
+          fail(id, vit,
+               fmt::format("passive id '{}' is already used in this chain; give each a unique id", id.Scalar()));
       } else {  // coupled
         check_map(v, vit, {"to", "type", "axis", "coefficient"});
         const YAML::Node to = require(v, vit, "to");
         const auto k = passive_ids.find(text(to, vit, "to"));
         if (k == passive_ids.end())
-          fail(to, vit, fmt::format("no passive joint with id '{}' before this element; give that joint 'id: {}'",
-                                    to.Scalar(), to.Scalar()));
+          fail(to, vit,
+               fmt::format("no passive joint with id '{}' before this element; give that joint 'id: {}'", to.Scalar(),
+                           to.Scalar()));
         chain.add_coupled(joint_type(v, vit), axis(v, vit), k->second,
                           value(require(v, vit, "coefficient"), vit, "coefficient", Quantity::kRatio, {}), label);
       }
@@ -305,7 +317,8 @@ StatusOr<std::vector<vjm::Chain>> vjm_model_chains(const VjmModel& model, const 
   for (const FeaSpring& f : model.fea_springs)
     if (!f.resolved)
       return Status::Invalid(f.where + ": this spring is not computed yet; call io::resolve_fea_springs first");
-  if (model.orthoglide) return mechanisms::orthoglide_chains(*model.orthoglide, model.architecture, point.value_or(Vec3::Zero()));
+  if (model.orthoglide)
+    return mechanisms::orthoglide_chains(*model.orthoglide, model.architecture, point.value_or(Vec3::Zero()));
   if (point)
     return Status::Invalid(
         "a posture (--point) needs a model with 'mechanism: orthoglide'; a 'chains:' file gives its own joint values");

@@ -18,11 +18,20 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -60,9 +69,10 @@ Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path) {
   const int written = writer.Write();
   const unsigned long error = writer.GetErrorCode();
   if (written != 1 || error != vtkErrorCode::NoError)
-    return Status::Invalid(fmt::format("{}: VTK could not write the data (VTK error code {}); this is a bug, please "
-                                       "report it",
-                                       path, error));
+    return Status::Invalid(
+        fmt::format("{}: VTK could not write the data (VTK error code {}); this is a bug, please "
+                    "report it",
+                    path, error));
   return write_text_file_atomically(path, writer.GetOutputString());
 }
 

@@ -77,10 +77,18 @@ vtkSmartPointer<vtkUnstructuredGrid> geometry(const msa::Structure& s) {
   }
   grid->GetCellData()->AddArray(type);
   grid->GetCellData()->AddArray(id);
-  add_units(*grid, {{"coordinates", "m"}, {"displacement", "m"}, {"rotation", "rad"}, {"reaction_force", "N"},
-                    {"reaction_moment", "N m"}, {"end_forces", "N (N Vy Vz), N m (T My Mz)"}, {"axial_force", "N"},
-                    {"torsion", "N m"}, {"bending_moment_y", "N m"}, {"bending_moment_z", "N m"},
-                    {"joint_force", "N (force), N m (moment)"}, {"free_motion_K", "- (a shape: only ratios count)"}});
+  add_units(*grid, {{"coordinates", "m"},
+                    {"displacement", "m"},
+                    {"rotation", "rad"},
+                    {"reaction_force", "N"},
+                    {"reaction_moment", "N m"},
+                    {"end_forces", "N (N Vy Vz), N m (T My Mz)"},
+                    {"axial_force", "N"},
+                    {"torsion", "N m"},
+                    {"bending_moment_y", "N m"},
+                    {"bending_moment_z", "N m"},
+                    {"joint_force", "N (force), N m (moment)"},
+                    {"free_motion_K", "- (a shape: only ratios count)"}});
   return grid;
 }
 
@@ -193,15 +201,15 @@ Status write_beam_diagrams_vtk(const msa::Structure& s, const msa::Solution& sol
                                const std::string& basename, std::vector<std::string>* written) {
   if (Status st = msa::check_solution_matches(s, sol); !st.ok()) return st;
   if (stations.size() != sol.cases.size())
-    return Status::Internal(fmt::format("beam diagrams: stations of {} load cases for {}", stations.size(),
-                                        sol.cases.size()));
+    return Status::Internal(
+        fmt::format("beam diagrams: stations of {} load cases for {}", stations.size(), sol.cases.size()));
   Collection files(dir, written);
   if (Status st = files.create(); !st.ok()) return st;
   static constexpr const char* kForces[6] = {"N", "Vy", "Vz", "T", "My", "Mz"};
   for (std::size_t c = 0; c < sol.cases.size(); ++c) {
     if (stations[c].size() != s.beams().size())
-      return Status::Internal(fmt::format("beam diagrams: stations of {} beams for {}", stations[c].size(),
-                                          s.beams().size()));
+      return Status::Internal(
+          fmt::format("beam diagrams: stations of {} beams for {}", stations[c].size(), s.beams().size()));
     vtkIdType count = 0;
     for (const msa::BeamStations& b : stations[c]) count += static_cast<vtkIdType>(b.x.size());
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -242,8 +250,15 @@ Status write_beam_diagrams_vtk(const msa::Structure& s, const msa::Solution& sol
     grid->GetPointData()->AddArray(my);
     grid->GetPointData()->SetActiveVectors("Mz_diagram");
     grid->GetCellData()->AddArray(beam_id);
-    add_units(*grid, {{"coordinates", "m"}, {"N", "N"}, {"Vy", "N"}, {"Vz", "N"}, {"T", "N m"}, {"My", "N m"},
-                      {"Mz", "N m"}, {"displacement", "m"}, {"Mz_diagram", "N m (along local y)"},
+    add_units(*grid, {{"coordinates", "m"},
+                      {"N", "N"},
+                      {"Vy", "N"},
+                      {"Vz", "N"},
+                      {"T", "N m"},
+                      {"My", "N m"},
+                      {"Mz", "N m"},
+                      {"displacement", "m"},
+                      {"Mz_diagram", "N m (along local y)"},
                       {"My_diagram", "N m (along local z)"}});
     add_display_hints(*grid, sol.cases[c].name, s.length_scale(), max_moment);
     if (Status st = files.emit(grid, fmt::format("{}_diagram_case{}.vtu", basename, c + 1), sol.cases[c].name);
@@ -272,8 +287,7 @@ Status write_mode_shapes_vtk(const msa::Structure& s, const std::vector<VtkModeS
     double max_translation = 0.0;
     for (const Vec6& v : modes[k].shape) max_translation = std::max(max_translation, v.head<3>().norm());
     add_display_hints(*grid, modes[k].name, s.length_scale(), max_translation);
-    if (Status st = files.emit(grid, fmt::format("{}_mode{}.vtu", basename, k + 1), modes[k].name); !st.ok())
-      return st;
+    if (Status st = files.emit(grid, fmt::format("{}_mode{}.vtu", basename, k + 1), modes[k].name); !st.ok()) return st;
   }
   return files.finish(basename);
 }

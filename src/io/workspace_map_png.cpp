@@ -38,8 +38,10 @@ struct PngPlanes {
 PngPlanes png_planes(const MapGrid& g) {
   PngPlanes p;
   if (g.num_varying_axes() == 2) {
-    if (g.dimensions[0] == 1) p.a = 1, p.b = 2, p.c = 0;
-    else if (g.dimensions[1] == 1) p.a = 0, p.b = 2, p.c = 1;
+    if (g.dimensions[0] == 1)
+      p.a = 1, p.b = 2, p.c = 0;
+    else if (g.dimensions[1] == 1)
+      p.a = 0, p.b = 2, p.c = 1;
   }
   const int nc = g.dimensions[p.c];
   constexpr int kMaxPanels = 9;
@@ -64,21 +66,27 @@ std::string workspace_map_png_title(const WorkspaceMap& map, MapField field) {
 MapFieldDisplay map_field_display(MapField f) {
   switch (f) {
     case MapField::kTranslationalMin:
-    case MapField::kTranslationalMax: return {"N/mm", kMm};
+    case MapField::kTranslationalMax:
+      return {"N/mm", kMm};
     case MapField::kRotationalMin:
-    case MapField::kRotationalMax: return {"N mm/deg", kDeg / kNMm};
-    case MapField::kDeflectionTranslation: return {"mm", 1.0 / kMm};
-    case MapField::kDeflectionRotation: return {"deg", 1.0 / kDeg};
-    default: return {field_info(f).unit, 1.0};
+    case MapField::kRotationalMax:
+      return {"N mm/deg", kDeg / kNMm};
+    case MapField::kDeflectionTranslation:
+      return {"mm", 1.0 / kMm};
+    case MapField::kDeflectionRotation:
+      return {"deg", 1.0 / kDeg};
+    default:
+      return {field_info(f).unit, 1.0};
   }
 }
 
 Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map, MapField field) {
   const FieldValues* found = map.find(field);
   if (found == nullptr)
-    return Status::Invalid(fmt::format("{}: the map has no field {} (the deflections need a load, the iterations the "
-                                       "loaded mode)", path,
-                                       field_info(field).name));
+    return Status::Invalid(
+        fmt::format("{}: the map has no field {} (the deflections need a load, the iterations the "
+                    "loaded mode)",
+                    path, field_info(field).name));
   const MapGrid& g = map.grid;
   const PngPlanes planes = png_planes(g);
   const int a = planes.a, b = planes.b, c = planes.c;
@@ -136,8 +144,8 @@ Status write_workspace_map_png(const std::string& path, const WorkspaceMap& map,
     o.curves.push_back(std::move(curve));
   }
   if (contour)  // the legend's entry; the lines are the panels'
-    o.curves.push_back({{}, fmt::format("k_t_min = {:g} N/mm (--min-stiffness)", *map.min_stiffness * kMm),
-                        CurveStyle::kDashedRed});
+    o.curves.push_back(
+        {{}, fmt::format("k_t_min = {:g} N/mm (--min-stiffness)", *map.min_stiffness * kMm), CurveStyle::kDashedRed});
   if (panels.size() == 1) return write_png_map(path, panels.front(), o);
   return write_png_sheet(path, panels, o);
 }
@@ -165,10 +173,11 @@ Status write_design_sweep_png(const std::string& path, const FiveBarDesignSweep&
   o.colour_range = {0.0, 100.0};  // shares of different runs compare
   const auto& b = s.results[s.best];
   const double x = b.r1 / kMm, y = b.r2 / kMm;
-  o.curves.push_back({{{x - 0.4 * f.dx, y}, {x + 0.4 * f.dx, y}, {kNaN, kNaN}, {x, y - 0.4 * f.dy}, {x, y + 0.4 * f.dy}},
-                      fmt::format("best design: r1 = {:.4g} mm, r2 = {:.4g} mm ({:.1f}% of the region)", x, y,
-                                  100.0 * s.share(b.stiff)),
-                      CurveStyle::kSolidBlack});
+  o.curves.push_back(
+      {{{x - 0.4 * f.dx, y}, {x + 0.4 * f.dx, y}, {kNaN, kNaN}, {x, y - 0.4 * f.dy}, {x, y + 0.4 * f.dy}},
+       fmt::format("best design: r1 = {:.4g} mm, r2 = {:.4g} mm ({:.1f}% of the region)", x, y,
+                   100.0 * s.share(b.stiff)),
+       CurveStyle::kSolidBlack});
   return write_png_map(path, f, o);
 }
 

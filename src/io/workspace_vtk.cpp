@@ -38,7 +38,11 @@ class WorkspaceGrid {
     manipulability_->SetName("manipulability");
     rho_->SetName("rho");
     rho_->SetNumberOfComponents(3);
-    add_units(*grid_, {{"coordinates", "m"}, {"rho", "m"}, {"mu_min", "-"}, {"mu_max", "-"}, {"condition_number", "-"},
+    add_units(*grid_, {{"coordinates", "m"},
+                       {"rho", "m"},
+                       {"mu_min", "-"},
+                       {"mu_max", "-"},
+                       {"condition_number", "-"},
                        {"manipulability", "-"}});
   }
 
@@ -81,7 +85,9 @@ Status write_joint_workspace(const mechanisms::OrthoglideDesign& d, int n, const
   std::vector<vtkIdType> id(s.valid.size(), -1);
   for (std::size_t i = 0; i < s.valid.size(); ++i)
     if (s.valid[i]) id[i] = grid.add_point(s.p[i], s.rho[i], s.factors[i]);
-  auto index = [n](int i, int j, int k) { return i + static_cast<std::size_t>(n) * (j + static_cast<std::size_t>(n) * k); };
+  auto index = [n](int i, int j, int k) {
+    return i + static_cast<std::size_t>(n) * (j + static_cast<std::size_t>(n) * k);
+  };
   for (int k = 0; k + 1 < n; ++k)
     for (int j = 0; j + 1 < n; ++j)
       for (int i = 0; i + 1 < n; ++i) {

@@ -85,19 +85,21 @@ std::string YamlFields::text(const YAML::Node& v, const std::string& item, const
 
 Vec3 YamlFields::vec3(const YAML::Node& v, const std::string& item, const std::string& key, Quantity q,
                       const UnitOfInput& unit) const {
-  if (!v.IsSequence() || v.size() != 3) fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
+  if (!v.IsSequence() || v.size() != 3)
+    fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
   return {value(v[0], item, key, q, unit), value(v[1], item, key, q, unit), value(v[2], item, key, q, unit)};
 }
 
 Vec3 YamlFields::direction(const YAML::Node& v, const std::string& item, const std::string& key) const {
-  if (!v.IsSequence() || v.size() != 3) fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
+  if (!v.IsSequence() || v.size() != 3)
+    fail(v, item, fmt::format("'{}' must be a list of three numbers [x, y, z]", key));
   const Vec3 d(number(v[0], item, key), number(v[1], item, key), number(v[2], item, key));
   if (const Status s = check_direction(d, "'" + key + "'"); !s.ok()) fail(v, item, s.message());
   return d.stableNormalized();
 }
 
 Section YamlFields::shape_section(const YAML::Node& n, const std::string& item, const YAML::Node& type_node,
-                                 const FileUnits& units, const std::string& other_form) const {
+                                  const FileUnits& units, const std::string& other_form) const {
   const std::string type = text(type_node, item, "type");
   const UnitOfInput lu = units.of(Quantity::kLength);
   const std::string un = lu.name.empty() ? "m" : lu.name;
@@ -109,8 +111,9 @@ Section YamlFields::shape_section(const YAML::Node& n, const std::string& item, 
   auto wall = [&](double outer, const char* outer_name) {
     const double t = dim("t");
     if (!(2.0 * t < outer))
-      fail(n["t"], item, fmt::format("the wall t must be less than half of {} (t = {:g} {}, {} = {:g} {})", outer_name,
-                                     t / lu.scale, un, outer_name, outer / lu.scale, un));
+      fail(n["t"], item,
+           fmt::format("the wall t must be less than half of {} (t = {:g} {}, {} = {:g} {})", outer_name, t / lu.scale,
+                       un, outer_name, outer / lu.scale, un));
     return t;
   };
   if (type == "circle") return circle_section(dim("d"));

@@ -78,18 +78,16 @@ StatusOr<double> leg_angle(const FiveBarParams& p, const Vec2& point, int leg, i
         point_text(point), leg, leg, a.distance, std::abs(p.r1 - p.r2), p.r1 + p.r2));
   }
   if (a.failure == LegFailure::kAtBaseJoint) {
-    return Status::Invalid(fmt::format(
-        "five-bar inverse kinematics: {} coincides with base joint A{} (r1 = r2): theta{} is undetermined",
-        point_text(point), leg, leg));
+    return Status::Invalid(
+        fmt::format("five-bar inverse kinematics: {} coincides with base joint A{} (r1 = r2): theta{} is undetermined",
+                    point_text(point), leg, leg));
   }
   return a.theta;
 }
 
 }  // namespace
 
-std::string to_string(WorkingMode m) {
-  return std::string(1, m.sign1 > 0 ? '+' : '-') + (m.sign2 > 0 ? '+' : '-');
-}
+std::string to_string(WorkingMode m) { return std::string(1, m.sign1 > 0 ? '+' : '-') + (m.sign2 > 0 ? '+' : '-'); }
 
 std::optional<WorkingMode> working_mode_from_name(const std::string& name) {
   const auto sign = [](char c) { return c == '+' ? 1 : c == '-' ? -1 : 0; };
@@ -109,7 +107,8 @@ Status validate(const FiveBarParams& p) {
   const std::array<std::pair<const char*, double>, 3> lengths = {{{"r1", p.r1}, {"r2", p.r2}, {"r3", p.r3}}};
   for (const auto& [name, value] : lengths) {
     if (!(std::isfinite(value) && value > 0.0)) {
-      return Status::Invalid(fmt::format("five-bar parameter {} = {:g} m: a link length must be positive", name, value));
+      return Status::Invalid(
+          fmt::format("five-bar parameter {} = {:g} m: a link length must be positive", name, value));
     }
   }
   return Status::Ok();
@@ -158,12 +157,12 @@ StatusOr<std::array<FiveBarPosture, 2>> direct_kinematics(const FiveBarParams& p
   const double dist = D.norm();
   const double tol = kLengthTol * (p.r1 + p.r2 + p.r3);
   const auto where = [&] {
-    return fmt::format("theta1 = {:g} deg, theta2 = {:g} deg", theta1 / units::kDeg,
-                       theta2 / units::kDeg);
+    return fmt::format("theta1 = {:g} deg, theta2 = {:g} deg", theta1 / units::kDeg, theta2 / units::kDeg);
   };
   if (dist > 2.0 * p.r2 + tol) {
-    return Status::Invalid(fmt::format("five-bar direct kinematics: {} cannot be assembled (|B1B2| = {:g} m > 2 r2 = {:g} m)",
-                                       where(), dist, 2.0 * p.r2));
+    return Status::Invalid(
+        fmt::format("five-bar direct kinematics: {} cannot be assembled (|B1B2| = {:g} m > 2 r2 = {:g} m)", where(),
+                    dist, 2.0 * p.r2));
   }
   if (dist <= tol) {
     return Status::Invalid(fmt::format(
@@ -205,8 +204,7 @@ FiveBarJacobians five_bar_jacobians(const FiveBarPosture& q) {
 msa::Structure make_five_bar_structure(const FiveBarParams& p, const FiveBarPosture& q) {
   msa::Structure s;
   s.set_title(fmt::format("5R five-bar (Gonçalves et al. 2010), theta1 = {:g} deg, theta2 = {:g} deg, {} assembly",
-                          q.theta1 / units::kDeg, q.theta2 / units::kDeg,
-                          to_string(q.assembly)));
+                          q.theta1 / units::kDeg, q.theta2 / units::kDeg, to_string(q.assembly)));
   const auto at = [](const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); };
   // Section 5, Fig. 4a: each joint centre carries one node per link end.
   const std::array<Vec2, 8> positions = {q.A1, q.B1, q.B1, q.P, q.P, q.B2, q.B2, q.A2};

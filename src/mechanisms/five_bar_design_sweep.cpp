@@ -16,11 +16,11 @@ constexpr int kMaxSteps = 1000;
 
 Status check_range(const MapRange& r, const char* name) {
   if (!(std::isfinite(r.lo) && std::isfinite(r.hi) && r.lo > 0.0))
-    return Status::Invalid(fmt::format("the {} range {:g}:{:g} m: link lengths must be positive and finite", name,
-                                       r.lo, r.hi));
+    return Status::Invalid(
+        fmt::format("the {} range {:g}:{:g} m: link lengths must be positive and finite", name, r.lo, r.hi));
   if (r.lo > r.hi)
-    return Status::Invalid(fmt::format("the {} range {:g}:{:g} m is reversed; write the smaller bound first", name,
-                                       r.lo, r.hi));
+    return Status::Invalid(
+        fmt::format("the {} range {:g}:{:g} m is reversed; write the smaller bound first", name, r.lo, r.hi));
   return Status::Ok();
 }
 
@@ -37,14 +37,15 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
   if (Status s = check_range(o.r2, "r2"); !s.ok()) return s;
   const bool vary1 = o.r1.hi > o.r1.lo, vary2 = o.r2.hi > o.r2.lo;
   if ((vary1 || vary2) && (o.steps < 2 || o.steps > kMaxSteps))
-    return Status::Invalid(fmt::format("{} designs per length: a range needs 2 to {} (a single value needs none)",
-                                       o.steps, kMaxSteps));
+    return Status::Invalid(
+        fmt::format("{} designs per length: a range needs 2 to {} (a single value needs none)", o.steps, kMaxSteps));
   // The default MapGrid is one point: a sweep over it would rank designs by that point alone.
   const std::size_t n_region = o.region.num_points();
   if (o.region.num_varying_axes() < 2)
-    return Status::Invalid(fmt::format("region: {} point(s), not a plane of P; set it to make_map_grid([(x0, x1), "
-                                       "(y0, y1), 0], step) (m), as `kinestat design fivebar --region`",
-                                       n_region));
+    return Status::Invalid(
+        fmt::format("region: {} point(s), not a plane of P; set it to make_map_grid([(x0, x1), "
+                    "(y0, y1), 0], step) (m), as `kinestat design fivebar --region`",
+                    n_region));
   FiveBarKernelOptions first = o.base;  // r1, r2 are the swept ones: the ranges' first
   first.params.r1 = o.r1.lo;
   first.params.r2 = o.r2.lo;
@@ -69,13 +70,12 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
   const double postures = designs * static_cast<double>(n_region);
   const int threads = o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   const double hours = postures / (2.5e5 * threads) / 3600.0;
-  if (Status s = check_size(postures, o.max_postures,
-                            fmt::format("{:g} designs x {} region points", designs, n_region), "postures",
-                            fmt::format("that is about {} on {} thread{}; sweep fewer designs (steps) or a coarser "
-                                        "region, or raise the limit (--max-postures, max_postures)",
-                                        hours >= 1 ? fmt::format("{:.2g} h", hours)
-                                                   : fmt::format("{:.2g} min", hours * 60.0),
-                                        threads, threads > 1 ? "s" : ""));
+  if (Status s = check_size(
+          postures, o.max_postures, fmt::format("{:g} designs x {} region points", designs, n_region), "postures",
+          fmt::format("that is about {} on {} thread{}; sweep fewer designs (steps) or a coarser "
+                      "region, or raise the limit (--max-postures, max_postures)",
+                      hours >= 1 ? fmt::format("{:.2g} h", hours) : fmt::format("{:.2g} min", hours * 60.0), threads,
+                      threads > 1 ? "s" : ""));
       !s.ok())
     return s;
   out.region = o.region;

@@ -23,8 +23,8 @@ Vec3 at(const Vec2& v) { return {v.x(), v.y(), 0.0}; }
 bool link_properties_valid(const FiveBarParams& p) {
   const Material& m = p.link_material;
   const Section& s = p.link_section;
-  return m.E > 0 && m.G > 0 && std::isfinite(m.E) && std::isfinite(m.G) && s.A > 0 && s.Iy > 0 && s.Iz > 0 &&
-         s.J > 0 && s.Asy >= 0 && s.Asz >= 0;
+  return m.E > 0 && m.G > 0 && std::isfinite(m.E) && std::isfinite(m.G) && s.A > 0 && s.Iy > 0 && s.Iz > 0 && s.J > 0 &&
+         s.Asy >= 0 && s.Asz >= 0;
 }
 
 // What both five-bar kernels share: the options, the validity of the model, the inverse

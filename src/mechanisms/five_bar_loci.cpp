@@ -48,8 +48,7 @@ std::optional<Vec2> circle_intersection(const Vec2& c1, double r1, const Vec2& c
 
 }  // namespace
 
-std::vector<MapCurve> five_bar_singular_loci(const FiveBarParams& p, WorkingMode mode, Assembly assembly,
-                                             int samples) {
+std::vector<MapCurve> five_bar_singular_loci(const FiveBarParams& p, WorkingMode mode, Assembly assembly, int samples) {
   std::vector<MapCurve> loci{{"workspace boundary", {}}, {"parallel singularity", {}}};
   if (!validate(p).ok() || !check_loci_samples(samples).ok()) return loci;
   const double step = 2.0 * std::numbers::pi / samples;
@@ -119,8 +118,8 @@ StatusOr<Box2> five_bar_workspace_box(const FiveBarParams& p, WorkingMode mode, 
 
 Status check_loci_samples(int samples) {
   if (samples < 8 || samples > kMaxLociSamples)
-    return Status::Invalid(fmt::format("samples = {}: the loci take 8 to {} samples per turn (default 4096)", samples,
-                                       kMaxLociSamples));
+    return Status::Invalid(
+        fmt::format("samples = {}: the loci take 8 to {} samples per turn (default 4096)", samples, kMaxLociSamples));
   return Status::Ok();
 }
 

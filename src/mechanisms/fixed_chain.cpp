@@ -11,8 +11,8 @@ namespace kinestat::mechanisms::fixed_vjm {
 
 namespace {
 
-using BorderedMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxCoordinates + 6,
-                                     kMaxCoordinates + 6>;
+using BorderedMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxCoordinates + 6, kMaxCoordinates + 6>;
 using BorderedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxCoordinates + 6, 1>;
 
 // vjm::pose_difference and vjm::displace.
@@ -133,7 +133,7 @@ void FixedChain::walk(const CoordinateVector& x, ChainWalk& w, ChainJacobian& J)
 void FixedChain::hessian(const ChainWalk& w, const Vec6& F, CoordinateMatrix& H) const {
   H.setZero(n_ + m_, n_ + m_);
   vjm::for_each_hessian_term(w.tw.data(), w.count, w.T.p, F,
-                               [&](int b, int a, double value) { H(w.tw[b].slot, w.tw[a].slot) += value; });
+                             [&](int b, int a, double value) { H(w.tw[b].slot, w.tw[a].slot) += value; });
 }
 
 Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const Vec6* F, CoordinateMatrix* H) const {
@@ -529,8 +529,7 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
         const FixedChain& c = chains[i];
         const int m = c.num_virtual();
         const auto Hth = states_[i].H.bottomRightCorner(m, m);
-        const CoordinateMatrix spring =
-            (1.0 - kBranchSoftening) * c.spring_stiffness() - 0.5 * (Hth + Hth.transpose());
+        const CoordinateMatrix spring = (1.0 - kBranchSoftening) * c.spring_stiffness() - 0.5 * (Hth + Hth.transpose());
         found = states_[i].linearized && Eigen::LLT<CoordinateMatrix>(spring).info() == Eigen::Success;
       }
     }

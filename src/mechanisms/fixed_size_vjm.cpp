@@ -18,8 +18,7 @@ Mat6 transfer_compliance(const Mat6& G, const Vec3& r) {
   const Mat3 M = -skew(r);
   const Mat3 top_right = G.topRightCorner<3, 3>() + M * G.bottomRightCorner<3, 3>();
   Mat6 out;
-  out.topLeftCorner<3, 3>() =
-      G.topLeftCorner<3, 3>() + M * G.bottomLeftCorner<3, 3>() + top_right * M.transpose();
+  out.topLeftCorner<3, 3>() = G.topLeftCorner<3, 3>() + M * G.bottomLeftCorner<3, 3>() + top_right * M.transpose();
   out.topRightCorner<3, 3>() = top_right;
   out.bottomLeftCorner<3, 3>() = top_right.transpose();
   out.bottomRightCorner<3, 3>() = G.bottomRightCorner<3, 3>();

@@ -52,9 +52,12 @@ UnitQAxisLimits unit_q_axis_limits(double mu) {
 
 const char* to_string(CriticalPoint c) {
   switch (c) {
-    case CriticalPoint::kQ: return "Q";
-    case CriticalPoint::kR: return "R";
-    case CriticalPoint::kS: return "S";
+    case CriticalPoint::kQ:
+      return "Q";
+    case CriticalPoint::kR:
+      return "R";
+    case CriticalPoint::kS:
+      return "S";
   }
   return "?";
 }
@@ -69,7 +72,8 @@ Vec3 unit_critical_point_position(CriticalPoint c, double rho) {
       const double p = (rho - std::sqrt(2.0 - rho * rho)) / 2.0;  // eq. (19)
       return {p, p, 0.0};
     }
-    case CriticalPoint::kS: return {rho - 1.0, 0.0, 0.0};  // section 5.1, S points
+    case CriticalPoint::kS:
+      return {rho - 1.0, 0.0, 0.0};  // section 5.1, S points
   }
   return Vec3::Zero();
 }
@@ -353,7 +357,8 @@ MinimumSwitchPoints unit_minimum_switch_points(int n) {
   // Along the edge (r, r, t) two local minima compete: the vertex Q- (t = r) and one near t = 0.45,
   // which is lower until the switch. Both are tracked on the edge itself (a search over the whole box
   // refines only the best point and blurs the other by its grid step).
-  m.rho_q = bisect([&](double r) { return unit_edge_minimum(r, r + 0.1, 1.0) - unit_edge_factor(r, r); }, m.rho_rq, 0.4);
+  m.rho_q =
+      bisect([&](double r) { return unit_edge_minimum(r, r + 0.1, 1.0) - unit_edge_factor(r, r); }, m.rho_rq, 0.4);
   m.mu_q = 1.0 / sigma_max(C::kQ, m.rho_q);
   return m;
 }
@@ -415,8 +420,8 @@ WorkspaceSearch search_cube_with_encoder_offset(const OrthoglideGeometry& g, dou
 
 OrthoglideDesignCheck check_design(const OrthoglideDesign& d, int n, const std::vector<double>& encoder_offsets) {
   const OrthoglideGeometry g{d.link_length};
-  OrthoglideDesignCheck c{search_joint_space(g, d.rho_min, d.rho_max, d.joint_sum_limit, n),
-                          search_cube(g, d.p_min, d.p_max, n), {}};
+  OrthoglideDesignCheck c{
+      search_joint_space(g, d.rho_min, d.rho_max, d.joint_sum_limit, n), search_cube(g, d.p_min, d.p_max, n), {}};
   for (double e : encoder_offsets)
     c.encoder_offsets.push_back({e, search_cube_with_encoder_offset(g, d.p_min, d.p_max, e, n)});
   return c;

@@ -23,8 +23,7 @@ Vec6 released(bool about_a2, bool about_a1) {
 
 }  // namespace
 
-StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, OrthoglideArchitecture a,
-                                          const Vec3& p) {
+StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, OrthoglideArchitecture a, const Vec3& p) {
   if (Status st = validate_stiffness_model(m); !st.ok()) return st;
   const double L = m.link_length;
   StatusOr<Vec3> rho = inverse_kinematics(OrthoglideGeometry{L}, p);
@@ -32,8 +31,7 @@ StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, Ort
   const bool puu = a == OrthoglideArchitecture::kPUU;
 
   msa::Structure s;
-  s.set_title(fmt::format("Orthoglide {} at p = ({:g}, {:g}, {:g}) m", puu ? "3-PUU" : "3-PRPaR", p.x(), p.y(),
-                          p.z()));
+  s.set_title(fmt::format("Orthoglide {} at p = ({:g}, {:g}, {:g}) m", puu ? "3-PUU" : "3-PRPaR", p.x(), p.y(), p.z()));
   Material bar_material = m.bar_material, foot_material = m.foot_material;
   bar_material.id = "bar";
   foot_material.id = "foot";
@@ -73,10 +71,18 @@ StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, Ort
     s.add_joint({.id = id("actuator"), .node1 = ground, .node2 = foot, .frame = R, .stiffness = k_act});
     // Foot: the cantilever of the VJM's foot spring, local x = R's x towards the slider, y = R's y.
     const int slider_node = s.add_node(id("slider"), slider);
-    s.add_beam({.id = id("foot"), .node1 = foot, .node2 = slider_node, .material = foot_mat, .section = foot_sec,
-                .orientation = R.col(1), .theory = BeamTheory::kTimoshenko});
+    s.add_beam({.id = id("foot"),
+                .node1 = foot,
+                .node2 = slider_node,
+                .material = foot_mat,
+                .section = foot_sec,
+                .orientation = R.col(1),
+                .theory = BeamTheory::kTimoshenko});
     const int proximal = s.add_node(id(puu ? "leg start" : "proximal plate"), slider);
-    s.add_joint({.id = id(puu ? "U1" : "R1"), .node1 = slider_node, .node2 = proximal, .frame = F,
+    s.add_joint({.id = id(puu ? "U1" : "R1"),
+                 .node1 = slider_node,
+                 .node2 = proximal,
+                 .frame = F,
                  .stiffness = released(puu, true)});
 
     // A joint's rigid components tie node2 to node1 and a node can follow one master only, so the
@@ -101,15 +107,15 @@ StatusOr<msa::Structure> orthoglide_frame(const OrthoglideStiffnessModel& m, Ort
       const int n2 = s.add_node(name + " distal end", attach + bar_offset);
       const int n3 = s.add_node(name + " distal plate", attach + bar_offset);
       s.add_rigid_link({.id = name + " proximal plate", .master = proximal, .slave = n0});
-      s.add_joint({.id = name + " proximal pin", .node1 = n0, .node2 = n1, .frame = F,
-                   .stiffness = released(true, false)});
+      s.add_joint(
+          {.id = name + " proximal pin", .node1 = n0, .node2 = n1, .frame = F, .stiffness = released(true, false)});
       bar(n1, n2, name);
-      s.add_joint({.id = name + " distal pin", .node1 = n3, .node2 = n2, .frame = F,
-                   .stiffness = released(true, false)});
+      s.add_joint(
+          {.id = name + " distal pin", .node1 = n3, .node2 = n2, .frame = F, .stiffness = released(true, false)});
       s.add_rigid_link({.id = name + " distal plate", .master = distal, .slave = n3});
     }
-    s.add_joint({.id = id("platform R"), .node1 = platform, .node2 = distal, .frame = F,
-                 .stiffness = released(false, true)});
+    s.add_joint(
+        {.id = id("platform R"), .node1 = platform, .node2 = distal, .frame = F, .stiffness = released(false, true)});
   }
   s.set_report_node(tool);
   if (Status st = s.validate(); !st.ok()) return Status::Invalid("Orthoglide frame: " + st.message());

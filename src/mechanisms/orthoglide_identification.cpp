@@ -14,11 +14,16 @@ namespace kinestat::mechanisms {
 
 const char* input_name(OrthoglideInput input) {
   switch (input) {
-    case OrthoglideInput::kActuatorStiffness: return "actuator stiffness (N/m)";
-    case OrthoglideInput::kBarScale: return "bar section scale (-)";
-    case OrthoglideInput::kParallelogramWidth: return "parallelogram width (m)";
-    case OrthoglideInput::kPlatformOffset: return "platform offset (m)";
-    case OrthoglideInput::kFootLength: return "foot length (m)";
+    case OrthoglideInput::kActuatorStiffness:
+      return "actuator stiffness (N/m)";
+    case OrthoglideInput::kBarScale:
+      return "bar section scale (-)";
+    case OrthoglideInput::kParallelogramWidth:
+      return "parallelogram width (m)";
+    case OrthoglideInput::kPlatformOffset:
+      return "platform offset (m)";
+    case OrthoglideInput::kFootLength:
+      return "foot length (m)";
   }
   return "?";
 }
@@ -33,11 +38,16 @@ constexpr double kNoEffect = 1e-4;
 // The value of an input in the start model (the bar scale is relative to its section: 1).
 double start_value(const OrthoglideStiffnessModel& m, OrthoglideInput input) {
   switch (input) {
-    case OrthoglideInput::kActuatorStiffness: return m.actuator_stiffness;
-    case OrthoglideInput::kBarScale: return 1.0;
-    case OrthoglideInput::kParallelogramWidth: return m.parallelogram_width;
-    case OrthoglideInput::kPlatformOffset: return m.platform_offset;
-    case OrthoglideInput::kFootLength: return m.foot_length;
+    case OrthoglideInput::kActuatorStiffness:
+      return m.actuator_stiffness;
+    case OrthoglideInput::kBarScale:
+      return 1.0;
+    case OrthoglideInput::kParallelogramWidth:
+      return m.parallelogram_width;
+    case OrthoglideInput::kPlatformOffset:
+      return m.platform_offset;
+    case OrthoglideInput::kFootLength:
+      return m.foot_length;
   }
   return 0.0;
 }
@@ -48,11 +58,21 @@ OrthoglideStiffnessModel with_inputs(const OrthoglideStiffnessModel& start, cons
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     const double v = std::exp(log_values[static_cast<Eigen::Index>(k)]);
     switch (inputs[k]) {
-      case OrthoglideInput::kActuatorStiffness: m.actuator_stiffness = v; break;
-      case OrthoglideInput::kBarScale: m.bar_section = scaled_section(start.bar_section, v); break;
-      case OrthoglideInput::kParallelogramWidth: m.parallelogram_width = v; break;
-      case OrthoglideInput::kPlatformOffset: m.platform_offset = v; break;
-      case OrthoglideInput::kFootLength: m.foot_length = v; break;
+      case OrthoglideInput::kActuatorStiffness:
+        m.actuator_stiffness = v;
+        break;
+      case OrthoglideInput::kBarScale:
+        m.bar_section = scaled_section(start.bar_section, v);
+        break;
+      case OrthoglideInput::kParallelogramWidth:
+        m.parallelogram_width = v;
+        break;
+      case OrthoglideInput::kPlatformOffset:
+        m.platform_offset = v;
+        break;
+      case OrthoglideInput::kFootLength:
+        m.foot_length = v;
+        break;
     }
   }
   return m;
@@ -121,9 +141,10 @@ Status check_identifiable(Eigen::NumericalDiff<Residuals>& df, const Eigen::Vect
   const double largest = J.colwise().norm().maxCoeff();
   for (Eigen::Index k = 0; k < J.cols(); ++k)
     if (!(J.col(k).norm() > kNoEffect * largest))
-      return Status::Invalid(fmt::format("identification: the {} has no effect on the targets; remove it from the "
-                                         "inputs or add a target that depends on it",
-                                         input_name(inputs[static_cast<std::size_t>(k)])));
+      return Status::Invalid(
+          fmt::format("identification: the {} has no effect on the targets; remove it from the "
+                      "inputs or add a target that depends on it",
+                      input_name(inputs[static_cast<std::size_t>(k)])));
   const Eigen::MatrixXd Jn = J * J.colwise().norm().cwiseInverse().asDiagonal();
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
   const Eigen::VectorXd& sv = svd.singularValues();
@@ -134,9 +155,10 @@ Status check_identifiable(Eigen::NumericalDiff<Residuals>& df, const Eigen::Vect
     if (std::abs(v[k]) > 0.05)
       combination += fmt::format("{}{:+.2f} log({})", combination.empty() ? "" : " ", v[k],
                                  input_name(inputs[static_cast<std::size_t>(k)]));
-  return Status::Invalid(fmt::format("identification: the targets cannot determine the inputs: changing {} changes "
-                                     "no target (condition {:.1e}); give targets that tell these inputs apart",
-                                     combination, sv[0] / sv[sv.size() - 1]));
+  return Status::Invalid(
+      fmt::format("identification: the targets cannot determine the inputs: changing {} changes "
+                  "no target (condition {:.1e}); give targets that tell these inputs apart",
+                  combination, sv[0] / sv[sv.size() - 1]));
 }
 
 }  // namespace
@@ -147,12 +169,13 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
                                                               double tolerance) {
   if (Status s = validate_stiffness_model(start); !s.ok()) return s;
   if (!(tolerance > 0.0 && tolerance < 1.0))
-    return Status::Invalid(fmt::format("identification tolerance {:g}: give a relative residual in (0, 1), e.g. 1e-8",
-                                       tolerance));
+    return Status::Invalid(
+        fmt::format("identification tolerance {:g}: give a relative residual in (0, 1), e.g. 1e-8", tolerance));
   if (inputs.empty() || targets.size() < inputs.size())
-    return Status::Invalid(fmt::format("identification: {} target(s) for {} input(s); give at least as many "
-                                       "targets as inputs",
-                                       targets.size(), inputs.size()));
+    return Status::Invalid(
+        fmt::format("identification: {} target(s) for {} input(s); give at least as many "
+                    "targets as inputs",
+                    targets.size(), inputs.size()));
   for (std::size_t k = 0; k < targets.size(); ++k) {
     const ComplianceTarget& t = targets[k];
     if (t.row < 0 || t.row > 5 || t.col < 0 || t.col > 5 || !std::isfinite(t.value) || t.value == 0.0)
@@ -181,10 +204,10 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
     x[static_cast<Eigen::Index>(k)] = std::log(v);
     if ((inputs[k] == OrthoglideInput::kBarScale && start.bar_spring) ||
         (inputs[k] == OrthoglideInput::kFootLength && start.foot_spring))
-      return Status::Invalid(fmt::format("identification: the start model overrides the {} spring with a 6x6 "
-                                         "matrix, so the {} has no effect; remove the override or that input",
-                                         inputs[k] == OrthoglideInput::kBarScale ? "bar" : "foot",
-                                         input_name(inputs[k])));
+      return Status::Invalid(
+          fmt::format("identification: the start model overrides the {} spring with a 6x6 "
+                      "matrix, so the {} has no effect; remove the override or that input",
+                      inputs[k] == OrthoglideInput::kBarScale ? "bar" : "foot", input_name(inputs[k])));
   }
 
   Status failure = Status::Ok();
@@ -225,10 +248,11 @@ StatusOr<OrthoglideIdentification> identify_orthoglide_inputs(const OrthoglideSt
                    out.iterations, out.evaluations, worst, worst_label);
   out.report = std::move(r);
   if (!(worst <= tolerance))
-    return Status::NotConverged(fmt::format("identification did not reach the tolerance {:g}: from this start, no "
-                                            "values of the inputs make the model meet these targets (inconsistent "
-                                            "targets, or a start too far away); the closest model found:\n{}",
-                                            tolerance, out.report));
+    return Status::NotConverged(
+        fmt::format("identification did not reach the tolerance {:g}: from this start, no "
+                    "values of the inputs make the model meet these targets (inconsistent "
+                    "targets, or a start too far away); the closest model found:\n{}",
+                    tolerance, out.report));
   return out;
 }
 

@@ -38,9 +38,9 @@ class OrthoglideKernel final : public PostureKernel {
     model_valid_ = validate_stiffness_model(m).ok();
     // orthoglide_chains' springs; the chains' validation (vjm::Chain::validate) refuses a spring that
     // is not symmetric positive definite, which only the overrides can be.
-    const Mat6 foot = m.foot_spring ? *m.foot_spring
-                                    : vjm::cantilever_spring(m.foot_material, m.foot_section, m.foot_length,
-                                                             BeamTheory::kTimoshenko);
+    const Mat6 foot =
+        m.foot_spring ? *m.foot_spring
+                      : vjm::cantilever_spring(m.foot_material, m.foot_section, m.foot_length, BeamTheory::kTimoshenko);
     const Mat6 bar = m.bar_spring ? *m.bar_spring
                                   : vjm::cantilever_spring(m.bar_material, m.bar_section, m.link_length,
                                                            BeamTheory::kEulerBernoulli);
@@ -200,7 +200,7 @@ class OrthoglideKernel final : public PostureKernel {
   OrthoglideKernelOptions o_;
   bool geometry_valid_ = false, model_valid_ = false, springs_valid_ = false;
   std::array<Mat3, 3> base_;
-  std::array<Mat6, 3> foot_compliance_;  // global axes, about the slider point
+  std::array<Mat6, 3> foot_compliance_;   // global axes, about the slider point
   Mat6 leg_compliance_, bar_compliance_;  // in their own axes
   Mat6 foot_, bar_;                       // stiffness in their own axes
   fixed_vjm::LoadedPlatform loaded_;      // the chains of the loaded mode, rebuilt per posture
@@ -248,8 +248,9 @@ PostureResult OrthoglideKernel::loaded(const Vec3& p, const Vec3& rho, const Mat
 Status validate(const OrthoglideKernelOptions& options) {
   if (Status s = validate_stiffness_model(options.model); !s.ok()) return s;
   if (options.wrench && options.displacement)
-    return Status::Invalid("wrench and displacement: the loaded mode takes one of them (an external wrench or a "
-                           "prescribed tool displacement); set the other to None");
+    return Status::Invalid(
+        "wrench and displacement: the loaded mode takes one of them (an external wrench or a "
+        "prescribed tool displacement); set the other to None");
   if (options.wrench) {
     if (Status s = check_entries(options.wrench->head<3>(), Quantity::kForce, "wrench (force, N)"); !s.ok()) return s;
     if (Status s = check_entries(options.wrench->tail<3>(), Quantity::kMoment, "wrench (moment, N m)"); !s.ok())

@@ -26,10 +26,10 @@ int serial_singular_chain(const Vec3& p, const Vec3& rho) {
 
 Status check_serial_regular(const Vec3& p, const Vec3& rho) {
   if (const int i = serial_singular_chain(p, rho); i >= 0)
-    return Status::Singular(fmt::format(
-        "Orthoglide posture p = {}, rho = {}: chain {} is at a serial singularity (p_{} = rho_{}, the bar "
-        "is orthogonal to its slider); J^-1 is unbounded there",
-        format_point(p), format_point(rho), kAxis[i], kAxis[i], kAxis[i]));
+    return Status::Singular(
+        fmt::format("Orthoglide posture p = {}, rho = {}: chain {} is at a serial singularity (p_{} = rho_{}, the bar "
+                    "is orthogonal to its slider); J^-1 is unbounded there",
+                    format_point(p), format_point(rho), kAxis[i], kAxis[i], kAxis[i]));
   return Status::Ok();
 }
 
@@ -49,7 +49,8 @@ Status validate(const OrthoglideGeometry& g) {
 
 StatusOr<Vec3> inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p, const OrthoglideSigns& s) {
   if (Status st = validate(g); !st.ok()) return st;
-  if (!p.allFinite()) return Status::Invalid(fmt::format("Orthoglide point p = {}: a coordinate is not finite", format_point(p)));
+  if (!p.allFinite())
+    return Status::Invalid(fmt::format("Orthoglide point p = {}: a coordinate is not finite", format_point(p)));
   Vec3 rho;
   for (int i = 0; i < 3; ++i) {
     if (s[i] != 1 && s[i] != -1)
@@ -57,9 +58,9 @@ StatusOr<Vec3> inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p, co
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     const double r2 = radicand(g, p, i);
     if (r2 < 0.0)
-      return Status::Invalid(fmt::format(
-          "Orthoglide point p = {} is out of reach of chain {}: p_{}^2 + p_{}^2 exceeds L^2 = ({} m)^2", format_point(p),
-          kAxis[i], kAxis[j], kAxis[k], g.link_length));
+      return Status::Invalid(
+          fmt::format("Orthoglide point p = {} is out of reach of chain {}: p_{}^2 + p_{}^2 exceeds L^2 = ({} m)^2",
+                      format_point(p), kAxis[i], kAxis[j], kAxis[k], g.link_length));
     rho[i] = p[i] + s[i] * std::sqrt(r2);  // eq. (3)
   }
   return rho;
@@ -86,8 +87,8 @@ StatusOr<std::array<Vec3, 2>> direct_kinematics(const OrthoglideGeometry& g, con
   if (Status st = validate(g); !st.ok()) return st;
   for (int i = 0; i < 3; ++i)
     if (!(rho[i] > 0.0 && std::isfinite(rho[i])))
-      return Status::Invalid(fmt::format("Orthoglide joints rho = {}: rho_{} must be positive and finite (eq. 2)", format_point(rho),
-                                         kAxis[i]));
+      return Status::Invalid(fmt::format("Orthoglide joints rho = {}: rho_{} must be positive and finite (eq. 2)",
+                                         format_point(rho), kAxis[i]));
   // Eq. (4) divided by B = (rho_x rho_y rho_z)^2: a t^2 + t + c = 0, a = sum 1/rho_i^2 = A/B,
   // c = (sum rho_i^2 - 4 L^2) / 4 = C/B. Same roots, no sixth powers of rho.
   const double a = rho.cwiseInverse().squaredNorm();
@@ -128,8 +129,8 @@ StatusOr<Mat3> inverse_jacobian(const Vec3& p, const Vec3& rho) {
 StatusOr<double> inverse_jacobian_determinant(const Vec3& p, const Vec3& rho) {
   if (Status st = check_serial_regular(p, rho); !st.ok()) return st;
   // Eq. (6).
-  const double num = p.x() * rho.y() * rho.z() + rho.x() * p.y() * rho.z() + rho.x() * rho.y() * p.z() -
-                     rho.x() * rho.y() * rho.z();
+  const double num =
+      p.x() * rho.y() * rho.z() + rho.x() * p.y() * rho.z() + rho.x() * rho.y() * p.z() - rho.x() * rho.y() * rho.z();
   return num / ((p.x() - rho.x()) * (p.y() - rho.y()) * (p.z() - rho.z()));
 }
 

@@ -96,9 +96,9 @@ StatusOr<std::vector<Chain>> orthoglide_chains(const OrthoglideStiffnessModel& m
   const double L = m.link_length;
   StatusOr<Vec3> rho = inverse_kinematics(OrthoglideGeometry{L}, p);
   if (!rho.ok()) return rho.status();
-  const Mat6 foot = m.foot_spring ? *m.foot_spring
-                                  : vjm::cantilever_spring(m.foot_material, m.foot_section, m.foot_length,
-                                                           BeamTheory::kTimoshenko);
+  const Mat6 foot =
+      m.foot_spring ? *m.foot_spring
+                    : vjm::cantilever_spring(m.foot_material, m.foot_section, m.foot_length, BeamTheory::kTimoshenko);
   const Mat6 leg = 2.0 * bar_spring(m);
   std::vector<Chain> chains;
   for (int i = 0; i < 3; ++i) {

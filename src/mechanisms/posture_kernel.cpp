@@ -14,11 +14,16 @@ namespace kinestat::mechanisms {
 
 const char* to_string(PostureStatus s) {
   switch (s) {
-    case PostureStatus::kOk: return "ok";
-    case PostureStatus::kUnreachable: return "unreachable";
-    case PostureStatus::kSingular: return "singular";
-    case PostureStatus::kFailed: return "failed";
-    case PostureStatus::kNearSingular: return "near-singular";
+    case PostureStatus::kOk:
+      return "ok";
+    case PostureStatus::kUnreachable:
+      return "unreachable";
+    case PostureStatus::kSingular:
+      return "singular";
+    case PostureStatus::kFailed:
+      return "failed";
+    case PostureStatus::kNearSingular:
+      return "near-singular";
   }
   return "unknown";
 }

@@ -77,7 +77,7 @@ class ReferenceOrthoglideKernel final : public PostureKernel {
   PostureResult evaluate(const Vec3& point) override {
     PostureResult r;
     auto vt = velocity_transmission_at(OrthoglideGeometry{o_.model.link_length}, point);
-    if (!vt.ok()) return r;  // kUnreachable (outside a leg's cylinder)
+    if (!vt.ok()) return r;                           // kUnreachable (outside a leg's cylinder)
     r.singularity_measure = vt->mu_min / vt->mu_max;  // sigma_min / sigma_max
     if (!std::isfinite(r.singularity_measure)) r.singularity_measure = 0.0;
     auto chains = orthoglide_chains(o_.model, o_.architecture, point);

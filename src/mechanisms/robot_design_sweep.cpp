@@ -29,12 +29,13 @@ Status check_parameters(const std::vector<DesignParameter>& ps) {
     if (!seen.insert(p.name).second)
       return Status::Invalid(fmt::format("design sweep: parameter '{}' is swept twice; name it once", p.name));
     if (!(std::isfinite(p.lo) && std::isfinite(p.hi)))
-      return Status::Invalid(fmt::format("design sweep: parameter '{}': the range {:g}:{:g} is not finite", p.name,
-                                         p.lo, p.hi));
+      return Status::Invalid(
+          fmt::format("design sweep: parameter '{}': the range {:g}:{:g} is not finite", p.name, p.lo, p.hi));
     if (p.lo > p.hi)
-      return Status::Invalid(fmt::format("design sweep: parameter '{}': the range {:g}:{:g} is reversed; write the "
-                                         "smaller bound first",
-                                         p.name, p.lo, p.hi));
+      return Status::Invalid(
+          fmt::format("design sweep: parameter '{}': the range {:g}:{:g} is reversed; write the "
+                      "smaller bound first",
+                      p.name, p.lo, p.hi));
   }
   return Status::Ok();
 }
@@ -74,16 +75,17 @@ std::vector<double> design_values(const DesignParameter& p, int steps) {
 StatusOr<RobotDesignSweep> robot_design_sweep(const RobotDesignFactory& factory, const RobotDesignSweepOptions& o) {
   if (!factory) return Status::Invalid("design sweep: no model factory");
   if (Status s = check_parameters(o.parameters); !s.ok()) return s;
-  const bool varies = std::any_of(o.parameters.begin(), o.parameters.end(),
-                                  [](const DesignParameter& p) { return p.hi > p.lo; });
+  const bool varies =
+      std::any_of(o.parameters.begin(), o.parameters.end(), [](const DesignParameter& p) { return p.hi > p.lo; });
   if (varies && (o.steps < 2 || o.steps > kMaxSteps))
-    return Status::Invalid(fmt::format("{} designs per parameter: a range needs 2 to {} (a single value needs none)",
-                                       o.steps, kMaxSteps));
+    return Status::Invalid(
+        fmt::format("{} designs per parameter: a range needs 2 to {} (a single value needs none)", o.steps, kMaxSteps));
   const std::size_t n_region = o.region.num_points();
   if (o.region.num_varying_axes() < 2)
-    return Status::Invalid(fmt::format("region: {} point(s), neither a plane nor a box; make it with make_map_grid "
-                                       "over ranges of which at least two span more than one point",
-                                       n_region));
+    return Status::Invalid(
+        fmt::format("region: {} point(s), neither a plane nor a box; make it with make_map_grid "
+                    "over ranges of which at least two span more than one point",
+                    n_region));
   MapOptions map_options;
   map_options.near_singular_threshold = o.near_singular_threshold;
   map_options.min_stiffness = o.min_stiffness;
@@ -112,8 +114,8 @@ StatusOr<RobotDesignSweep> robot_design_sweep(const RobotDesignFactory& factory,
   // Counted before anything runs: a sweep of hours is a choice to make, not a typo to start.
   const double postures = designs * static_cast<double>(n_region);
   const int threads = o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const double rate = (loaded ? kRobotKernelLoadedPosturesPerSecond : kRobotKernelPosturesPerSecond) * threads *
-                      group.size;
+  const double rate =
+      (loaded ? kRobotKernelLoadedPosturesPerSecond : kRobotKernelPosturesPerSecond) * threads * group.size;
   if (Status s = check_size(postures, o.max_postures, fmt::format("{:g} designs x {} region points", designs, n_region),
                             "postures",
                             fmt::format("that is about {} on {} thread{}{}; sweep fewer designs (steps) or a coarser "
@@ -173,9 +175,9 @@ StatusOr<RobotDesignSweep> robot_design_sweep(const RobotDesignFactory& factory,
     std::vector<char> text;
     for (std::size_t k : mine) {
       const RobotDesignResult& r = out.results[k];
-      numbers.insert(numbers.end(), {static_cast<double>(r.status.code()), r.reachable_measure, r.stiff_measure,
-                                     static_cast<double>(r.reachable_points), static_cast<double>(r.stiff_points),
-                                     r.k_t_min_worst});
+      numbers.insert(numbers.end(),
+                     {static_cast<double>(r.status.code()), r.reachable_measure, r.stiff_measure,
+                      static_cast<double>(r.reachable_points), static_cast<double>(r.stiff_points), r.k_t_min_worst});
       for (const std::string* s : {&r.status.message(), static_cast<const std::string*>(&descriptions[k])}) {
         text.insert(text.end(), s->begin(), s->end());
         text.push_back('\0');
@@ -229,8 +231,8 @@ StatusOr<RobotDesignSweep> robot_design_sweep(const RobotDesignFactory& factory,
       std::string values;
       for (std::size_t p = 0; p < o.parameters.size(); ++p)
         values += fmt::format("{}{} = {:g}", p ? ", " : "", o.parameters[p].name, r.values[p]);
-      all_failed = Status(r.status.code(), fmt::format("every design failed; the first ({}): {}", values,
-                                                       r.status.message()));
+      all_failed =
+          Status(r.status.code(), fmt::format("every design failed; the first ({}): {}", values, r.status.message()));
     }
   }
   // Rank 0 alone knows: every rank returns its verdict.

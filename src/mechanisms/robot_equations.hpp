@@ -18,8 +18,7 @@ struct RobotJacobians {
   MatX direct;   // d(closure)/d(passive coordinates, platform): square; singular at Type 2 ones
   std::vector<int> inverse_columns, direct_columns;  // unknown index of each column
 };
-RobotJacobians robot_jacobians(const RobotModel& model, const RobotPosture& posture, RobotData& data,
-                               const VecX& task);
+RobotJacobians robot_jacobians(const RobotModel& model, const RobotPosture& posture, RobotData& data, const VecX& task);
 
 // "leg 2 joint 3 (universal) coordinate 2" or "the platform's rz", for an unknown index.
 std::string column_name(const RobotModel& model, int unknown);

@@ -26,12 +26,15 @@ Status validate(const RobotKernelOptions& o) {
   if (o.map_axes) {
     for (int a = 0; a < 3; ++a) {
       const int t = (*o.map_axes)[a];
-      if (t < -1 || t >= n) return Status::Invalid(fmt::format("robot kernel: map axis {} names task coordinate {}, "
-                                                               "which does not exist", "xyz"[a], t));
+      if (t < -1 || t >= n)
+        return Status::Invalid(
+            fmt::format("robot kernel: map axis {} names task coordinate {}, "
+                        "which does not exist",
+                        "xyz"[a], t));
       for (int b = 0; b < a; ++b)
         if (t >= 0 && (*o.map_axes)[b] == t)
-          return Status::Invalid(fmt::format("robot kernel: map axes {} and {} set the same task coordinate", "xyz"[b],
-                                             "xyz"[a]));
+          return Status::Invalid(
+              fmt::format("robot kernel: map axes {} and {} set the same task coordinate", "xyz"[b], "xyz"[a]));
     }
   }
   if (o.wrench && o.displacement) return Status::Invalid("robot kernel: give a wrench or a displacement, not both");
@@ -39,8 +42,9 @@ Status validate(const RobotKernelOptions& o) {
     return Status::Invalid("robot kernel: the load is not finite");
   if (o.method == StiffnessMethod::kMsa) {
     if (o.wrench || o.displacement)
-      return Status::Invalid("robot kernel: the loaded mode (a wrench or a displacement) is computed by the VJM only; "
-                             "use the VJM method (--method vjm), or drop the load for MSA");
+      return Status::Invalid(
+          "robot kernel: the loaded mode (a wrench or a displacement) is computed by the VJM only; "
+          "use the VJM method (--method vjm), or drop the load for MSA");
     // The structure at home: a model MSA cannot express is refused here, not point by point.
     if (auto s = robot_msa_structure(*o.model, o.model->home()); !s.ok()) return s.status();
   }
@@ -92,7 +96,8 @@ class RobotKernel final : public PostureKernel {
     if (!solved_) return evaluate(point);
     start_ = posture_;
     set_task(point);
-    const bool predict = predictable_ && (point - 2.0 * point_ + previous_point_).norm() <= 1e-9 * (point - point_).norm();
+    const bool predict =
+        predictable_ && (point - 2.0 * point_ + previous_point_).norm() <= 1e-9 * (point - point_).norm();
     if (predict) {
       posture_.q = 2.0 * start_.q - previous_.q;
       posture_.tool.translation() = 2.0 * start_.tool.translation() - previous_.tool.translation();

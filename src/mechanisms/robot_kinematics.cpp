@@ -18,7 +18,7 @@ namespace {
 constexpr int kPlanarComponents[3] = {0, 1, 5};
 constexpr double kTolerance = 1e-12;  // scaled residual (m / length scale, rad): ~1e4 eps
 constexpr int kMaxNewton = 25;
-constexpr double kMaxNewtonStep = 0.3;     // scaled: a larger step is shortened (damped Newton)
+constexpr double kMaxNewtonStep = 0.3;      // scaled: a larger step is shortened (damped Newton)
 constexpr double kContinuationStep = 0.05;  // scaled task distance per continuation step
 constexpr double kMinContinuationStep = 1e-3;
 
@@ -28,7 +28,8 @@ bool is_angle(TaskCoordinate c) { return c >= TaskCoordinate::kRx; }
 
 // Rotation angles (rx, ry, rz) of R = Rz(rz) Ry(ry) Rx(rx) and E with omega = E (rx', ry', rz').
 Vec3 angles(const Mat3& R) {
-  return {std::atan2(R(2, 1), R(2, 2)), std::atan2(-R(2, 0), std::hypot(R(0, 0), R(1, 0))), std::atan2(R(1, 0), R(0, 0))};
+  return {std::atan2(R(2, 1), R(2, 2)), std::atan2(-R(2, 0), std::hypot(R(0, 0), R(1, 0))),
+          std::atan2(R(1, 0), R(0, 0))};
 }
 Mat3 angle_rates(const Vec3& a) {
   const Eigen::AngleAxisd Rz(a.z(), Vec3::UnitZ()), Ry(a.y(), Vec3::UnitY());
@@ -457,8 +458,8 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
     if (j.limits.empty()) continue;
     const auto [lo, hi] = j.limits[c.index];
     if (posture.q(k) < lo || posture.q(k) > hi) {
-      out.message = fmt::format("{} at {:.6g}, outside its limits [{:g}, {:g}]", model.coordinate_name(k), posture.q(k),
-                                lo, hi);
+      out.message =
+          fmt::format("{} at {:.6g}, outside its limits [{:g}, {:g}]", model.coordinate_name(k), posture.q(k), lo, hi);
       return out;
     }
   }

@@ -13,12 +13,18 @@ namespace kinestat::mechanisms {
 
 const char* to_string(RobotJointType t) {
   switch (t) {
-    case RobotJointType::kRevolute: return "revolute";
-    case RobotJointType::kPrismatic: return "prismatic";
-    case RobotJointType::kUniversal: return "universal";
-    case RobotJointType::kSpherical: return "spherical";
-    case RobotJointType::kCylindrical: return "cylindrical";
-    case RobotJointType::kParallelogram: return "parallelogram";
+    case RobotJointType::kRevolute:
+      return "revolute";
+    case RobotJointType::kPrismatic:
+      return "prismatic";
+    case RobotJointType::kUniversal:
+      return "universal";
+    case RobotJointType::kSpherical:
+      return "spherical";
+    case RobotJointType::kCylindrical:
+      return "cylindrical";
+    case RobotJointType::kParallelogram:
+      return "parallelogram";
   }
   return "?";
 }
@@ -26,9 +32,12 @@ const char* to_string(RobotJointType t) {
 int coordinate_count(RobotJointType t) {
   switch (t) {
     case RobotJointType::kUniversal:
-    case RobotJointType::kCylindrical: return 2;
-    case RobotJointType::kSpherical: return 3;
-    default: return 1;
+    case RobotJointType::kCylindrical:
+      return 2;
+    case RobotJointType::kSpherical:
+      return 3;
+    default:
+      return 1;
   }
 }
 
@@ -39,10 +48,14 @@ const char* to_string(TaskCoordinate c) {
 
 const char* to_string(KinematicsStatus s) {
   switch (s) {
-    case KinematicsStatus::kOk: return "ok";
-    case KinematicsStatus::kUnreachable: return "unreachable";
-    case KinematicsStatus::kSingular: return "singular";
-    case KinematicsStatus::kOtherBranch: return "other branch";
+    case KinematicsStatus::kOk:
+      return "ok";
+    case KinematicsStatus::kUnreachable:
+      return "unreachable";
+    case KinematicsStatus::kSingular:
+      return "singular";
+    case KinematicsStatus::kOtherBranch:
+      return "other branch";
   }
   return "?";
 }
@@ -113,14 +126,19 @@ void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain
       return chain.add_passive(type, axis, value, label);
     };
     switch (j.type) {
-      case RobotJointType::kRevolute: motion(JointType::kRevolute, j.axes[0], 0, j.label); break;
-      case RobotJointType::kPrismatic: motion(JointType::kPrismatic, j.axes[0], 0, j.label); break;
+      case RobotJointType::kRevolute:
+        motion(JointType::kRevolute, j.axes[0], 0, j.label);
+        break;
+      case RobotJointType::kPrismatic:
+        motion(JointType::kPrismatic, j.axes[0], 0, j.label);
+        break;
       case RobotJointType::kUniversal:
         motion(JointType::kRevolute, j.axes[0], 0, j.label + " axis 1");
         motion(JointType::kRevolute, j.axes[1], 1, j.label + " axis 2");
         break;
       case RobotJointType::kSpherical:
-        for (int i = 0; i < 3; ++i) motion(JointType::kRevolute, j.axes[i], i, fmt::format("{} axis {}", j.label, i + 1));
+        for (int i = 0; i < 3; ++i)
+          motion(JointType::kRevolute, j.axes[i], i, fmt::format("{} axis {}", j.label, i + 1));
         break;
       case RobotJointType::kCylindrical:
         motion(JointType::kRevolute, j.axes[0], 0, j.label + " rotation");
@@ -167,7 +185,8 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
   if (d.task.empty()) return invalid("`task:` names no coordinate; give e.g. [x, y, z]");
   for (std::size_t i = 0; i < d.task.size(); ++i)
     for (std::size_t k = 0; k < i; ++k)
-      if (d.task[i] == d.task[k]) return invalid(fmt::format("task coordinate {} is named twice", to_string(d.task[i])));
+      if (d.task[i] == d.task[k])
+        return invalid(fmt::format("task coordinate {} is named twice", to_string(d.task[i])));
   RobotModel m;
   double scale = d.tool.norm();
   int actuated = 0;
@@ -198,14 +217,18 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
         j.axes[a].normalize();
       }
       if (axes == 2 && j.axes[0].cross(j.axes[1]).norm() < 1e-6)
-        return invalid(fmt::format("{}: its two axes are parallel; a universal joint's axes cross at an angle", j.label));
+        return invalid(
+            fmt::format("{}: its two axes are parallel; a universal joint's axes cross at an angle", j.label));
       if (axes == 3 && std::abs(j.axes[0].dot(j.axes[1].cross(j.axes[2]))) < 1e-6)
         return invalid(fmt::format("{}: its three axes are coplanar; give three independent axes", j.label));
       if (j.type == RobotJointType::kParallelogram) {
         if ((j.to - j.at).norm() < 1e-9 * std::max(1.0, scale))
           return invalid(fmt::format("{}: `to` is at `at`; the parallelogram's bars need a length", j.label));
-        if (j.actuated) return invalid(fmt::format("{}: a parallelogram cannot be actuated here; actuate the joint "
-                                                   "before it", j.label));
+        if (j.actuated)
+          return invalid(
+              fmt::format("{}: a parallelogram cannot be actuated here; actuate the joint "
+                          "before it",
+                          j.label));
       }
       if (j.actuated) {
         ++actuated;
@@ -217,18 +240,20 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
         return invalid(fmt::format("{}: {} limits for {} coordinates", j.label, j.limits.size(), n));
       for (const auto& [lo, hi] : j.limits)
         if (!(lo <= 0.0 && 0.0 <= hi))
-          return invalid(fmt::format("{}: limits [{:g}, {:g}] exclude the home posture (0: coordinates are measured "
-                                     "from the drawing)", j.label, lo, hi));
+          return invalid(
+              fmt::format("{}: limits [{:g}, {:g}] exclude the home posture (0: coordinates are measured "
+                          "from the drawing)",
+                          j.label, lo, hi));
       if (d.planar) {
-        const bool in_plane =
-            j.type == RobotJointType::kPrismatic ? std::abs(j.axes[0].z()) < 1e-9
-            : (j.type == RobotJointType::kRevolute || j.type == RobotJointType::kParallelogram)
-                ? j.axes[0].head<2>().norm() < 1e-9
-                : false;
+        const bool in_plane = j.type == RobotJointType::kPrismatic ? std::abs(j.axes[0].z()) < 1e-9
+                              : (j.type == RobotJointType::kRevolute || j.type == RobotJointType::kParallelogram)
+                                  ? j.axes[0].head<2>().norm() < 1e-9
+                                  : false;
         if (!in_plane)
-          return invalid(fmt::format("{}: a planar robot has revolute joints about z and prismatic ones in the x-y "
-                                     "plane only ({} with axis ({:g}, {:g}, {:g}))",
-                                     j.label, to_string(j.type), j.axes[0].x(), j.axes[0].y(), j.axes[0].z()));
+          return invalid(
+              fmt::format("{}: a planar robot has revolute joints about z and prismatic ones in the x-y "
+                          "plane only ({} with axis ({:g}, {:g}, {:g}))",
+                          j.label, to_string(j.type), j.axes[0].x(), j.axes[0].y(), j.axes[0].z()));
       }
       for (int c = 0; c < coordinate_count(j.type); ++c)
         m.coords_.push_back({static_cast<int>(l), static_cast<int>(i), c});
@@ -241,9 +266,10 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
       if (c != TaskCoordinate::kX && c != TaskCoordinate::kY && c != TaskCoordinate::kRz)
         return invalid(fmt::format("task coordinate {}: a planar robot commands x, y and rz only", to_string(c)));
   if (actuated != static_cast<int>(d.task.size()))
-    return invalid(fmt::format("{} actuated joint{} for {} task coordinate{}; a parallel robot has one actuator per "
-                               "commanded coordinate (mark joints `actuated: true`)",
-                               actuated, actuated == 1 ? "" : "s", d.task.size(), d.task.size() == 1 ? "" : "s"));
+    return invalid(
+        fmt::format("{} actuated joint{} for {} task coordinate{}; a parallel robot has one actuator per "
+                    "commanded coordinate (mark joints `actuated: true`)",
+                    actuated, actuated == 1 ? "" : "s", d.task.size(), d.task.size() == 1 ? "" : "s"));
   m.num_q_ = static_cast<int>(m.coords_.size());
   const int e = d.planar ? 3 : 6;
   const int unknowns = m.num_q_ + e, equations = static_cast<int>(d.legs.size()) * e + static_cast<int>(d.task.size());
@@ -280,9 +306,10 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
     for (int k = 0; k < v.size(); ++k)
       if (std::abs(v(k)) > 0.1 * v.cwiseAbs().maxCoeff())
         moving += (moving.empty() ? "" : ", ") + column_name(m, (*columns)[k]);
-    return invalid(fmt::format("the {} Jacobian loses rank at home (sigma_min / sigma_max = {:.2g}): the drawing is a "
-                               "singular posture, or a motion is free or constrained twice; the motion involves {}",
-                               name, s(s.size() - 1) / s(0), moving));
+    return invalid(
+        fmt::format("the {} Jacobian loses rank at home (sigma_min / sigma_max = {:.2g}): the drawing is a "
+                    "singular posture, or a motion is free or constrained twice; the motion involves {}",
+                    name, s(s.size() - 1) / s(0), moving));
   }
   m.inverse_sign_ = J.inverse.partialPivLu().determinant() > 0 ? 1 : -1;
   m.direct_sign_ = J.direct.partialPivLu().determinant() > 0 ? 1 : -1;

@@ -153,8 +153,8 @@ class Builder {
 
   StatusOr<msa::Structure> build() {
     const RobotDescription& d = m_.description();
-    s_.set_title(fmt::format("{} (MSA at the tool pose ({:.6g}, {:.6g}, {:.6g}) m)", d.name,
-                             p_.tool.translation().x(), p_.tool.translation().y(), p_.tool.translation().z()));
+    s_.set_title(fmt::format("{} (MSA at the tool pose ({:.6g}, {:.6g}, {:.6g}) m)", d.name, p_.tool.translation().x(),
+                             p_.tool.translation().y(), p_.tool.translation().z()));
     s_.set_source(d.source);
     for (int l = 0; l < m_.num_legs(); ++l)
       if (Status st = walk_leg(l); !st.ok()) return st;
@@ -183,13 +183,15 @@ class Builder {
   // A 6x6 spring between the body `cur` and a new body at `p`, in `axes` (base axes).
   StatusOr<int> spring(int cur, const Vec3& p, const Mat3& axes, const RobotSpring& sp) {
     if (sp.fea && !diagonal(sp.stiffness))
-      return invalid(fmt::format("{}: a `fea:` spring is a full 6x6 (its mesh couples its components) and an MSA joint "
-                                 "is diagonal in its axes; use the VJM (--method vjm), or give the link a `beam:`",
-                                 sp.fea_where));
+      return invalid(
+          fmt::format("{}: a `fea:` spring is a full 6x6 (its mesh couples its components) and an MSA joint "
+                      "is diagonal in its axes; use the VJM (--method vjm), or give the link a `beam:`",
+                      sp.fea_where));
     if (!diagonal(sp.stiffness))
-      return invalid(fmt::format("{}: its 6x6 spring couples its components in its axes; an MSA joint is diagonal in "
-                                 "its axes (give the spring `diagonal:` and `axes:`), or use the VJM",
-                                 sp.label));
+      return invalid(
+          fmt::format("{}: its 6x6 spring couples its components in its axes; an MSA joint is diagonal in "
+                      "its axes (give the spring `diagonal:` and `axes:`), or use the VJM",
+                      sp.label));
     Connection c;
     c.label = sp.label + " (spring)";
     c.body1 = cur;
@@ -257,9 +259,10 @@ class Builder {
     // The leg's end is the platform.
     const int end = find(cur);
     if (end == find(kBase))
-      return invalid(fmt::format("{} is rigid from the base to the platform (no free joint, spring or beam): the "
-                                 "platform cannot move",
-                                 leg.name));
+      return invalid(
+          fmt::format("{} is rigid from the base to the platform (no free joint, spring or beam): the "
+                      "platform cannot move",
+                      leg.name));
     parent_[end] = find(kPlatform);
     return Status::Ok();
   }
@@ -274,8 +277,7 @@ class Builder {
       x.body1 = find(x.body1);
       x.body2 = find(x.body2);
       if (!x.tie()) continue;
-      if (x.body1 == x.body2)
-        return loop(x);
+      if (x.body1 == x.body2) return loop(x);
       adj[x.body1].push_back(c);
       adj[x.body2].push_back(c);
     }
@@ -391,7 +393,7 @@ class Builder {
   const RobotPosture& p_;
   double tol_;
   msa::Structure s_;
-  std::vector<int> parent_;    // union-find of bodies: a leg's end joins the platform
+  std::vector<int> parent_;  // union-find of bodies: a leg's end joins the platform
   std::vector<Connection> conn_;
   std::vector<int> incoming_;  // per body: its incoming tie (a connection index), or -1
   std::vector<int> master_;    // per body: its master node, or -1

@@ -128,8 +128,8 @@ StatusOr<MapGrid> make_map_grid(const std::array<MapRange, 3>& ranges, double st
     if (!std::isfinite(r.lo) || !std::isfinite(r.hi))
       return Status::Invalid(fmt::format("the {} range has a non-finite bound", kAxis[a]));
     if (r.lo > r.hi)
-      return Status::Invalid(fmt::format("the {} range {:g}:{:g} m is reversed; write the smaller bound first",
-                                         kAxis[a], r.lo, r.hi));
+      return Status::Invalid(
+          fmt::format("the {} range {:g}:{:g} m is reversed; write the smaller bound first", kAxis[a], r.lo, r.hi));
     const double n = map_axis_points(r, step);
     count *= n;
     grid.origin(a) = r.lo;
@@ -137,9 +137,10 @@ StatusOr<MapGrid> make_map_grid(const std::array<MapRange, 3>& ranges, double st
     grid.dimensions[a] = static_cast<int>(std::min(n, 2e9));
   }
   if (grid.num_varying_axes() < 2)
-    return Status::Invalid(fmt::format("a map needs two ranges longer than the step {:g} m (a plane or a box); "
-                                       "got {} x {} x {} points",
-                                       step, grid.dimensions[0], grid.dimensions[1], grid.dimensions[2]));
+    return Status::Invalid(
+        fmt::format("a map needs two ranges longer than the step {:g} m (a plane or a box); "
+                    "got {} x {} x {} points",
+                    step, grid.dimensions[0], grid.dimensions[1], grid.dimensions[2]));
   if (count > static_cast<double>(max_points))
     return Status::Invalid(fmt::format("the grid has {:.3g} points, more than the limit of {}", count, max_points));
   return grid;
@@ -194,9 +195,10 @@ const FieldValues* WorkspaceMap::find(MapField f) const {
 
 Status validate(const MapOptions& o) {
   if (!(o.near_singular_threshold >= 0.0 && o.near_singular_threshold <= 1.0))
-    return Status::Invalid(fmt::format("near_singular_threshold = {:g}: the threshold on the singularity measure lies "
-                                       "in [0, 1] (default 0.01)",
-                                       o.near_singular_threshold));
+    return Status::Invalid(
+        fmt::format("near_singular_threshold = {:g}: the threshold on the singularity measure lies "
+                    "in [0, 1] (default 0.01)",
+                    o.near_singular_threshold));
   if (o.min_stiffness)
     if (Status s = check_quantity(*o.min_stiffness, Quantity::kTranslationalStiffness, "min_stiffness", {},
                                   Sign::kNonNegative);
@@ -251,8 +253,7 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
       points[k - begin] = grid.point(index[k - begin]);
     }
     std::function<void(std::size_t, std::size_t)> progress;
-    if (options.progress)
-      progress = [&, begin](std::size_t done, std::size_t) { options.progress(begin + done, n); };
+    if (options.progress) progress = [&, begin](std::size_t done, std::size_t) { options.progress(begin + done, n); };
     evaluate_postures(kernel, points, results, options.threads, progress, PointOrder::kPath);
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t i = index[k - begin];

@@ -109,12 +109,18 @@ StatusOr<std::vector<Vec12>> fixed_end_forces(const Structure& s, const LoadCase
     const BeamSpan sp = span(b);
     Vec12& f = fef[ml.beam];
     switch (ml.type) {
-      case MemberLoadType::kUniform: f += uniform_load_fixed_end_forces(sp, local(ml.w1)); break;
+      case MemberLoadType::kUniform:
+        f += uniform_load_fixed_end_forces(sp, local(ml.w1));
+        break;
       case MemberLoadType::kTrapezoidal:
         f += trapezoidal_load_fixed_end_forces(sp, ml.a, ml.b, local(ml.w1), local(ml.w2));
         break;
-      case MemberLoadType::kPoint: f += point_load_fixed_end_forces(sp, ml.a, local(ml.force), local(ml.moment)); break;
-      case MemberLoadType::kTemperature: f += temperature_fixed_end_forces(sp, ml.thermal); break;
+      case MemberLoadType::kPoint:
+        f += point_load_fixed_end_forces(sp, ml.a, local(ml.force), local(ml.moment));
+        break;
+      case MemberLoadType::kTemperature:
+        f += temperature_fixed_end_forces(sp, ml.thermal);
+        break;
     }
   }
   for (size_t i = 0; i < beams.size(); ++i) {

@@ -13,7 +13,7 @@ namespace kinestat::msa {
 
 struct ReducedDof {
   int node = -1;
-  int component = 0;           // 0..5 in `frame`
+  int component = 0;              // 0..5 in `frame`
   Mat3 frame = Mat3::Identity();  // axes in which the component is measured (support or tie frame)
 };
 

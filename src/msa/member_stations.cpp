@@ -24,8 +24,11 @@ struct LocalLoad {
 class BeamField {
  public:
   BeamField(const Structure& s, const LoadCase& lc, const LoadCaseResult& r, int beam)
-      : b_(s.beams()[beam]), m_(s.materials()[b_.material]), sec_(s.sections()[b_.section]),
-        L_(s.beam_length(b_)), end1_(r.beam_end_forces[beam].head<6>()) {
+      : b_(s.beams()[beam]),
+        m_(s.materials()[b_.material]),
+        sec_(s.sections()[b_.section]),
+        L_(s.beam_length(b_)),
+        end1_(r.beam_end_forces[beam].head<6>()) {
     const Mat3 axes = s.beam_axes(b_);
     auto local = [&](const Vec3& v, bool global) { return global ? Vec3(axes.transpose() * v) : v; };
     if (lc.gravity.squaredNorm() > 0.0 && m_.density > 0.0) {
@@ -107,12 +110,8 @@ class BeamField {
   std::array<double, 6> strains(double x) const {
     const Vec6 f = forces(x);
     const double E = m_.E;
-    return {f(0) / (E * sec_.A) + strain_,
-            f(3) / (m_.G * sec_.J),
-            f(5) / (E * sec_.Iz) + kappa_y_,
-            gas_y_ > 0 ? f(1) / gas_y_ : 0.0,
-            -f(4) / (E * sec_.Iy) + kappa_z_,
-            gas_z_ > 0 ? f(2) / gas_z_ : 0.0};
+    return {f(0) / (E * sec_.A) + strain_,    f(3) / (m_.G * sec_.J),           f(5) / (E * sec_.Iz) + kappa_y_,
+            gas_y_ > 0 ? f(1) / gas_y_ : 0.0, -f(4) / (E * sec_.Iy) + kappa_z_, gas_z_ > 0 ? f(2) / gas_z_ : 0.0};
   }
 
   // Integrals over [0, x]: of each strain (0..5) and, for the curvatures, of (x - xi) kappa (6, 7).
@@ -204,8 +203,7 @@ class BeamField {
 
 StatusOr<BeamStations> beam_stations(const Structure& s, const LoadCase& lc, const LoadCaseResult& r, int beam,
                                      int count) {
-  if (beam < 0 || beam >= static_cast<int>(s.beams().size()) ||
-      beam >= static_cast<int>(r.beam_end_forces.size()))
+  if (beam < 0 || beam >= static_cast<int>(s.beams().size()) || beam >= static_cast<int>(r.beam_end_forces.size()))
     return Status::Invalid(fmt::format("beam_stations: no beam #{} in the solved load case '{}'", beam, lc.name));
   if (count < 2)
     return Status::Invalid(fmt::format("{} stations per beam is too few; give at least 2 (the two ends)", count));
@@ -226,8 +224,7 @@ StatusOr<BeamStations> beam_stations(const Structure& s, const LoadCase& lc, con
   return out;
 }
 
-StatusOr<std::vector<std::vector<BeamStations>>> all_beam_stations(const Structure& s, const Solution& sol,
-                                                                   int count) {
+StatusOr<std::vector<std::vector<BeamStations>>> all_beam_stations(const Structure& s, const Solution& sol, int count) {
   std::vector<std::vector<BeamStations>> out;
   for (size_t c = 0; c < sol.cases.size() && c < s.load_cases().size(); ++c) {
     out.emplace_back();

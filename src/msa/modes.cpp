@@ -43,8 +43,9 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     }
   }
   if (s.beams().empty() && !nodal_masses) {
-    res.status = Status::Invalid(at_source(s.source(), "the structure has no beams and no nodal masses, so no mass: "
-                                                       "nothing vibrates; add 'masses:' or beams with a density"));
+    res.status = Status::Invalid(at_source(s.source(),
+                                           "the structure has no beams and no nodal masses, so no mass: "
+                                           "nothing vibrates; add 'masses:' or beams with a density"));
     return res;
   }
   const int nc = static_cast<int>(s.load_cases().size());
@@ -62,7 +63,8 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     prestress_case = &s.load_cases()[static_cast<std::size_t>(c)];
   }
   const bool second_order = opt.prestress && opt.prestress->second_order;
-  res.linear = second_order ? solve_second_order(s, opt.prestress->second_order_options, opt.solve) : solve(s, opt.solve);
+  res.linear =
+      second_order ? solve_second_order(s, opt.prestress->second_order_options, opt.solve) : solve(s, opt.solve);
   if (!res.linear.status.ok()) {
     res.status = res.linear.status;
     // The second-order solve's own failures (loads at the critical load, no convergence) name their
@@ -84,9 +86,9 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     pre.load_case = opt.prestress->load_case;
     pre.load_case_name = prestress_case->name;
     pre.second_order = second_order;
-    pre.axial_force = second_order ? res.linear.second_order->axial_force[static_cast<std::size_t>(pre.load_case)]
-                                   : beam_axial_forces(res.linear.cases[static_cast<std::size_t>(pre.load_case)]
-                                                           .beam_end_forces);
+    pre.axial_force =
+        second_order ? res.linear.second_order->axial_force[static_cast<std::size_t>(pre.load_case)]
+                     : beam_axial_forces(res.linear.cases[static_cast<std::size_t>(pre.load_case)].beam_end_forces);
     *K += assemble_geometric_stiffness(s, pre.axial_force, opt.prestress->second_order_options.torsion_term).global;
     res.prestress = std::move(pre);
   }

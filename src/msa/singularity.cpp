@@ -19,7 +19,8 @@ std::string weak_dof_words(const Structure& s, const ReducedDof& rd) {
 // Node ids as "{'a', 'b', 'c'}", the first 12 of them.
 std::string node_set_words(const Structure& s, const std::vector<int>& nodes) {
   std::string out;
-  for (size_t i = 0; i < nodes.size() && i < 12; ++i) out += fmt::format("{}'{}'", i ? ", " : "", s.nodes()[nodes[i]].id);
+  for (size_t i = 0; i < nodes.size() && i < 12; ++i)
+    out += fmt::format("{}'{}'", i ? ", " : "", s.nodes()[nodes[i]].id);
   if (nodes.size() > 12) out += fmt::format(", ... ({} nodes)", nodes.size());
   return "{" + out + "}";
 }
@@ -48,7 +49,8 @@ std::vector<LoosePart> loose_parts(const Structure& s) {
     if (std::find(r.mask.begin(), r.mask.end(), true) != r.mask.end()) join(r.master, r.slave);
   std::vector<bool> held(nn, false);
   for (const Support& sup : s.supports())
-    if (std::find(sup.fixed.begin(), sup.fixed.end(), true) != sup.fixed.end()) held[find_root(parent, sup.node)] = true;
+    if (std::find(sup.fixed.begin(), sup.fixed.end(), true) != sup.fixed.end())
+      held[find_root(parent, sup.node)] = true;
   std::vector<int> part_of_root(nn, -1);
   std::vector<LoosePart> parts;
   for (int n = 0; n < nn; ++n) {
@@ -90,7 +92,8 @@ std::string describe_node_motion(const Vec6& m, double L) {
   if (t.norm() > 0.05 * scale) out += fmt::format("translates along {} ({:.3g})", direction_words(t), t.norm());
   if (r.norm() * L > 0.05 * scale) {
     if (!out.empty()) out += " and ";
-    out += fmt::format("rotates about {} ({:.3g} rad{})", direction_words(r), r.norm(), t.norm() > 0 || L != 1.0 ? "/m" : "");
+    out += fmt::format("rotates about {} ({:.3g} rad{})", direction_words(r), r.norm(),
+                       t.norm() > 0 || L != 1.0 ? "/m" : "");
   }
   return out;
 }
@@ -106,8 +109,9 @@ SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map,
 
   const double L = s.length_scale();
   const int nn = static_cast<int>(s.nodes().size());
-  std::string text = "The structure is singular: some motion is resisted by no element (a mechanism, a released "
-                     "chain, a missing support, or a singular posture).\n";
+  std::string text =
+      "The structure is singular: some motion is resisted by no element (a mechanism, a released "
+      "chain, a missing support, or a singular posture).\n";
   if (!cols.empty()) {
     text += "  Elimination found no stiffness at: ";
     for (size_t i = 0; i < cols.size(); ++i) text += (i ? ", " : "") + weak_dof_words(s, map.reduced[cols[i]]);
@@ -123,15 +127,16 @@ SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map,
   for (size_t p = 0; p < loose.size(); ++p) {
     const LoosePart& part = loose[p];
     const bool one = no_support || part.nodes.size() == 1;
-    const std::string who = no_support ? "the whole model"
-                                       : fmt::format("node{} {}", one ? "" : "s", node_set_words(s, part.nodes));
+    const std::string who =
+        no_support ? "the whole model" : fmt::format("node{} {}", one ? "" : "s", node_set_words(s, part.nodes));
     const char* verb_s = one ? "s" : "";
     if (no_support)
       text += "  The model has no supports: it moves as a rigid body (3 translations, 3 rotations).\n";
     else
-      text += fmt::format("  N{} {} not connected to any support: {} as a rigid body (3 translations, 3 "
-                          "rotations).\n",
-                          who.substr(1), one ? "is" : "are", one ? "it moves" : "they move");
+      text += fmt::format(
+          "  N{} {} not connected to any support: {} as a rigid body (3 translations, 3 "
+          "rotations).\n",
+          who.substr(1), one ? "is" : "are", one ? "it moves" : "they move");
     for (int k = 0; k < 6; ++k) {
       FreeMotion fm;
       fm.node_motion.assign(nn, Vec6::Zero());
@@ -155,9 +160,11 @@ SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map,
                                      number, fm.rayleigh_ratio, who, verb_s, kAxisWords[k]);
       else
         fm.description = fmt::format(
-            "free motion {} (rigid body, stiffness ratio {:.1e}): {} rotate{} about {} through ({:.6g}, {:.6g}, {:.6g}) "
+            "free motion {} (rigid body, stiffness ratio {:.1e}): {} rotate{} about {} through ({:.6g}, {:.6g}, "
+            "{:.6g}) "
             "m, the centroid",
-            number, fm.rayleigh_ratio, who, verb_s, kAxisWords[k - 3], part.centroid.x(), part.centroid.y(), part.centroid.z());
+            number, fm.rayleigh_ratio, who, verb_s, kAxisWords[k - 3], part.centroid.x(), part.centroid.y(),
+            part.centroid.z());
       text += "  " + fm.description + "\n";
       d.modes.push_back(std::move(fm));
     }
@@ -230,13 +237,15 @@ SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map,
                                     describe_node_motion(fm.node_motion[n], rotation_only ? 1.0 : L));
       ++listed;
     }
-    const int moving = static_cast<int>(std::count_if(order.begin(), order.end(), [&](int n) { return size(n) >= 0.05; }));
+    const int moving =
+        static_cast<int>(std::count_if(order.begin(), order.end(), [&](int n) { return size(n) >= 0.05; }));
     if (moving > listed) fm.description += fmt::format("\n    ... and {} more nodes", moving - listed);
     text += "  " + fm.description + "\n";
     d.modes.push_back(std::move(fm));
   }
-  text += "  Fix: add the missing support or stiffness, or move away from the singular posture "
-          "(--regularize gives a marked, regularized answer).";
+  text +=
+      "  Fix: add the missing support or stiffness, or move away from the singular posture "
+      "(--regularize gives a marked, regularized answer).";
   d.message = text;
   return d;
 }

@@ -104,7 +104,7 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   LoadCaseResult r;
   r.name = lc.name;
   const int nn = static_cast<int>(s.nodes().size());
-  const VecX pdelta = g ? VecX(g->global * u) : VecX::Zero(u.size());   // K_G u
+  const VecX pdelta = g ? VecX(g->global * u) : VecX::Zero(u.size());  // K_G u
   const VecX applied = f - pdelta;
   const VecX residual = sys.K * u + pdelta - f;  // reactions at supports, constraint forces at tied nodes
   const VecX support_residual = carry_ties_to_masters(s, sys.map, residual);
@@ -210,8 +210,7 @@ StatusOr<CartesianStiffness> node_stiffness(const Structure& s, const System& sy
 
 }  // namespace
 
-Workspace::Workspace(const solver::SparseCholeskyOptions& options)
-    : cholesky_(solver::make_sparse_cholesky(options)) {}
+Workspace::Workspace(const solver::SparseCholeskyOptions& options) : cholesky_(solver::make_sparse_cholesky(options)) {}
 
 Solution solve(const Structure& s, const SolveOptions& options) {
   Workspace ws(options.cholesky);
@@ -234,8 +233,9 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   }
   sol.num_free_dofs = sys->map.num_free();
   if (sol.num_free_dofs == 0) {
-    sol.status = Status::Invalid(at_source(s.source(), "every dof of the structure is supported or tied: nothing to "
-                                                       "solve; free some dofs of the supports"));
+    sol.status = Status::Invalid(at_source(s.source(),
+                                           "every dof of the structure is supported or tied: nothing to "
+                                           "solve; free some dofs of the supports"));
     return sol;
   }
   if (sol.num_free_dofs <= opt.max_dofs_for_global_indices) sol.global_indices = stiffness_indices(MatX(sys->Kr));
@@ -284,8 +284,10 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   }
   sol.solve_seconds = seconds_since(t1);
   if (sol.regularized)
-    sol.status = Status::Singular("REGULARIZED answer of a singular structure (K + eps D): the numbers along the "
-                                  "free motions are arbitrary. " + sol.singularity.message);
+    sol.status = Status::Singular(
+        "REGULARIZED answer of a singular structure (K + eps D): the numbers along the "
+        "free motions are arbitrary. " +
+        sol.singularity.message);
   return sol;
 }
 
@@ -297,14 +299,15 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     return sol;
   };
   if (opt.regularize)
-    return fail(Status::Invalid("a second-order analysis of a singular structure cannot be regularized: its "
-                                "free motions carry no axial force to iterate on; solve it linearly"));
+    return fail(
+        Status::Invalid("a second-order analysis of a singular structure cannot be regularized: its "
+                        "free motions carry no axial force to iterate on; solve it linearly"));
   if (!(so.tolerance > 0.0 && so.tolerance < 1.0))
     return fail(Status::Invalid(
         fmt::format("second-order tolerance {:g}: give a relative change between 0 and 1 (e.g. 1e-9)", so.tolerance)));
   if (so.max_iterations < 1)
-    return fail(Status::Invalid(
-        fmt::format("second-order iteration limit {}: give at least 1 (e.g. 50)", so.max_iterations)));
+    return fail(
+        Status::Invalid(fmt::format("second-order iteration limit {}: give at least 1 (e.g. 50)", so.max_iterations)));
   if (Status st = s.validate(); !st.ok()) return fail(st);
   if (Status st = check_no_end_releases(s, "a second-order analysis"); !st.ok()) return fail(st);
 
@@ -334,7 +337,8 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     auto loads = case_loads(s, lc);
     if (!loads.ok()) return fail(loads.status());
     VecX u_prev(s.num_dofs());
-    for (int n = 0; n < static_cast<int>(s.nodes().size()); ++n) u_prev.segment<6>(6 * n) = sol.cases[c].displacement[n];
+    for (int n = 0; n < static_cast<int>(s.nodes().size()); ++n)
+      u_prev.segment<6>(6 * n) = sol.cases[c].displacement[n];
     std::vector<double> N = beam_axial_forces(sol.cases[c].beam_end_forces);
     double change = 0.0;
     bool converged = false;
@@ -373,10 +377,11 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     if (!converged)
       return fail(Status::NotConverged(at_source(
           lc.source.empty() ? s.source() : lc.source,
-          fmt::format("load case '{}': the second-order (P-Delta) iteration did not converge in {} iterations (relative "
-                      "change of the displacements {:.3g}, tolerance {:.3g}); near the critical load the axial forces "
-                      "keep changing: allow more iterations, or check the loads against `kinestat buckling`",
-                      lc.name, k, change, so.tolerance))));
+          fmt::format(
+              "load case '{}': the second-order (P-Delta) iteration did not converge in {} iterations (relative "
+              "change of the displacements {:.3g}, tolerance {:.3g}); near the critical load the axial forces "
+              "keep changing: allow more iterations, or check the loads against `kinestat buckling`",
+              lc.name, k, change, so.tolerance))));
     sol.cases[c] = std::move(r);
     rep.iterations.push_back(k);
     rep.relative_change.push_back(change);
@@ -406,9 +411,10 @@ Status check_solution_matches(const Structure& s, const Solution& sol) {
     return fmt::format("{} nodes, {} beams, {} joints, {} load cases", c.nodes, c.beams, c.joints, c.load_cases);
   };
   auto mismatch = [&](const std::string& what) {
-    return Status::Invalid(fmt::format("solution: {} do not match the structure's {}; pass the structure the "
-                                       "solution was solved for, or solve this one",
-                                       what, counts(here)));
+    return Status::Invalid(
+        fmt::format("solution: {} do not match the structure's {}; pass the structure the "
+                    "solution was solved for, or solve this one",
+                    what, counts(here)));
   };
   if (sol.structure && (sol.structure->nodes != here.nodes || sol.structure->beams != here.beams ||
                         sol.structure->joints != here.joints || sol.structure->load_cases != here.load_cases))

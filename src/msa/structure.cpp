@@ -27,9 +27,7 @@ std::string source_of(const T& item) {
     return {};
 }
 
-bool is_rotation(const Mat3& R) {
-  return (R.transpose() * R - Mat3::Identity()).norm() < 1e-9 && R.determinant() > 0;
-}
+bool is_rotation(const Mat3& R) { return (R.transpose() * R - Mat3::Identity()).norm() < 1e-9 && R.determinant() > 0; }
 
 }  // namespace
 
@@ -99,8 +97,8 @@ Status Structure::validate() const {
     std::set<std::string> seen;
     for (const auto& it : items)
       if (!seen.insert(it.id).second)
-        return invalid(source_of(it), fmt::format("{} '{}' is defined twice; give each {} a unique id", kind, it.id,
-                                                  kind));
+        return invalid(source_of(it),
+                       fmt::format("{} '{}' is defined twice; give each {} a unique id", kind, it.id, kind));
     return Status::Ok();
   };
   if (nn == 0) return invalid(source_, "the structure has no nodes");
@@ -109,8 +107,8 @@ Status Structure::validate() const {
     if (!s.ok()) return s;
   for (const auto& n : nodes_)
     for (int k = 0; k < 3; ++k)
-      if (Status st = check_quantity(n.position[k], Quantity::kLength, fmt::format("node '{}': coordinate {}", n.id,
-                                                                                    "xyz"[k]));
+      if (Status st =
+              check_quantity(n.position[k], Quantity::kLength, fmt::format("node '{}': coordinate {}", n.id, "xyz"[k]));
           !st.ok())
         return invalid(n.source, st.message());
   const double tol = 1e-9 * length_scale();
@@ -127,7 +125,7 @@ Status Structure::validate() const {
       return st;
   }
   for (const auto& s : sections_) {
-    const std::pair<const char*, double> values[] = {{"A", s.A}, {"Iy", s.Iy}, {"Iz", s.Iz}, {"J", s.J},
+    const std::pair<const char*, double> values[] = {{"A", s.A},     {"Iy", s.Iy},   {"Iz", s.Iz}, {"J", s.J},
                                                      {"Asy", s.Asy}, {"Asz", s.Asz}, {"Ip", s.Ip}};
     for (const auto& [name, value] : values) {
       const bool area = name[0] == 'A';
@@ -173,11 +171,10 @@ Status Structure::validate() const {
     if (!is_rotation(j.frame)) return invalid(j.source, fmt::format("joint '{}': its frame is not a rotation", j.id));
     for (int k = 0; k < 6; ++k) {
       if (j.stiffness(k) == kRigid) continue;
-      if (Status st = check_quantity(j.stiffness(k),
-                                     k < 3 ? Quantity::kTranslationalStiffness : Quantity::kRotationalStiffness,
-                                     fmt::format("joint '{}': stiffness {} (0 = released, rigid = constrained)", j.id,
-                                                 dof_name(k)),
-                                     {}, Sign::kNonNegative);
+      if (Status st = check_quantity(
+              j.stiffness(k), k < 3 ? Quantity::kTranslationalStiffness : Quantity::kRotationalStiffness,
+              fmt::format("joint '{}': stiffness {} (0 = released, rigid = constrained)", j.id, dof_name(k)), {},
+              Sign::kNonNegative);
           !st.ok())
         return invalid(j.source, st.message());
     }
@@ -212,7 +209,8 @@ Status Structure::validate() const {
   for (const auto& lc : load_cases_) {
     for (const auto& l : lc.loads) {
       if (!node_ok(l.node))
-        return invalid(l.source, fmt::format("load case '{}': a load is applied to a node that does not exist", lc.name));
+        return invalid(l.source,
+                       fmt::format("load case '{}': a load is applied to a node that does not exist", lc.name));
       for (int k = 0; k < 6; ++k)
         if (Status st = check_quantity(l.wrench(k), k < 3 ? Quantity::kForce : Quantity::kMoment,
                                        fmt::format("load case '{}': the load on node '{}', {}", lc.name,
@@ -239,8 +237,8 @@ Status Structure::validate() const {
     Vec6 total = Vec6::Zero();
     for (const auto& l : lc.loads) total += l.wrench.cwiseAbs();
     if (!total.allFinite())
-      return invalid(lc.source, fmt::format("load case '{}': the sum of the loads is not finite; check the values",
-                                            lc.name));
+      return invalid(lc.source,
+                     fmt::format("load case '{}': the sum of the loads is not finite; check the values", lc.name));
     std::set<std::pair<int, int>> prescribed;
     for (const auto& p : lc.prescribed) {
       if (!node_ok(p.node) || p.dof < 0 || p.dof >= 6)
@@ -286,9 +284,10 @@ Status Structure::validate_member_load(const LoadCase& lc, const MemberLoad& ml)
   auto inside = [&](double x, const char* name) {
     if (Status st = check(x, Quantity::kLength, name); !st.ok()) return st;
     if (x < 0.0 || x > L)
-      return invalid(fmt::format("{}: {} = {:g} m lies outside the beam (length {:g} m); give a distance from its first "
-                                 "node between 0 and the length",
-                                 item, name, x, L));
+      return invalid(
+          fmt::format("{}: {} = {:g} m lies outside the beam (length {:g} m); give a distance from its first "
+                      "node between 0 and the length",
+                      item, name, x, L));
     return Status::Ok();
   };
   switch (ml.type) {
@@ -299,12 +298,12 @@ Status Structure::validate_member_load(const LoadCase& lc, const MemberLoad& ml)
                                check3(ml.w2, Quantity::kForcePerLength, "w2"), inside(ml.a, "a"), inside(ml.b, "b")})
         if (!st.ok()) return st;
       if (!(ml.a < ml.b))
-        return invalid(fmt::format("{}: the loaded stretch [a, b] = [{:g}, {:g}] m is empty; give a < b", item, ml.a,
-                                   ml.b));
+        return invalid(
+            fmt::format("{}: the loaded stretch [a, b] = [{:g}, {:g}] m is empty; give a < b", item, ml.a, ml.b));
       return Status::Ok();
     case MemberLoadType::kPoint:
-      for (const Status& st : {check3(ml.force, Quantity::kForce, "force"), check3(ml.moment, Quantity::kMoment, "moment"),
-                               inside(ml.a, "a")})
+      for (const Status& st : {check3(ml.force, Quantity::kForce, "force"),
+                               check3(ml.moment, Quantity::kMoment, "moment"), inside(ml.a, "a")})
         if (!st.ok()) return st;
       return Status::Ok();
     case MemberLoadType::kTemperature: {

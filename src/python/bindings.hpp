@@ -8,12 +8,12 @@
 #include <variant>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <Eigen/Geometry>
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
@@ -21,7 +21,7 @@
 namespace kinestat::mechanisms {
 enum class MapField : int;
 class PostureKernel;
-}
+}  // namespace kinestat::mechanisms
 
 namespace kinestat::python {
 

@@ -40,8 +40,8 @@ void bind_msa_buckling(py::module_& m) {
         const BucklingOptions o = options.value_or(BucklingOptions{});
         BucklingResult r = without_gil([&] { return msa::buckling(s, o); });
         if (!r.status.ok())
-          raise_status(r.status, r.status.code() == StatusCode::kSingular ? py::cast(r.linear.singularity)
-                                                                            : py::none());
+          raise_status(r.status,
+                       r.status.code() == StatusCode::kSingular ? py::cast(r.linear.singularity) : py::none());
         return r;
       },
       py::arg("structure"), py::arg("options") = py::none(),

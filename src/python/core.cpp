@@ -60,10 +60,12 @@ void bind_core(py::module_& m) {
   m.def("default_orientation", &default_orientation, py::arg("direction"),
         "Default orientation vector of an element along `direction`: global z, or global y when nearly parallel to z.");
   m.def("rotation6", &rotation6, py::arg("R"), "6x6 block-diagonal diag(R, R) acting on (translation, rotation).");
-  m.def("rigid_transfer", &rigid_transfer, py::arg("offset"),
-        "A = [I, -[offset]x; 0, I]: the motion of a point at `offset` (m) from a reference point moving by (u, theta).");
+  m.def(
+      "rigid_transfer", &rigid_transfer, py::arg("offset"),
+      "A = [I, -[offset]x; 0, I]: the motion of a point at `offset` (m) from a reference point moving by (u, theta).");
   m.def("direction_words", &direction_words, py::arg("v"), "A direction in words: '+y' or '(0.707, 0.707, 0.000)'.");
-  m.def("axis_angle", &axis_angle, py::arg("axis"), py::arg("angle"), "Rotation matrix about a unit axis by an angle (rad).");
+  m.def("axis_angle", &axis_angle, py::arg("axis"), py::arg("angle"),
+        "Rotation matrix about a unit axis by an angle (rad).");
 
   // stiffness_indices.hpp (Goncalves et al. 2010, eq. 7-13)
   py::class_<StiffnessIndices> indices(m, "StiffnessIndices",

@@ -62,8 +62,8 @@ void bind_elements(py::module_& m) {
       .def(py::init([](double alpha, double hy, double hz, double dT, double dTy, double dTz) {
              return ThermalLoad{alpha, hy, hz, dT, dTy, dTz};
            }),
-           py::arg("alpha") = 0.0, py::arg("hy") = 0.0, py::arg("hz") = 0.0, py::arg("dT") = 0.0,
-           py::arg("dTy") = 0.0, py::arg("dTz") = 0.0)
+           py::arg("alpha") = 0.0, py::arg("hy") = 0.0, py::arg("hz") = 0.0, py::arg("dT") = 0.0, py::arg("dTy") = 0.0,
+           py::arg("dTz") = 0.0)
       .def_readwrite("alpha", &ThermalLoad::alpha)
       .def_readwrite("hy", &ThermalLoad::hy)
       .def_readwrite("hz", &ThermalLoad::hz)
@@ -79,8 +79,8 @@ void bind_elements(py::module_& m) {
         "12x12 local stiffness of a beam (local dofs ux uy uz rx ry rz of node 1, then node 2).");
   m.def(
       "condense_releases",
-      [](const Mat12& K, const BeamReleases& released) { return unwrap(condense_releases(K, released)); },
-      py::arg("K"), py::arg("released"),
+      [](const Mat12& K, const BeamReleases& released) { return unwrap(condense_releases(K, released)); }, py::arg("K"),
+      py::arg("released"),
       "Static condensation of the released local dofs (12 booleans). InputError when the element becomes free.");
   m.def("beam_transformation", &beam_transformation, py::arg("axes"), "T with u_local = T u_global (12x12).");
   m.def("joint_global_stiffness", &joint_global_stiffness, py::arg("frame"), py::arg("k"),

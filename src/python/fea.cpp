@@ -60,8 +60,9 @@ void bind_mesh(py::module_& m) {
       "Structured 4-node mesh of the box [lo, hi] (m), six tetrahedra per cell. InputError for lo >= hi, fewer than "
       "one cell along an axis, or more than max_elements tetrahedra.");
   m.def("to_quadratic", &to_quadratic, py::arg("linear"), "4-node -> 10-node elements.");
-  m.def("validate", [](const TetMesh& t) { check(validate(t)); }, py::arg("mesh"),
-        "Raises InputError naming the first bad element.");
+  m.def(
+      "validate", [](const TetMesh& t) { check(validate(t)); }, py::arg("mesh"),
+      "Raises InputError naming the first bad element.");
   m.def(
       "element_volume",
       [](const TetMesh& t, int e) {
@@ -190,11 +191,13 @@ void bind_link_stiffness(py::module_& m) {
                             "report; per unit load case (Fx Fy Fz Mx My Mz) the fields when kept.")
       .def(py::init<>(), "An empty result, for set_compliance (e.g. a measured compliance).")
       .def_readonly("cartesian", &LinkStiffness::cartesian, "the 6x6 (CartesianStiffness) at the reference point")
-      .def_property_readonly("reference_point", [](const LinkStiffness& r) { return r.cartesian.point; }, "m")
-      .def_property_readonly("compliance", [](const LinkStiffness& r) { return r.cartesian.compliance; },
-                             "m/N, m/(N m) | rad/N, rad/(N m)")
-      .def_property_readonly("stiffness", [](const LinkStiffness& r) { return r.cartesian.stiffness; },
-                             "N/m, N/rad | N m/m, N m/rad")
+      .def_property_readonly(
+          "reference_point", [](const LinkStiffness& r) { return r.cartesian.point; }, "m")
+      .def_property_readonly(
+          "compliance", [](const LinkStiffness& r) { return r.cartesian.compliance; },
+          "m/N, m/(N m) | rad/N, rad/(N m)")
+      .def_property_readonly(
+          "stiffness", [](const LinkStiffness& r) { return r.cartesian.stiffness; }, "N/m, N/rad | N m/m, N m/rad")
       .def_readonly("compliance_symmetry_error", &LinkStiffness::compliance_symmetry_error)
       .def_readonly("stiffness_symmetry_error", &LinkStiffness::stiffness_symmetry_error)
       .def_readonly("compliance_eigenvalues", &LinkStiffness::compliance_eigenvalues)
@@ -265,8 +268,9 @@ void bind_link_stiffness(py::module_& m) {
   // The result cache.
   m.def("link_stiffness_cache_key", &link_stiffness_cache_key, py::arg("mesh_identity"), py::arg("material"),
         py::arg("options"));
-  m.def("is_link_stiffness_cache_key", [](const std::string& k) { return is_link_stiffness_cache_key(k); },
-        py::arg("key"), "Whether `key` has the form of link_stiffness_cache_key's keys (32 hex digits).");
+  m.def(
+      "is_link_stiffness_cache_key", [](const std::string& k) { return is_link_stiffness_cache_key(k); },
+      py::arg("key"), "Whether `key` has the form of link_stiffness_cache_key's keys (32 hex digits).");
   m.def(
       "load_cached_link_stiffness",
       [](const std::string& dir, const std::string& key) -> std::optional<LinkStiffness> {
@@ -303,7 +307,8 @@ void bind_request(py::module_& m) {
       .def(py::init<>())
       .def_readwrite("mesh_file", &LinkStiffnessRequest::mesh_file, "closed surface: STL, OFF, OBJ or PLY")
       .def_readwrite("unit_scale", &LinkStiffnessRequest::unit_scale, "the file's length unit in m (1e-3: mm)")
-      .def_readwrite("mesh_size", &LinkStiffnessRequest::mesh_size, "tetrahedron size (m); 0: 1/20 of the largest extent")
+      .def_readwrite("mesh_size", &LinkStiffnessRequest::mesh_size,
+                     "tetrahedron size (m); 0: 1/20 of the largest extent")
       .def_readwrite("quadratic", &LinkStiffnessRequest::quadratic, "10-node tetrahedra (default)")
       .def_readwrite("material", &LinkStiffnessRequest::material)
       .def_readwrite("options", &LinkStiffnessRequest::options, "LinkStiffnessOptions: regions (m), model, fields")
@@ -345,7 +350,8 @@ void bind_request(py::module_& m) {
       [](const LinkStiffnessRequest& r, const std::vector<double>& sizes) {
         return unwrap(without_gil([&] { return link_stiffness_convergence(r, sizes); }));
       },
-      py::arg("request"), py::arg("sizes"), "The request on meshes of `sizes` (m, >= 3, decreasing). Releases the GIL.");
+      py::arg("request"), py::arg("sizes"),
+      "The request on meshes of `sizes` (m, >= 3, decreasing). Releases the GIL.");
   m.def("convergence_report", &convergence_report, py::arg("study"));
 }
 

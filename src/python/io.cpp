@@ -4,11 +4,11 @@
 
 #include "kinestat/io/fea_vtk.hpp"
 #include "kinestat/io/five_bar_design_output.hpp"
+#include "kinestat/io/identification_yaml.hpp"
 #include "kinestat/io/link_stiffness_json.hpp"
 #include "kinestat/io/map_json.hpp"
-#include "kinestat/io/map_vti.hpp"
-#include "kinestat/io/identification_yaml.hpp"
 #include "kinestat/io/map_png.hpp"
+#include "kinestat/io/map_vti.hpp"
 #include "kinestat/io/results_json.hpp"
 #include "kinestat/io/structure_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
@@ -24,7 +24,8 @@ namespace {
 py::object to_python(const nlohmann::json& j) { return py::module_::import("json").attr("loads")(j.dump()); }
 
 nlohmann::json from_python(const py::object& o) {
-  const std::string text = py::module_::import("json").attr("dumps")(o, py::arg("allow_nan") = false).cast<std::string>();
+  const std::string text =
+      py::module_::import("json").attr("dumps")(o, py::arg("allow_nan") = false).cast<std::string>();
   return nlohmann::json::parse(text);
 }
 
@@ -44,7 +45,9 @@ void bind_files(py::module_& m) {
       "InputError 'FILE:LINE: ITEM: what is wrong; what to do', as the CLI prints.");
   m.def(
       "read_structure_yaml_string",
-      [](const std::string& text, const std::string& name) { return unwrap(io::read_structure_yaml_string(text, name)); },
+      [](const std::string& text, const std::string& name) {
+        return unwrap(io::read_structure_yaml_string(text, name));
+      },
       py::arg("text"), py::arg("display_name") = "<string>", "The same from text; display_name stands for the file.");
 
   py::class_<io::VjmModel>(m, "VjmModel",
@@ -98,7 +101,9 @@ void bind_results(py::module_& m) {
       py::arg("indices"));
   m.def(
       "write_json",
-      [](const std::string& path, const py::object& j, int indent) { check(io::write_json(path, from_python(j), indent)); },
+      [](const std::string& path, const py::object& j, int indent) {
+        check(io::write_json(path, from_python(j), indent));
+      },
       py::arg("path"), py::arg("document"), py::arg("indent") = 2,
       "Writes a JSON document (a dict) as the CLI does: indented, or compact with indent=-1 (maps).");
   m.def(
@@ -125,7 +130,8 @@ void bind_results(py::module_& m) {
   m.def(
       "write_link_vtu_files",
       [](const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh, const fea::LinkStiffness& r) {
-        return written_by([&](std::vector<std::string>* w) { return io::write_link_vtu_files(dir, prefix, mesh, r, w); });
+        return written_by(
+            [&](std::vector<std::string>* w) { return io::write_link_vtu_files(dir, prefix, mesh, r, w); });
       },
       py::arg("dir"), py::arg("prefix"), py::arg("mesh"), py::arg("result"),
       "The six deformed-link files DIR/PREFIX_Fx.vtu ... (needs keep_fields). Returns the paths written.");
@@ -141,21 +147,24 @@ void bind_results(py::module_& m) {
   m.def(
       "write_orthoglide_workspace_vtk",
       [](const mechanisms::OrthoglideDesign& d, int n, const std::string& dir) {
-        return written_by([&](std::vector<std::string>* w) { return io::write_orthoglide_workspace_vtk(d, n, dir, w); });
+        return written_by(
+            [&](std::vector<std::string>* w) { return io::write_orthoglide_workspace_vtk(d, n, dir, w); });
       },
       py::arg("design"), py::arg("n"), py::arg("dir"), "Joint workspace and cube of a design as .vtu files.");
 }
 
 void bind_png(py::module_& m) {
   py::class_<io::PlotField2D>(m, "PlotField2D", "A scalar field on a regular grid, in plot units; NaN = blank.")
-      .def(py::init([](const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>& v,
-                       double x0, double y0, double dx, double dy, std::string title) {
-             io::PlotField2D f{static_cast<int>(v.cols()), static_cast<int>(v.rows()), x0, y0, dx, dy, {}, std::move(title), {}};
-             f.values.assign(v.data(), v.data() + v.size());
-             return f;
-           }),
-           py::arg("values"), py::arg("x0") = 0.0, py::arg("y0") = 0.0, py::arg("dx") = 1.0, py::arg("dy") = 1.0,
-           py::arg("title") = "", "values: (ny, nx) array, values[j, i] at (x0 + i dx, y0 + j dy).")
+      .def(
+          py::init([](const Eigen::Ref<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>& v,
+                      double x0, double y0, double dx, double dy, std::string title) {
+            io::PlotField2D f{
+                static_cast<int>(v.cols()), static_cast<int>(v.rows()), x0, y0, dx, dy, {}, std::move(title), {}};
+            f.values.assign(v.data(), v.data() + v.size());
+            return f;
+          }),
+          py::arg("values"), py::arg("x0") = 0.0, py::arg("y0") = 0.0, py::arg("dx") = 1.0, py::arg("dy") = 1.0,
+          py::arg("title") = "", "values: (ny, nx) array, values[j, i] at (x0 + i dx, y0 + j dy).")
       .def_readonly("nx", &io::PlotField2D::nx)
       .def_readonly("ny", &io::PlotField2D::ny)
       .def_readwrite("title", &io::PlotField2D::title);
@@ -199,8 +208,8 @@ void bind_png(py::module_& m) {
 // The files of `kinestat map` and `kinestat design fivebar`.
 void bind_map_files(py::module_& m) {
   m.def(
-      "workspace_map_to_json", [](const mechanisms::WorkspaceMap& map) { return to_python(io::workspace_map_to_json(map)); },
-      py::arg("map"),
+      "workspace_map_to_json",
+      [](const mechanisms::WorkspaceMap& map) { return to_python(io::workspace_map_to_json(map)); }, py::arg("map"),
       "The map as the JSON document of `kinestat map --json` (schema kinestat-workspace-map, docs/maps.md), a dict: "
       "flat arrays x fastest, None where a point has no value.");
   m.def(

@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
-#include <Eigen/LU>
 #include <fmt/format.h>
 #include <pybind11/operators.h>
+#include <Eigen/LU>
 
 #include "kinestat/core/input_checks.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
@@ -44,7 +44,10 @@ void bind_five_bar(py::module_& m) {
       .def_readwrite("joint_stiffness", &FiveBarParams::joint_stiffness)
       .def_readwrite("load", &FiveBarParams::load);
   py::class_<WorkingMode>(m, "WorkingMode", "Root of eq. (18) per leg: sign1, sign2 = +1 or -1.")
-      .def(py::init([](int s1, int s2) { return WorkingMode{s1, s2}; }), py::arg("sign1") = 1, py::arg("sign2") = 1)
+      .def(py::init([](int s1, int s2) {
+             return WorkingMode{s1, s2};
+           }),
+           py::arg("sign1") = 1, py::arg("sign2") = 1)
       .def_readwrite("sign1", &WorkingMode::sign1)
       .def_readwrite("sign2", &WorkingMode::sign2)
       .def(py::self == py::self)
@@ -61,11 +64,12 @@ void bind_five_bar(py::module_& m) {
       .def_readonly("A2", &FiveBarPosture::A2)
       .def_readonly("working_mode", &FiveBarPosture::working_mode)
       .def_readonly("assembly", &FiveBarPosture::assembly);
-  m.def("validate", [](const FiveBarParams& p) { check(validate(p)); }, py::arg("params"));
+  m.def(
+      "validate", [](const FiveBarParams& p) { check(validate(p)); }, py::arg("params"));
   m.def(
       "inverse_kinematics",
-      [](const FiveBarParams& p, const Vec2& point) { return unwrap(inverse_kinematics(p, point)); },
-      py::arg("params"), py::arg("point"), "Five-bar, eq. (14)-(19): the four postures (++, +-, -+, --) at P (m).");
+      [](const FiveBarParams& p, const Vec2& point) { return unwrap(inverse_kinematics(p, point)); }, py::arg("params"),
+      py::arg("point"), "Five-bar, eq. (14)-(19): the four postures (++, +-, -+, --) at P (m).");
   m.def(
       "inverse_kinematics",
       [](const FiveBarParams& p, const Vec2& point, WorkingMode mode) {
@@ -90,9 +94,9 @@ void bind_five_bar(py::module_& m) {
       .def("serial_singular", &FiveBarJacobians::serial_singular, py::arg("tol") = 1e-6);
   m.def("five_bar_jacobians", &five_bar_jacobians, py::arg("posture"));
   m.attr("FIVE_BAR_PLATFORM_NODE") = kFiveBarPlatformNode;
-  m.def("make_five_bar_structure", py::overload_cast<const FiveBarParams&, const FiveBarPosture&>(&make_five_bar_structure),
-        py::arg("params"), py::arg("posture"),
-        "The 8-node MSA model of section 5 (load cases Fx, Fy at node '5', the report node).");
+  m.def("make_five_bar_structure",
+        py::overload_cast<const FiveBarParams&, const FiveBarPosture&>(&make_five_bar_structure), py::arg("params"),
+        py::arg("posture"), "The 8-node MSA model of section 5 (load cases Fx, Fy at node '5', the report node).");
   m.def(
       "make_five_bar_structure",
       [](const FiveBarParams& p, double t1, double t2, Assembly a) {
@@ -113,7 +117,8 @@ void bind_orthoglide_kinematics(py::module_& m) {
   py::class_<OrthoglideGeometry>(m, "OrthoglideGeometry")
       .def(py::init([](double L) { return OrthoglideGeometry{L}; }), py::arg("link_length") = 1.0)
       .def_readwrite("link_length", &OrthoglideGeometry::link_length, "L (m)");
-  m.def("validate", [](const OrthoglideGeometry& g) { check(validate(g)); }, py::arg("geometry"));
+  m.def(
+      "validate", [](const OrthoglideGeometry& g) { check(validate(g)); }, py::arg("geometry"));
   m.attr("ORTHOGLIDE_WORKING_SIGNS") = kOrthoglideWorkingSigns;
   m.attr("ORTHOGLIDE_WORKING_BRANCH") = kOrthoglideWorkingBranch;
   m.def(
@@ -125,15 +130,18 @@ void bind_orthoglide_kinematics(py::module_& m) {
       "Orthoglide, eq. (3): joint coordinates rho (m) at the point p (m).");
   m.def("direct_kinematics_branch", &direct_kinematics_branch, py::arg("p"), py::arg("rho"));
   m.def(
-      "direct_kinematics", [](const OrthoglideGeometry& g, const Vec3& rho) { return unwrap(direct_kinematics(g, rho)); },
+      "direct_kinematics",
+      [](const OrthoglideGeometry& g, const Vec3& rho) { return unwrap(direct_kinematics(g, rho)); },
       py::arg("geometry"), py::arg("rho"), "Orthoglide, eq. (4): both solutions [working branch m=-1, m=+1].");
   m.def(
       "direct_kinematics",
-      [](const OrthoglideGeometry& g, const Vec3& rho, int branch) { return unwrap(direct_kinematics(g, rho, branch)); },
+      [](const OrthoglideGeometry& g, const Vec3& rho, int branch) {
+        return unwrap(direct_kinematics(g, rho, branch));
+      },
       py::arg("geometry"), py::arg("rho"), py::arg("branch"));
   m.def(
-      "inverse_jacobian", [](const Vec3& p, const Vec3& rho) { return unwrap(inverse_jacobian(p, rho)); },
-      py::arg("p"), py::arg("rho"), "Eq. (5); SingularError at a serial singularity.");
+      "inverse_jacobian", [](const Vec3& p, const Vec3& rho) { return unwrap(inverse_jacobian(p, rho)); }, py::arg("p"),
+      py::arg("rho"), "Eq. (5); SingularError at a serial singularity.");
   m.def(
       "inverse_jacobian_determinant",
       [](const Vec3& p, const Vec3& rho) { return unwrap(inverse_jacobian_determinant(p, rho)); }, py::arg("p"),
@@ -251,11 +259,17 @@ void bind_orthoglide_design(py::module_& m) {
       "InputError when a search of ~7 n^2 + n^3/64 points exceeds max_points (`--max-points` of the CLI).");
   py::class_<JointWorkspaceSamples>(m, "JointWorkspaceSamples", "n^3 joint grid, index i + n (j + n k).")
       .def_readonly("n", &JointWorkspaceSamples::n)
-      .def_property_readonly("rho", [](const JointWorkspaceSamples& s) { return rows(s.rho); }, "(n^3, 3) m")
-      .def_property_readonly("p", [](const JointWorkspaceSamples& s) { return rows(s.p); }, "(n^3, 3) m")
+      .def_property_readonly(
+          "rho", [](const JointWorkspaceSamples& s) { return rows(s.rho); }, "(n^3, 3) m")
+      .def_property_readonly(
+          "p", [](const JointWorkspaceSamples& s) { return rows(s.p); }, "(n^3, 3) m")
       .def_readonly("factors", &JointWorkspaceSamples::factors)
       .def_property_readonly(
-          "valid", [](const JointWorkspaceSamples& s) { return py::array_t<bool>(static_cast<py::ssize_t>(s.valid.size()), reinterpret_cast<const bool*>(s.valid.data())); },
+          "valid",
+          [](const JointWorkspaceSamples& s) {
+            return py::array_t<bool>(static_cast<py::ssize_t>(s.valid.size()),
+                                     reinterpret_cast<const bool*>(s.valid.data()));
+          },
           "(n^3,) bool");
   m.def(
       "sample_joint_workspace",
@@ -289,12 +303,13 @@ void bind_orthoglide_stiffness(py::module_& m) {
       .def_readwrite("bar_spring", &OrthoglideStiffnessModel::bar_spring);
   m.def("paper_table_point", &paper_table_point, py::arg("coordinate_mm"),
         "Kinematics-frame point (m) of the tables' 'x, y, z = c' (mm).");
-  m.def("validate_stiffness_model", [](const OrthoglideStiffnessModel& s) { check(validate_stiffness_model(s)); },
-        py::arg("model"));
+  m.def(
+      "validate_stiffness_model", [](const OrthoglideStiffnessModel& s) { check(validate_stiffness_model(s)); },
+      py::arg("model"));
   m.def(
       "parallelogram_spring",
-      [](const OrthoglideStiffnessModel& s, double q) { return unwrap(parallelogram_spring(s, q)); },
-      py::arg("model"), py::arg("q"));
+      [](const OrthoglideStiffnessModel& s, double q) { return unwrap(parallelogram_spring(s, q)); }, py::arg("model"),
+      py::arg("q"));
   m.def(
       "orthoglide_chains",
       [](const OrthoglideStiffnessModel& s, OrthoglideArchitecture a, const Vec3& p) {
@@ -330,7 +345,8 @@ void bind_orthoglide_stiffness(py::module_& m) {
       .def(py::init([](std::string label, OrthoglideArchitecture a, const Vec3& point, int row, int col, double value) {
              return ComplianceTarget{std::move(label), a, point, row, col, value};
            }),
-           py::arg("label"), py::arg("architecture"), py::arg("point"), py::arg("row"), py::arg("col"), py::arg("value"))
+           py::arg("label"), py::arg("architecture"), py::arg("point"), py::arg("row"), py::arg("col"),
+           py::arg("value"))
       .def_readwrite("label", &ComplianceTarget::label)
       .def_readwrite("architecture", &ComplianceTarget::architecture)
       .def_readwrite("point", &ComplianceTarget::point)
@@ -358,10 +374,10 @@ void bind_orthoglide_stiffness(py::module_& m) {
 
 // evaluate_postures' results as arrays shaped like the points' grid (shape S = points.shape[:-1]).
 struct PostureArrays {
-  py::array_t<std::uint8_t> status;     // S, PostureStatus values
-  py::array_t<double> stiffness;        // S + (6, 6)
-  py::array_t<double> compliance;       // S + (6, 6)
-  py::array_t<double> eigenvalues;      // S + (6,)
+  py::array_t<std::uint8_t> status;               // S, PostureStatus values
+  py::array_t<double> stiffness;                  // S + (6, 6)
+  py::array_t<double> compliance;                 // S + (6, 6)
+  py::array_t<double> eigenvalues;                // S + (6,)
   py::array_t<double> translational_eigenvalues;  // S + (3,)
   py::array_t<double> rotational_eigenvalues;     // S + (3,)
   py::array_t<double> condition_number;           // S
@@ -376,10 +392,14 @@ std::vector<py::ssize_t> shape_with(std::vector<py::ssize_t> s, std::initializer
 
 PostureArrays posture_arrays(const std::vector<PostureResult>& r, const std::vector<py::ssize_t>& grid) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  PostureArrays a{py::array_t<std::uint8_t>(grid),          py::array_t<double>(shape_with(grid, {6, 6})),
-                  py::array_t<double>(shape_with(grid, {6, 6})), py::array_t<double>(shape_with(grid, {6})),
-                  py::array_t<double>(shape_with(grid, {3})),    py::array_t<double>(shape_with(grid, {3})),
-                  py::array_t<double>(grid),                     py::array_t<double>(grid),
+  PostureArrays a{py::array_t<std::uint8_t>(grid),
+                  py::array_t<double>(shape_with(grid, {6, 6})),
+                  py::array_t<double>(shape_with(grid, {6, 6})),
+                  py::array_t<double>(shape_with(grid, {6})),
+                  py::array_t<double>(shape_with(grid, {3})),
+                  py::array_t<double>(shape_with(grid, {3})),
+                  py::array_t<double>(grid),
+                  py::array_t<double>(grid),
                   py::array_t<double>(shape_with(grid, {6}))};
   auto copy = [](double* out, const auto& m, bool ok) {
     for (Eigen::Index k = 0; k < m.size(); ++k) out[k] = ok ? m.data()[k] : nan;
@@ -459,8 +479,9 @@ PostureResult make_posture_result(PostureStatus status, const std::optional<Mat6
                                   const std::optional<Vec6>& deflection, int newton_iterations) {
   PostureResult r;
   if (status == PostureStatus::kNearSingular)
-    raise_status(Status::Invalid("PostureResult: NEAR_SINGULAR is a map's verdict; a kernel returns OK with its "
-                                 "singularity_measure"));
+    raise_status(
+        Status::Invalid("PostureResult: NEAR_SINGULAR is a map's verdict; a kernel returns OK with its "
+                        "singularity_measure"));
   r.status = status;
   if (!std::isfinite(singularity_measure))
     raise_status(Status::Invalid("PostureResult: singularity_measure is not finite"));
@@ -483,7 +504,8 @@ PostureResult make_posture_result(PostureStatus status, const std::optional<Mat6
   } else if (stiffness) {
     const Eigen::FullPivLU<Mat6> lu(r.stiffness);
     if (status == PostureStatus::kOk && !lu.isInvertible())
-      raise_status(Status::Invalid("PostureResult: the stiffness is singular; give the compliance, or status SINGULAR"));
+      raise_status(
+          Status::Invalid("PostureResult: the stiffness is singular; give the compliance, or status SINGULAR"));
     if (lu.isInvertible()) r.compliance = lu.inverse();
   }
   return r;
@@ -534,12 +556,15 @@ void bind_posture_kernels(py::module_& m) {
             check(check_entries(point, Quantity::kLength, "point"));
             return without_gil([&] { return k.evaluate_next(point); });
           },
-          py::arg("point"), "The stiffness at a grid neighbour of the last point evaluated (a kernel may start from "
+          py::arg("point"),
+          "The stiffness at a grid neighbour of the last point evaluated (a kernel may start from "
           "that point's solution); evaluate(point) unless the kernel says otherwise.")
       .def("clone", [](const PostureKernel& k) { return without_gil([&] { return k.clone(); }); })
       .def("description", [](const PostureKernel& k) { return without_gil([&] { return k.description(); }); });
 
-  py::enum_<StiffnessMethod>(m, "StiffnessMethod").value("MSA", StiffnessMethod::kMsa).value("VJM", StiffnessMethod::kVjm);
+  py::enum_<StiffnessMethod>(m, "StiffnessMethod")
+      .value("MSA", StiffnessMethod::kMsa)
+      .value("VJM", StiffnessMethod::kVjm);
   py::class_<FiveBarKernelOptions>(m, "FiveBarKernelOptions")
       .def(py::init<>())
       .def_readwrite("params", &FiveBarKernelOptions::params)
@@ -554,8 +579,8 @@ void bind_posture_kernels(py::module_& m) {
         return make_five_bar_kernel(o);
       },
       py::arg("options") = FiveBarKernelOptions{},
-        "The five-bar's sweep kernel (what `kinestat map fivebar` uses): the reference's model built once, then "
-        "fixed-size algebra per posture; the same values, many times faster (five_bar_kernel.hpp).");
+      "The five-bar's sweep kernel (what `kinestat map fivebar` uses): the reference's model built once, then "
+      "fixed-size algebra per posture; the same values, many times faster (five_bar_kernel.hpp).");
   m.def(
       "make_reference_five_bar_kernel",
       [](const FiveBarKernelOptions& o) {
@@ -563,8 +588,8 @@ void bind_posture_kernels(py::module_& m) {
         return make_reference_five_bar_kernel(o);
       },
       py::arg("options") = FiveBarKernelOptions{},
-        "Five-bar stiffness at P over the plane (z ignored), posture by posture through make_five_bar_structure "
-        "(MSA) or five_bar_vjm_chains (VJM); singularity measure min(parallel, serial). The reference of tests.");
+      "Five-bar stiffness at P over the plane (z ignored), posture by posture through make_five_bar_structure "
+      "(MSA) or five_bar_vjm_chains (VJM); singularity measure min(parallel, serial). The reference of tests.");
   py::class_<OrthoglideKernelOptions>(m, "OrthoglideKernelOptions")
       .def(py::init<>())
       .def_readwrite("model", &OrthoglideKernelOptions::model)
@@ -579,8 +604,8 @@ void bind_posture_kernels(py::module_& m) {
         return make_orthoglide_kernel(o);
       },
       py::arg("options") = OrthoglideKernelOptions{},
-        "The Orthoglide's sweep kernel (what `kinestat map MODEL.yaml` uses): the same VJM values as the reference, "
-        "with the chains' fixed parts computed once.");
+      "The Orthoglide's sweep kernel (what `kinestat map MODEL.yaml` uses): the same VJM values as the reference, "
+      "with the chains' fixed parts computed once.");
   m.def(
       "make_reference_orthoglide_kernel",
       [](const OrthoglideKernelOptions& o) {
@@ -588,8 +613,8 @@ void bind_posture_kernels(py::module_& m) {
         return make_reference_orthoglide_kernel(o);
       },
       py::arg("options") = OrthoglideKernelOptions{},
-        "Orthoglide VJM stiffness over its Cartesian workspace, posture by posture through orthoglide_chains. The "
-        "reference of tests.");
+      "Orthoglide VJM stiffness over its Cartesian workspace, posture by posture through orthoglide_chains. The "
+      "reference of tests.");
 
   py::class_<PostureArrays>(m, "PostureResults",
                             "evaluate_postures' results as arrays of shape S = points.shape[:-1] plus the value's "

@@ -10,7 +10,9 @@ void bind_msa_modes(py::module_& m) {
   py::class_<ModalPrestress>(m, "ModalPrestress",
                              "K_G of one load case's axial forces added to K: the frequencies of the prestressed "
                              "structure (tension raises them, compression lowers them).")
-      .def(py::init([](int load_case, bool second_order) { return ModalPrestress{load_case, second_order, {}}; }),
+      .def(py::init([](int load_case, bool second_order) {
+             return ModalPrestress{load_case, second_order, {}};
+           }),
            py::arg("load_case") = 0, py::arg("second_order") = false)
       .def_readwrite("load_case", &ModalPrestress::load_case, "index into Structure.load_cases")
       .def_readwrite("second_order", &ModalPrestress::second_order,
@@ -59,8 +61,8 @@ void bind_msa_modes(py::module_& m) {
         const ModalOptions o = options.value_or(ModalOptions{});
         ModalResult r = without_gil([&] { return msa::modal_analysis(s, o); });
         if (!r.status.ok())
-          raise_status(r.status, r.status.code() == StatusCode::kSingular ? py::cast(r.linear.singularity)
-                                                                            : py::none());
+          raise_status(r.status,
+                       r.status.code() == StatusCode::kSingular ? py::cast(r.linear.singularity) : py::none());
         return r;
       },
       py::arg("structure"), py::arg("options") = py::none(),

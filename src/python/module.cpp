@@ -50,10 +50,17 @@ void create_exceptions(py::module_& m) {
 void raise_status(const Status& status, py::object diagnosis) {
   PyObject* type = kinestat_error;
   switch (status.code()) {
-    case StatusCode::kInvalidInput: type = input_error; break;
-    case StatusCode::kSingular: type = singular_error; break;
-    case StatusCode::kNotConverged: type = not_converged_error; break;
-    default: break;
+    case StatusCode::kInvalidInput:
+      type = input_error;
+      break;
+    case StatusCode::kSingular:
+      type = singular_error;
+      break;
+    case StatusCode::kNotConverged:
+      type = not_converged_error;
+      break;
+    default:
+      break;
   }
   py::object error = py::reinterpret_borrow<py::object>(type)(status.message());
   error.attr("diagnosis") = std::move(diagnosis);
@@ -73,9 +80,9 @@ Eigen::Isometry3d from_matrix4(const Eigen::Matrix4d& M) {
   const Eigen::Matrix3d R = M.topLeftCorner<3, 3>();
   const bool last_row = M.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1), 0.0);
   if (!M.allFinite() || !last_row || !(R.transpose() * R).isIdentity(1e-9) || !(R.determinant() > 0.0))
-    raise_status(Status::Invalid(fmt::format(
-        "transform: not a rigid transform (a 4x4 [[R, p], [0, 0, 0, 1]] with R a rotation); got\n{}",
-        fmt::join(M.data(), M.data() + 16, " "))));
+    raise_status(Status::Invalid(
+        fmt::format("transform: not a rigid transform (a 4x4 [[R, p], [0, 0, 0, 1]] with R a rotation); got\n{}",
+                    fmt::join(M.data(), M.data() + 16, " "))));
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = R;
   T.translation() = M.topRightCorner<3, 1>();
@@ -86,24 +93,27 @@ Eigen::Isometry3d from_matrix4(const Eigen::Matrix4d& M) {
 
 PYBIND11_MODULE(_kinestat, m) {
   namespace kp = kinestat::python;
-  m.doc() = "kinestat: stiffness of robots and frames (MSA, VJM, FEA, five-bar, Orthoglide). The C++ API's "
-            "namespaces are the submodules solver, msa, vjm, fea, mechanisms, io; core and elements are at the "
-            "top. SI units (m, N, rad, Pa) everywhere; see docs/python.md.";
+  m.doc() =
+      "kinestat: stiffness of robots and frames (MSA, VJM, FEA, five-bar, Orthoglide). The C++ API's "
+      "namespaces are the submodules solver, msa, vjm, fea, mechanisms, io; core and elements are at the "
+      "top. SI units (m, N, rad, Pa) everywhere; see docs/python.md.";
   m.attr("__version__") = KINESTAT_VERSION;
   kp::create_exceptions(m);
   kp::bind_core(m);
   kp::bind_elements(m);
   auto solver = m.def_submodule("solver", "Sparse Cholesky options and factorization reports (C++ kinestat::solver).");
   kp::bind_solver(solver);
-  auto msa = m.def_submodule("msa", "Matrix structural analysis: Structure -> solve() -> Solution (C++ kinestat::msa).");
+  auto msa =
+      m.def_submodule("msa", "Matrix structural analysis: Structure -> solve() -> Solution (C++ kinestat::msa).");
   kp::bind_msa(msa);
   auto vjm = m.def_submodule("vjm", "Virtual joint method: chains, equilibrium, stiffness (C++ kinestat::vjm).");
   kp::bind_vjm(vjm);
   auto fea = m.def_submodule("fea", "FEA link stiffness from tetrahedral meshes (C++ kinestat::fea).");
   kp::bind_fea(fea);
-  auto mech = m.def_submodule("mechanisms", "Five-bar and Orthoglide: kinematics, design, stiffness models, "
-                                            "identification; robots from files (RobotModel); posture kernels "
-                                            "(C++ kinestat::mechanisms).");
+  auto mech = m.def_submodule("mechanisms",
+                              "Five-bar and Orthoglide: kinematics, design, stiffness models, "
+                              "identification; robots from files (RobotModel); posture kernels "
+                              "(C++ kinestat::mechanisms).");
   kp::bind_mechanisms(mech);
   kp::bind_workspace_maps(mech);
   auto io = m.def_submodule("io", "Structure and model files, JSON results, VTK and PNG output (C++ kinestat::io).");

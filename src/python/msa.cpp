@@ -19,8 +19,10 @@ void bind_model(py::module_& m) {
   using namespace msa;
   m.attr("RIGID") = kRigid;
   py::class_<Node>(m, "Node", "A node: id and position (m).")
-      .def(py::init([](std::string id, const Vec3& p) { return Node{std::move(id), p}; }), py::arg("id"),
-           py::arg("position"))
+      .def(py::init([](std::string id, const Vec3& p) {
+             return Node{std::move(id), p};
+           }),
+           py::arg("id"), py::arg("position"))
       .def_readwrite("id", &Node::id)
       .def_readwrite("position", &Node::position);
 
@@ -72,21 +74,27 @@ void bind_model(py::module_& m) {
       .def_readwrite("frame", &RigidLink::frame);
 
   py::class_<Support>(m, "Support", "Fixed dofs (6 booleans ux..rz) of a node, in `frame` (identity: global).")
-      .def(py::init([](int node, const DofMask& fixed, const Mat3& frame) { return Support{node, fixed, frame}; }),
+      .def(py::init([](int node, const DofMask& fixed, const Mat3& frame) {
+             return Support{node, fixed, frame};
+           }),
            py::arg("node"), py::arg("fixed") = kAllDofs, py::arg("frame") = Mat3(Mat3::Identity()))
       .def_readwrite("node", &Support::node)
       .def_readwrite("fixed", &Support::fixed)
       .def_readwrite("frame", &Support::frame);
 
   py::class_<NodalLoad>(m, "NodalLoad", "A wrench (Fx Fy Fz in N, Mx My Mz in N m, global axes) on a node.")
-      .def(py::init([](int node, const Vec6& wrench) { return NodalLoad{node, wrench}; }), py::arg("node"),
-           py::arg("wrench"))
+      .def(py::init([](int node, const Vec6& wrench) {
+             return NodalLoad{node, wrench};
+           }),
+           py::arg("node"), py::arg("wrench"))
       .def_readwrite("node", &NodalLoad::node)
       .def_readwrite("wrench", &NodalLoad::wrench);
 
   py::class_<PrescribedDisplacement>(m, "PrescribedDisplacement",
                                      "A displacement (m or rad) of a supported dof, in the support's frame.")
-      .def(py::init([](int node, int dof, double value) { return PrescribedDisplacement{node, dof, value}; }),
+      .def(py::init([](int node, int dof, double value) {
+             return PrescribedDisplacement{node, dof, value};
+           }),
            py::arg("node"), py::arg("dof"), py::arg("value"))
       .def_readwrite("node", &PrescribedDisplacement::node)
       .def_readwrite("dof", &PrescribedDisplacement::dof)

@@ -45,9 +45,9 @@ std::vector<std::string> task_names(const RobotModel& m) {
 void check_task(const RobotModel& m, const VecX& task, const char* what) {
   const auto names = task_names(m);
   if (task.size() != static_cast<Eigen::Index>(names.size()))
-    raise_status(Status::Invalid(fmt::format("{}: {} values given; '{}' has {} task coordinates ({}), in m and rad",
-                                             what, task.size(), m.description().name, names.size(),
-                                             fmt::join(names, ", "))));
+    raise_status(
+        Status::Invalid(fmt::format("{}: {} values given; '{}' has {} task coordinates ({}), in m and rad", what,
+                                    task.size(), m.description().name, names.size(), fmt::join(names, ", "))));
   if (!task.allFinite())
     raise_status(Status::Invalid(fmt::format("{}: a value is not finite: [{}]", what, fmt::join(task, ", "))));
 }
@@ -89,8 +89,8 @@ io::ParamOverrides overrides(const std::optional<py::dict>& params) {
   if (!params) return o;
   for (const auto& [key, value] : *params) {
     if (!py::isinstance<py::str>(key))
-      raise_status(Status::Invalid(fmt::format("params: the key {} is not a parameter name (a str)",
-                                               py::repr(key).cast<std::string>())));
+      raise_status(Status::Invalid(
+          fmt::format("params: the key {} is not a parameter name (a str)", py::repr(key).cast<std::string>())));
     double v = 0.0;
     try {
       v = value.cast<double>();
@@ -123,18 +123,24 @@ void bind_model(py::module_& m) {
                             "joint values q and the tool pose (4x4, m) reached, the singularity measure and why it "
                             "failed (message). Give it as `start` to solve a neighbouring posture from it.")
       .def_property_readonly("status", [](const RobotSolution& s) { return std::string(to_string(s.result.status)); })
-      .def_property_readonly("kinematics_status", [](const RobotSolution& s) { return s.result.status; },
-                             "the status as a KinematicsStatus")
+      .def_property_readonly(
+          "kinematics_status", [](const RobotSolution& s) { return s.result.status; },
+          "the status as a KinematicsStatus")
       .def_property_readonly("ok", [](const RobotSolution& s) { return s.result.status == KinematicsStatus::kOk; })
-      .def_property_readonly("q", [](const RobotSolution& s) { return s.posture.q; },
-                             "every joint coordinate (legs in order; m or rad), from home")
-      .def_property_readonly("tool", [](const RobotSolution& s) { return to_matrix4(s.posture.tool); },
-                             "the tool pose, 4x4 homogeneous (m), base frame")
-      .def_property_readonly("task", [](const RobotSolution& s) { return s.task; }, "the task values asked for")
-      .def_property_readonly("singularity_measure", [](const RobotSolution& s) { return s.result.singularity_measure; },
-                             "in [0, 1], 0 at a singularity (Type 1 or 2)")
+      .def_property_readonly(
+          "q", [](const RobotSolution& s) { return s.posture.q; },
+          "every joint coordinate (legs in order; m or rad), from home")
+      .def_property_readonly(
+          "tool", [](const RobotSolution& s) { return to_matrix4(s.posture.tool); },
+          "the tool pose, 4x4 homogeneous (m), base frame")
+      .def_property_readonly(
+          "task", [](const RobotSolution& s) { return s.task; }, "the task values asked for")
+      .def_property_readonly(
+          "singularity_measure", [](const RobotSolution& s) { return s.result.singularity_measure; },
+          "in [0, 1], 0 at a singularity (Type 1 or 2)")
       .def_property_readonly("iterations", [](const RobotSolution& s) { return s.result.iterations; })
-      .def_property_readonly("message", [](const RobotSolution& s) { return s.result.message; }, "why, when not ok")
+      .def_property_readonly(
+          "message", [](const RobotSolution& s) { return s.result.message; }, "why, when not ok")
       .def("__repr__", [](const RobotSolution& s) {
         return fmt::format("<RobotSolution {} q=[{:.6g}]{}>", to_string(s.result.status), fmt::join(s.posture.q, ", "),
                            s.result.message.empty() ? "" : ": " + s.result.message);
@@ -146,10 +152,12 @@ void bind_model(py::module_& m) {
       "parameters. Built once and then only read; solve() gives a posture, kernel() the posture kernel of maps. "
       "SI units (m, rad) in and out; params in the file's units. io.read_robot_model or robots.load make one.")
       .def_property_readonly("name", [](const RobotModel& r) { return r.description().name; })
-      .def_property_readonly("source", [](const RobotModel& r) { return r.description().source; }, "the file")
+      .def_property_readonly(
+          "source", [](const RobotModel& r) { return r.description().source; }, "the file")
       .def_property_readonly("task", &task_names, "the task coordinates' names, e.g. ['x', 'y', 'z']")
-      .def_property_readonly("params", [](const RobotModel& r) { return params_dict(r.description().params); },
-                             "{name: value} after evaluation, in the file's units (its `units:`)")
+      .def_property_readonly(
+          "params", [](const RobotModel& r) { return params_dict(r.description().params); },
+          "{name: value} after evaluation, in the file's units (its `units:`)")
       .def_property_readonly("num_legs", &RobotModel::num_legs)
       .def_property_readonly("leg_names",
                              [](const RobotModel& r) {
@@ -164,17 +172,18 @@ void bind_model(py::module_& m) {
                                for (int k = 0; k < r.num_coordinates(); ++k) names.push_back(r.coordinate_name(k));
                                return names;
                              })
-      .def_property_readonly("actuated",
-                             [](const RobotModel& r) {
-                               std::vector<bool> a;
-                               for (const auto& c : r.coordinates()) a.push_back(r.actuated(c));
-                               return a;
-                             },
-                             "per joint coordinate: driven by a motor")
+      .def_property_readonly(
+          "actuated",
+          [](const RobotModel& r) {
+            std::vector<bool> a;
+            for (const auto& c : r.coordinates()) a.push_back(r.actuated(c));
+            return a;
+          },
+          "per joint coordinate: driven by a motor")
       .def_property_readonly("planar", [](const RobotModel& r) { return r.description().planar; })
       .def_property_readonly("home_task", &RobotModel::home_task, "the task values at home (m, rad)")
-      .def_property_readonly("home_tool", [](const RobotModel& r) { return to_matrix4(r.home().tool); },
-                             "the tool pose at home (4x4, m)")
+      .def_property_readonly(
+          "home_tool", [](const RobotModel& r) { return to_matrix4(r.home().tool); }, "the tool pose at home (4x4, m)")
       .def_property_readonly(
           "workspace",
           [](const RobotModel& r) -> py::object {
@@ -183,8 +192,9 @@ void bind_model(py::module_& m) {
           },
           "the file's map region: [(x lo, hi), (y lo, hi), (z lo, hi)] (m), or None")
       .def_property_readonly("length_scale", &RobotModel::length_scale, "m: the largest joint distance from the base")
-      .def_property_readonly("default_map_axes", [](const RobotModel& r) { return default_map_axes(r); },
-                             "which task coordinate the grid's x, y, z set (-1: none)")
+      .def_property_readonly(
+          "default_map_axes", [](const RobotModel& r) { return default_map_axes(r); },
+          "which task coordinate the grid's x, y, z set (-1: none)")
       .def(
           "solve",
           [](const ModelPtr& r, const VecX& task, const std::optional<RobotSolution>& start, bool continuation) {
@@ -218,9 +228,7 @@ void bind_model(py::module_& m) {
           "The legs' VJM chains (vjm.Chain) at a solved posture, for the vjm functions; InputError if not solved.")
       .def(
           "vjm_chains",
-          [](const ModelPtr& r, const VecX& task) {
-            return chains_at(*r, solve(*r, task, std::nullopt, true));
-          },
+          [](const ModelPtr& r, const VecX& task) { return chains_at(*r, solve(*r, task, std::nullopt, true)); },
           py::arg("task"), "The same at the task values (m, rad), solved from home.")
       .def("__repr__", [](const RobotModel& r) {
         return fmt::format("<RobotModel '{}': {} legs, task [{}]>", r.description().name, r.num_legs(),

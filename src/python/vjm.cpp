@@ -38,7 +38,9 @@ CartesianStiffness checked(StatusOr<CartesianStiffness>&& r, bool raise_on_singu
 }
 
 void bind_chain(py::module_& m) {
-  py::enum_<JointType>(m, "JointType").value("REVOLUTE", JointType::kRevolute).value("PRISMATIC", JointType::kPrismatic);
+  py::enum_<JointType>(m, "JointType")
+      .value("REVOLUTE", JointType::kRevolute)
+      .value("PRISMATIC", JointType::kPrismatic);
   py::enum_<VariableKind>(m, "VariableKind")
       .value("PASSIVE", VariableKind::kPassive)
       .value("VIRTUAL", VariableKind::kVirtual);
@@ -49,7 +51,8 @@ void bind_chain(py::module_& m) {
   py::class_<Factor>(m, "Factor", "One factor of the chain's product (eq. 1): a constant transform or a motion.")
       .def_readonly("label", &Factor::label)
       .def_readonly("is_motion", &Factor::is_motion)
-      .def_property_readonly("transform", [](const Factor& f) { return to_matrix4(f.transform); }, "4x4")
+      .def_property_readonly(
+          "transform", [](const Factor& f) { return to_matrix4(f.transform); }, "4x4")
       .def_readonly("type", &Factor::type)
       .def_readonly("axis", &Factor::axis)
       .def_readonly("offset", &Factor::offset)
@@ -64,7 +67,8 @@ void bind_chain(py::module_& m) {
                     "6-dof virtual springs, passive joints, tool transform. SI units; axes in the current frame.")
       .def(py::init<std::string>(), py::arg("name") = "chain")
       .def(
-          "add_transform", [](Chain& c, const Eigen::Matrix4d& T, std::string label) {
+          "add_transform",
+          [](Chain& c, const Eigen::Matrix4d& T, std::string label) {
             c.add_transform(from_matrix4(T), std::move(label));
           },
           py::arg("T"), py::arg("label"), "A constant rigid transform (4x4).")
@@ -88,14 +92,16 @@ void bind_chain(py::module_& m) {
       .def_property_readonly("springs", &Chain::springs, py::return_value_policy::copy)
       .def_property_readonly("num_passive", &Chain::num_passive)
       .def_property_readonly("num_virtual", &Chain::num_virtual)
-      .def_property("nominal_passive", [](const Chain& c) { return c.nominal_passive(); },
-                    [](Chain& c, const VecX& q) {
-                      check_coordinates(c, q, VecX::Zero(c.num_virtual()));
-                      c.set_nominal_passive(q);
-                    })
+      .def_property(
+          "nominal_passive", [](const Chain& c) { return c.nominal_passive(); },
+          [](Chain& c, const VecX& q) {
+            check_coordinates(c, q, VecX::Zero(c.num_virtual()));
+            c.set_nominal_passive(q);
+          })
       .def("spring_stiffness", &Chain::spring_stiffness, "K_theta (eq. 6)")
       .def("length_scale", &Chain::length_scale)
-      .def("validate", [](const Chain& c) { check(c.validate()); }, "Raises InputError naming the chain and factor.")
+      .def(
+          "validate", [](const Chain& c) { check(c.validate()); }, "Raises InputError naming the chain and factor.")
       .def(
           "forward",
           [](const Chain& c, const VecX& q, const VecX& theta) {
@@ -184,8 +190,8 @@ void bind_equilibrium(py::module_& m) {
         if (start) check_coordinates(c, start->q, start->theta);
         return unwrap(without_gil([&] { return chain_equilibrium(c, d, o, start); }));
       },
-      py::arg("chain"), py::arg("displacement"), py::arg("options") = EquilibriumOptions{},
-      py::arg("start") = nullptr, "Equilibrium of one chain whose tool is displaced (m, rad), eq. (11).");
+      py::arg("chain"), py::arg("displacement"), py::arg("options") = EquilibriumOptions{}, py::arg("start") = nullptr,
+      "Equilibrium of one chain whose tool is displaced (m, rad), eq. (11).");
   m.def(
       "validate_platform", [](const std::vector<Chain>& chains) { check(validate_platform(chains)); },
       py::arg("chains"), "Raises InputError unless the chains are valid and their tool points coincide.");
@@ -212,7 +218,9 @@ void bind_stiffness(py::module_& m) {
   bind_vjm_cartesian_stiffness(m);
   m.def(
       "unloaded_stiffness",
-      [](const Chain& c, const StiffnessOptions& o) { return unwrap(without_gil([&] { return unloaded_stiffness(c, o); })); },
+      [](const Chain& c, const StiffnessOptions& o) {
+        return unwrap(without_gil([&] { return unloaded_stiffness(c, o); }));
+      },
       py::arg("chain"), py::arg("options") = StiffnessOptions{},
       "One chain at its nominal coordinates, eq. (9)-(10); free directions are its passive mobility.");
   m.def(

@@ -22,9 +22,7 @@ namespace {
 using namespace mechanisms;
 
 // The grid's points as the shape NumPy indexes them: [k, j, i] is point i + nx (j + ny k).
-std::vector<py::ssize_t> grid_shape(const MapGrid& g) {
-  return {g.dimensions[2], g.dimensions[1], g.dimensions[0]};
-}
+std::vector<py::ssize_t> grid_shape(const MapGrid& g) { return {g.dimensions[2], g.dimensions[1], g.dimensions[0]}; }
 
 template <class T, class V>
 py::array_t<T> grid_array(const MapGrid& g, const std::vector<V>& values) {
@@ -37,8 +35,8 @@ py::array_t<T> grid_array(const MapGrid& g, const std::vector<V>& values) {
 // The design results' values over the (r1, r2) grid: (ny, nx) = (r2 steps, r1 steps).
 template <class F>
 py::array_t<double> design_array(const FiveBarDesignSweep& s, F&& value) {
-  py::array_t<double> a({static_cast<py::ssize_t>(s.designs.dimensions[1]),
-                         static_cast<py::ssize_t>(s.designs.dimensions[0])});
+  py::array_t<double> a(
+      {static_cast<py::ssize_t>(s.designs.dimensions[1]), static_cast<py::ssize_t>(s.designs.dimensions[0])});
   double* out = a.mutable_data();
   for (size_t i = 0; i < s.results.size(); ++i) out[i] = value(s.results[i]);
   return a;
@@ -47,7 +45,8 @@ py::array_t<double> design_array(const FiveBarDesignSweep& s, F&& value) {
 const FieldValues& map_field_values(const WorkspaceMap& m, MapField f) {
   const FieldValues* v = m.find(f);
   if (v == nullptr)
-    raise_status(Status::Invalid(fmt::format("field {}: this map has none (the deflections need a load)", field_info(f).name)));
+    raise_status(
+        Status::Invalid(fmt::format("field {}: this map has none (the deflections need a load)", field_info(f).name)));
   return *v;
 }
 
@@ -57,7 +56,8 @@ MapGrid make_grid(const Vec3& origin, const Vec3& spacing, const std::array<int,
   for (int a = 0; a < 3; ++a) {
     const std::string axis = fmt::format("MapGrid: the {} axis's ", "xyz"[a]);
     if (dimensions[a] < 1)
-      raise_status(Status::Invalid(fmt::format("{}dimension {}: every axis has at least one point", axis, dimensions[a])));
+      raise_status(
+          Status::Invalid(fmt::format("{}dimension {}: every axis has at least one point", axis, dimensions[a])));
     check(check_quantity(spacing(a), Quantity::kLength, axis + "spacing", {}, Sign::kPositive));
     check(check_quantity(origin(a), Quantity::kLength, axis + "origin"));
     points *= dimensions[a];
@@ -68,11 +68,17 @@ MapGrid make_grid(const Vec3& origin, const Vec3& spacing, const std::array<int,
 }
 
 void bind_grid(py::module_& m) {
-  py::class_<MapRange>(m, "MapRange", "A closed range lo..hi of one coordinate (m); lo == hi: that single value. A "
-                                      "(lo, hi) tuple or a number converts to it.")
-      .def(py::init([](double lo, std::optional<double> hi) { return MapRange{lo, hi.value_or(lo)}; }), py::arg("lo"),
-           py::arg("hi") = py::none())
-      .def(py::init([](const std::pair<double, double>& t) { return MapRange{t.first, t.second}; }), py::arg("range"))
+  py::class_<MapRange>(m, "MapRange",
+                       "A closed range lo..hi of one coordinate (m); lo == hi: that single value. A "
+                       "(lo, hi) tuple or a number converts to it.")
+      .def(py::init([](double lo, std::optional<double> hi) {
+             return MapRange{lo, hi.value_or(lo)};
+           }),
+           py::arg("lo"), py::arg("hi") = py::none())
+      .def(py::init([](const std::pair<double, double>& t) {
+             return MapRange{t.first, t.second};
+           }),
+           py::arg("range"))
       .def_readwrite("lo", &MapRange::lo)
       .def_readwrite("hi", &MapRange::hi)
       .def("__repr__", [](const MapRange& r) { return fmt::format("MapRange({:g}, {:g})", r.lo, r.hi); });
@@ -87,8 +93,9 @@ void bind_grid(py::module_& m) {
       .def_readonly("origin", &MapGrid::origin, "m")
       .def_readonly("spacing", &MapGrid::spacing, "m")
       .def_readonly("dimensions", &MapGrid::dimensions, "[nx, ny, nz]")
-      .def_property_readonly("shape", [](const MapGrid& g) { return py::tuple(py::cast(grid_shape(g))); },
-                             "(nz, ny, nx): the shape of the arrays over the grid")
+      .def_property_readonly(
+          "shape", [](const MapGrid& g) { return py::tuple(py::cast(grid_shape(g))); },
+          "(nz, ny, nx): the shape of the arrays over the grid")
       .def_property_readonly(
           "axes",
           [](const MapGrid& g) {
@@ -124,8 +131,9 @@ void bind_grid(py::module_& m) {
 }
 
 void bind_map(py::module_& m) {
-  py::enum_<MapField>(m, "MapField", "A map field; its name (field_info(f).name, e.g. 'k_t_min') is accepted wherever "
-                                     "a MapField is (docs/maps.md lists formulas and units).")
+  py::enum_<MapField>(m, "MapField",
+                      "A map field; its name (field_info(f).name, e.g. 'k_t_min') is accepted wherever "
+                      "a MapField is (docs/maps.md lists formulas and units).")
       .value("TRANSLATIONAL_MIN", MapField::kTranslationalMin)
       .value("TRANSLATIONAL_MAX", MapField::kTranslationalMax)
       .value("ROTATIONAL_MIN", MapField::kRotationalMin)
@@ -192,10 +200,12 @@ void bind_map(py::module_& m) {
       .def_readonly("reachable_measure", &WorkspaceMap::reachable_measure, "m^2 (a plane) or m^3 (a box)")
       .def_readonly("stiff_measure", &WorkspaceMap::stiff_measure, "m^2 or m^3 with k_t_min >= min_stiffness")
       .def_property_readonly("shape", [](const WorkspaceMap& w) { return py::tuple(py::cast(grid_shape(w.grid))); })
-      .def_property_readonly("status", [](const WorkspaceMap& w) { return grid_array<std::uint8_t>(w.grid, w.status); },
-                             "(nz, ny, nx) uint8, PostureStatus values")
       .def_property_readonly(
-          "mask", [](const WorkspaceMap& w) {
+          "status", [](const WorkspaceMap& w) { return grid_array<std::uint8_t>(w.grid, w.status); },
+          "(nz, ny, nx) uint8, PostureStatus values")
+      .def_property_readonly(
+          "mask",
+          [](const WorkspaceMap& w) {
             std::vector<bool> none;
             for (PostureStatus s : w.status) none.push_back(!has_values(s));
             return grid_array<bool>(w.grid, none);
@@ -208,7 +218,8 @@ void bind_map(py::module_& m) {
           },
           py::arg("field"), "(nz, ny, nx) float64 in SI units (field_info(f).unit), NaN where no value.")
       .def(
-          "summary", [](const WorkspaceMap& w, const MapFieldArg& f) { return map_field_values(w, map_field(f)).summary; },
+          "summary",
+          [](const WorkspaceMap& w, const MapFieldArg& f) { return map_field_values(w, map_field(f)).summary; },
           py::arg("field"))
       .def_property_readonly(
           "field_names",
@@ -222,7 +233,8 @@ void bind_map(py::module_& m) {
           "status_counts",
           [](const WorkspaceMap& w) {
             py::dict d;
-            for (int s = 0; s < kNumPostureStatuses; ++s) d[to_string(static_cast<PostureStatus>(s))] = w.status_counts[s];
+            for (int s = 0; s < kNumPostureStatuses; ++s)
+              d[to_string(static_cast<PostureStatus>(s))] = w.status_counts[s];
             return d;
           },
           "{'ok': n, 'unreachable': n, ...}")
@@ -294,18 +306,27 @@ void bind_design_sweep(py::module_& m) {
       .def_readonly("results", &FiveBarDesignSweep::results, "FiveBarDesignResult per design, r1 fastest")
       .def_readonly("best", &FiveBarDesignSweep::best, "index of the best design (better_design)")
       .def_property_readonly("best_design", [](const FiveBarDesignSweep& s) { return s.results.at(s.best); })
-      .def_property_readonly("r1", [](const FiveBarDesignSweep& s) {
-        return design_array(s, [](const FiveBarDesignResult& r) { return r.r1; });
-      }, "(ny, nx) m")
-      .def_property_readonly("r2", [](const FiveBarDesignSweep& s) {
-        return design_array(s, [](const FiveBarDesignResult& r) { return r.r2; });
-      }, "(ny, nx) m")
+      .def_property_readonly(
+          "r1",
+          [](const FiveBarDesignSweep& s) {
+            return design_array(s, [](const FiveBarDesignResult& r) { return r.r1; });
+          },
+          "(ny, nx) m")
+      .def_property_readonly(
+          "r2",
+          [](const FiveBarDesignSweep& s) {
+            return design_array(s, [](const FiveBarDesignResult& r) { return r.r2; });
+          },
+          "(ny, nx) m")
       .def_property_readonly("reachable_share", shares(&FiveBarDesignResult::reachable), "(ny, nx) in [0, 1]")
       .def_property_readonly("singularity_free_share", shares(&FiveBarDesignResult::singularity_free), "(ny, nx)")
       .def_property_readonly("share", shares(&FiveBarDesignResult::stiff), "(ny, nx): the design criterion")
-      .def_property_readonly("k_t_min_worst", [](const FiveBarDesignSweep& s) {
-        return design_array(s, [](const FiveBarDesignResult& r) { return r.k_t_min_worst; });
-      }, "(ny, nx) N/m, NaN where no point is singularity-free");
+      .def_property_readonly(
+          "k_t_min_worst",
+          [](const FiveBarDesignSweep& s) {
+            return design_array(s, [](const FiveBarDesignResult& r) { return r.k_t_min_worst; });
+          },
+          "(ny, nx) N/m, NaN where no point is singularity-free");
   m.def(
       "sweep_five_bar_designs",
       [](const FiveBarDesignSweepOptions& o) {

@@ -28,14 +28,22 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 const char* ordering_name(int ordering) {
   switch (ordering) {
-    case CHOLMOD_NATURAL: return "natural";
-    case CHOLMOD_GIVEN: return "given";
-    case CHOLMOD_AMD: return "AMD";
-    case CHOLMOD_METIS: return "METIS";
-    case CHOLMOD_NESDIS: return "NESDIS";
-    case CHOLMOD_COLAMD: return "COLAMD";
-    case CHOLMOD_POSTORDERED: return "postordered";
-    default: return "unknown";
+    case CHOLMOD_NATURAL:
+      return "natural";
+    case CHOLMOD_GIVEN:
+      return "given";
+    case CHOLMOD_AMD:
+      return "AMD";
+    case CHOLMOD_METIS:
+      return "METIS";
+    case CHOLMOD_NESDIS:
+      return "NESDIS";
+    case CHOLMOD_COLAMD:
+      return "COLAMD";
+    case CHOLMOD_POSTORDERED:
+      return "postordered";
+    default:
+      return "unknown";
   }
 }
 
@@ -148,7 +156,8 @@ std::vector<int> grouped_metis_ordering(cholmod_sparse* lower, cholmod_common* c
   std::vector<int> perm;
   if (groups < n) {
     std::vector<int> group_of(n);
-    for (int g = 0; g < groups; ++g) std::fill(group_of.begin() + group_start[g], group_of.begin() + group_start[g + 1], g);
+    for (int g = 0; g < groups; ++g)
+      std::fill(group_of.begin() + group_start[g], group_of.begin() + group_start[g + 1], g);
     // The groups' graph, lower triangle: the rows of each group's first column, as groups (ascending).
     cholmod_sparse* G = cholmod_allocate_sparse(groups, groups, p[n], 1, 1, -1, CHOLMOD_PATTERN, c);
     if (G) {
@@ -180,13 +189,20 @@ class CholmodCholesky final : public SparseCholesky {
   explicit CholmodCholesky(const SparseCholeskyOptions& options) : options_(options) {
     use_huge_pages_for_cholmod();
     cholmod_start(&common_);
-    common_.print = 0;               // failures are reported through FactorizationReport
+    common_.print = 0;  // failures are reported through FactorizationReport
     common_.error_handler = nullptr;
     switch (options_.ordering) {
-      case Ordering::kAuto: break;   // METIS on the column groups and AMD, the better one (Factorize)
-      case Ordering::kAmd: set_single_ordering(CHOLMOD_AMD); break;
-      case Ordering::kMetis: set_single_ordering(CHOLMOD_METIS); break;
-      case Ordering::kNatural: set_single_ordering(CHOLMOD_NATURAL); break;
+      case Ordering::kAuto:
+        break;  // METIS on the column groups and AMD, the better one (Factorize)
+      case Ordering::kAmd:
+        set_single_ordering(CHOLMOD_AMD);
+        break;
+      case Ordering::kMetis:
+        set_single_ordering(CHOLMOD_METIS);
+        break;
+      case Ordering::kNatural:
+        set_single_ordering(CHOLMOD_NATURAL);
+        break;
     }
   }
   ~CholmodCholesky() override {
@@ -289,10 +305,9 @@ class CholmodCholesky final : public SparseCholesky {
     if (computed < n) r.failed_column = perm ? perm[computed] : computed;
     check_pivots(lower, computed, r);
     if (r.singular()) {
-      return Status::Singular(r.failed_column >= 0
-                                  ? fmt::format("pivot of column {} is not positive", r.failed_column)
-                                  : fmt::format("{} column(s) with pivot ratio below {:g}", r.weak_columns.size(),
-                                                options_.singular_pivot_ratio));
+      return Status::Singular(r.failed_column >= 0 ? fmt::format("pivot of column {} is not positive", r.failed_column)
+                                                   : fmt::format("{} column(s) with pivot ratio below {:g}",
+                                                                 r.weak_columns.size(), options_.singular_pivot_ratio));
     }
     factor_ok_ = true;
     return Status::Ok();

@@ -4,9 +4,9 @@
 #include <exception>
 #include <stdexcept>
 
-#include <Eigen/Eigenvalues>
 #include <Spectra/SymGEigsSolver.h>
 #include <fmt/format.h>
+#include <Eigen/Eigenvalues>
 
 namespace kinestat::solver {
 namespace {
@@ -19,12 +19,13 @@ struct Product {
   Eigen::Index rows() const { return A.rows(); }
   Eigen::Index cols() const { return A.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<VecX>(y_out, A.rows()).noalias() = A.selfadjointView<Eigen::Lower>() * Eigen::Map<const VecX>(x_in, A.cols());
+    Eigen::Map<VecX>(y_out, A.rows()).noalias() =
+        A.selfadjointView<Eigen::Lower>() * Eigen::Map<const VecX>(x_in, A.cols());
   }
 };
 
-// B = K (reduced, positive definite; its lower triangle read): y = B x, and y = B^-1 x through kinestat's sparse Cholesky
-// (CHOLMOD, or the caller's backend), factorized once.
+// B = K (reduced, positive definite; its lower triangle read): y = B x, and y = B^-1 x through kinestat's sparse
+// Cholesky (CHOLMOD, or the caller's backend), factorized once.
 struct StiffnessInverse {
   using Scalar = double;
   const SparseMatrix& K;
@@ -32,7 +33,8 @@ struct StiffnessInverse {
   Eigen::Index rows() const { return K.rows(); }
   Eigen::Index cols() const { return K.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<VecX>(y_out, K.rows()).noalias() = K.selfadjointView<Eigen::Lower>() * Eigen::Map<const VecX>(x_in, K.cols());
+    Eigen::Map<VecX>(y_out, K.rows()).noalias() =
+        K.selfadjointView<Eigen::Lower>() * Eigen::Map<const VecX>(x_in, K.cols());
   }
   void solve(const double* x_in, double* y_out) const {
     MatX X;
@@ -48,8 +50,7 @@ constexpr int kDenseBelow = 24;
 
 }  // namespace
 
-StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A,
-                                                               const SparseMatrix& Kr,
+StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
                                                                const SparseCholesky& chol, int count) {
   const int n = static_cast<int>(Kr.rows());
   if (n < kDenseBelow) {
@@ -58,21 +59,22 @@ StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatri
     Eigen::GeneralizedSelfAdjointEigenSolver<MatX> ges(Ad, Kd);
     if (ges.info() != Eigen::Success) return Status::Internal("the dense generalized eigensolver failed");
     const int m = std::min(count, n);
-    return std::pair<VecX, MatX>{ges.eigenvalues().tail(m).reverse(), ges.eigenvectors().rightCols(m).rowwise().reverse()};
+    return std::pair<VecX, MatX>{ges.eigenvalues().tail(m).reverse(),
+                                 ges.eigenvectors().rightCols(m).rowwise().reverse()};
   }
   Product op{A};
   StiffnessInverse bop{Kr, chol};
   const int nev = std::min(count, n - 1);
   const int ncv = std::min(n, std::max(2 * nev + 1, 20));
   try {
-    Spectra::SymGEigsSolver<Product, StiffnessInverse, Spectra::GEigsMode::RegularInverse> eig(op, bop, nev,
-                                                                                                         ncv);
+    Spectra::SymGEigsSolver<Product, StiffnessInverse, Spectra::GEigsMode::RegularInverse> eig(op, bop, nev, ncv);
     eig.init();
     eig.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
     if (eig.info() != Spectra::CompInfo::Successful)
-      return Status::NotConverged(fmt::format("the Lanczos eigensolver (Spectra) did not converge to {} eigenvalues in "
-                                              "1000 restarts; ask for fewer modes",
-                                              nev));
+      return Status::NotConverged(
+          fmt::format("the Lanczos eigensolver (Spectra) did not converge to {} eigenvalues in "
+                      "1000 restarts; ask for fewer modes",
+                      nev));
     return std::pair<VecX, MatX>{eig.eigenvalues(), eig.eigenvectors()};
   } catch (const std::exception& e) {
     return Status::Internal(fmt::format("the Lanczos eigensolver (Spectra) failed: {}", e.what()));

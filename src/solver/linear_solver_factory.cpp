@@ -9,9 +9,11 @@ namespace kinestat::solver {
 
 std::unique_ptr<SparseCholesky> make_sparse_cholesky(const SparseCholeskyOptions& options) {
   switch (options.backend) {
-    case Backend::kCholmod: return make_cholmod_cholesky(options);
+    case Backend::kCholmod:
+      return make_cholmod_cholesky(options);
     case Backend::kPetscMumps:
-    case Backend::kPetscCg: return make_petsc_solver(options);
+    case Backend::kPetscCg:
+      return make_petsc_solver(options);
   }
   return nullptr;  // unreachable: every enumerator has a case (-Wswitch checks it)
 }
@@ -27,9 +29,12 @@ std::vector<Backend> available_backends() {
 
 const char* backend_name(Backend backend) {
   switch (backend) {
-    case Backend::kCholmod: return "cholmod";
-    case Backend::kPetscMumps: return "petsc-mumps";
-    case Backend::kPetscCg: return "petsc-cg";
+    case Backend::kCholmod:
+      return "cholmod";
+    case Backend::kPetscMumps:
+      return "petsc-mumps";
+    case Backend::kPetscCg:
+      return "petsc-cg";
   }
   return "unknown";
 }
@@ -62,8 +67,8 @@ Status SparseCholesky::FactorizeSum(std::span<const SparseMatrix> summands, Fact
   SparseMatrix A = summands[0];
   for (const SparseMatrix& s : summands.subspan(1)) {
     if (s.rows() != A.rows() || s.cols() != A.cols())
-      return Status::Invalid(fmt::format("FactorizeSum: a {} x {} summand of a {} x {} matrix", s.rows(), s.cols(),
-                                         A.rows(), A.cols()));
+      return Status::Invalid(
+          fmt::format("FactorizeSum: a {} x {} summand of a {} x {} matrix", s.rows(), s.cols(), A.rows(), A.cols()));
     A += s;
   }
   return Factorize(A, report);

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <utility>
 #include <thread>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -63,8 +63,8 @@ Status gather_vector(std::vector<T>& values, MPI_Datatype type) {
       return Status::Internal("MPI gather: the ranks' data is larger than MPI's int counts");
     all.resize(static_cast<std::size_t>(total));
   }
-  if (MPI_Gatherv(values.data(), mine, type, all.data(), counts.data(), offsets.data(), type, 0,
-                  PETSC_COMM_WORLD) != MPI_SUCCESS)
+  if (MPI_Gatherv(values.data(), mine, type, all.data(), counts.data(), offsets.data(), type, 0, PETSC_COMM_WORLD) !=
+      MPI_SUCCESS)
     return Status::Internal("MPI_Gatherv of the ranks' data failed");
   if (group.rank == 0) values = std::move(all);
   return Status::Ok();
@@ -135,9 +135,10 @@ Status same_on_every_rank(const std::string& what, const std::string& value) {
   const std::string rank0(root.begin(), root.end());
   Status mine = Status::Ok();
   if (rank0 != value)
-    mine = Status::Invalid(fmt::format("MPI rank {}: {} differs from rank 0's ('{}' against '{}'); every rank of a "
-                                       "job must be given the same options and see the same files",
-                                       group.rank, what, value, rank0));
+    mine =
+        Status::Invalid(fmt::format("MPI rank {}: {} differs from rank 0's ('{}' against '{}'); every rank of a "
+                                    "job must be given the same options and see the same files",
+                                    group.rank, what, value, rank0));
   return agree_on_status(mine);
 }
 

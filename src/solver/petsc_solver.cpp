@@ -18,8 +18,8 @@
 #include "kinestat/solver/parallel.hpp"
 
 #if KINESTAT_HAVE_PETSC
-#include <Eigen/QR>
 #include <petscksp.h>
+#include <Eigen/QR>
 #endif
 
 namespace kinestat::solver {
@@ -34,8 +34,8 @@ Status petsc_error(PetscErrorCode code, const char* call) {
   PetscErrorMessage(code, &text, nullptr);
   return Status::Internal(fmt::format("PETSc: {} failed: {}", call, text ? text : "unknown error"));
 }
-#define KINESTAT_PETSC(call)                                                      \
-  do {                                                                            \
+#define KINESTAT_PETSC(call)                                                         \
+  do {                                                                               \
     if (PetscErrorCode code_ = (call); code_ != 0) return petsc_error(code_, #call); \
   } while (0)
 
@@ -123,7 +123,8 @@ class PetscSolver final : public SparseCholesky {
           *relative = norm_b > 0.0 ? norm_r / norm_b : norm_r;
           return 0;
         };
-        Monitor monitor{this, static_cast<int>(k), static_cast<int>(B.cols()), norm_b, std::chrono::steady_clock::now()};
+        Monitor monitor{this, static_cast<int>(k), static_cast<int>(B.cols()), norm_b,
+                        std::chrono::steady_clock::now()};
         KINESTAT_PETSC(KSPMonitorCancel(ksp_));
         if (options_.progress) KINESTAT_PETSC(KSPMonitorSet(ksp_, &Monitor::call, &monitor, nullptr));
         KINESTAT_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_FALSE));
@@ -139,8 +140,8 @@ class PetscSolver final : public SparseCholesky {
         // residual is above the tolerance and a restart still halves it. Round-off bounds what any
         // restart reaches (~1e-10 on the 41k-dof bar for the moment cases); what was reached is reported.
         KINESTAT_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
-        for (double before = std::numeric_limits<double>::infinity(); iterative() && reason > 0 && relative > options_.relative_tolerance &&
-                                             relative < 0.5 * before;) {
+        for (double before = std::numeric_limits<double>::infinity();
+             iterative() && reason > 0 && relative > options_.relative_tolerance && relative < 0.5 * before;) {
           before = relative;
           KINESTAT_PETSC(KSPSolve(ksp_, b, x));
           KINESTAT_PETSC(KSPGetConvergedReason(ksp_, &reason));
@@ -274,12 +275,12 @@ class PetscSolver final : public SparseCholesky {
     auto count = [&](PetscInt row, PetscInt col) {
       ++(owner_of(*offsets, static_cast<int>(row)) == owner_of(*offsets, static_cast<int>(col)) ? diagonal : off)[row];
     };
-    Status counted = for_each_column([&](PetscInt c, const auto& lower_rows, const auto&, const auto& upper_cols,
-                                         const auto&) {
-      for (PetscInt row : lower_rows) count(row, c);
-      for (PetscInt col : upper_cols) count(c, col);
-      return Status::Ok();
-    });
+    Status counted =
+        for_each_column([&](PetscInt c, const auto& lower_rows, const auto&, const auto& upper_cols, const auto&) {
+          for (PetscInt row : lower_rows) count(row, c);
+          for (PetscInt col : upper_cols) count(c, col);
+          return Status::Ok();
+        });
     if (!counted.ok()) return counted;
     const int ranks = process_group().size;
     std::vector<int> local_sizes(ranks);
@@ -330,8 +331,8 @@ class PetscSolver final : public SparseCholesky {
   Status FactorizeImpl(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* r) {
     if (StatusOr<ProcessGroup> g = start_parallel(); !g.ok()) return g.status();
     if (iterative() && !(options_.relative_tolerance > 0.0 && options_.relative_tolerance < 1.0))
-      return Status::Invalid(fmt::format("PETSc CG: relative tolerance {:g} must lie in (0, 1)",
-                                         options_.relative_tolerance));
+      return Status::Invalid(
+          fmt::format("PETSc CG: relative tolerance {:g} must lie in (0, 1)", options_.relative_tolerance));
     if (iterative() && options_.max_iterations < 1)
       return Status::Invalid(fmt::format("PETSc CG: at most {} iterations; need at least 1", options_.max_iterations));
     Release();
@@ -394,9 +395,10 @@ class PetscSolver final : public SparseCholesky {
       KINESTAT_PETSC(MatMumpsGetInfog(factor, 12, &negative_pivots));
       if (null_pivots > 0 || negative_pivots > 0) {
         r->failed_column = 0;  // MUMPS does not say which
-        return Status::Singular(fmt::format("MUMPS found {} null and {} negative pivots: the matrix is singular (a "
-                                            "free motion) or not positive definite",
-                                            null_pivots, negative_pivots));
+        return Status::Singular(
+            fmt::format("MUMPS found {} null and {} negative pivots: the matrix is singular (a "
+                        "free motion) or not positive definite",
+                        null_pivots, negative_pivots));
       }
       KINESTAT_PETSC(MatMumpsGetInfog(factor, 29, &entries));  // entries of the factor (< 0: millions)
       KINESTAT_PETSC(MatMumpsGetRinfog(factor, 3, &flops));    // flops of the elimination (estimated)
@@ -421,7 +423,8 @@ class PetscSolver final : public SparseCholesky {
       PetscCall(VecAssemblyEnd(vectors[k]));
     }
     MatNullSpace space;
-    PetscCall(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, static_cast<PetscInt>(Q.cols()), vectors.data(), &space));
+    PetscCall(
+        MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, static_cast<PetscInt>(Q.cols()), vectors.data(), &space));
     PetscCall(MatSetNearNullSpace(A_, space));
     PetscCall(MatNullSpaceDestroy(&space));
     for (Vec& v : vectors) PetscCall(VecDestroy(&v));

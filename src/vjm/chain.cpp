@@ -118,10 +118,10 @@ double Chain::length_scale() const {
 
 Status Chain::validate(int max_coordinates) const {
   const double n = num_coordinates();
-  if (Status s = check_size(n, max_coordinates, fmt::format("chain '{}'", name_),
-                            fmt::format("coordinates (passive and virtual: dense matrices of {:.2g} bytes each)",
-                                        8.0 * n * n),
-                            "use fewer springs and joints, or raise the limit (vjm --max-coordinates)");
+  if (Status s =
+          check_size(n, max_coordinates, fmt::format("chain '{}'", name_),
+                     fmt::format("coordinates (passive and virtual: dense matrices of {:.2g} bytes each)", 8.0 * n * n),
+                     "use fewer springs and joints, or raise the limit (vjm --max-coordinates)");
       !s.ok())
     return s;
   for (const Factor& f : factors_) {

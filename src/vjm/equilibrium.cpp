@@ -157,10 +157,11 @@ StatusOr<ChainState> chain_equilibrium(const Chain& chain, const Vec6& displacem
   rep.static_residual = lin.stat;
   s.pose = lin.J.pose;
   if (!rep.converged)
-    return Status::NotConverged(fmt::format("chain '{}': the loaded equilibrium was not found ({}). The load may "
-                                            "exceed the buckling load, or the displacement asks for motion along a "
-                                            "direction the chain cannot move in",
-                                            chain.name(), rep.summary()));
+    return Status::NotConverged(
+        fmt::format("chain '{}': the loaded equilibrium was not found ({}). The load may "
+                    "exceed the buckling load, or the displacement asks for motion along a "
+                    "direction the chain cannot move in",
+                    chain.name(), rep.summary()));
   return s;
 }
 
@@ -186,8 +187,8 @@ Vec6 assign_reactions(const std::vector<Chain>& chains, const Vec6& w, const Vec
     const Vec6 wc = twist_scale(c.length_scale());
     const MatX Fr = wc.asDiagonal() * split_tool_space(J.Jq, J.Jtheta, wc, rank_tolerance).rigid();
     if (Fr.cols() > 0)
-      rigid[i] = Eigen::HouseholderQR<MatX>(w.cwiseInverse().asDiagonal() * Fr).householderQ() *
-                 MatX::Identity(6, Fr.cols());
+      rigid[i] =
+          Eigen::HouseholderQR<MatX>(w.cwiseInverse().asDiagonal() * Fr).householderQ() * MatX::Identity(6, Fr.cols());
     else
       rigid[i] = MatX(6, 0);
     Vec6 f = s.wrench.cwiseQuotient(w);
@@ -243,8 +244,8 @@ StatusOr<PlatformState> solve_chains(const std::vector<Chain>& chains, const Vec
 Status check_twist_or_wrench(const Vec6& v, bool wrench) {
   static const char* kNames[2][6] = {{"dx", "dy", "dz", "rx", "ry", "rz"}, {"Fx", "Fy", "Fz", "Mx", "My", "Mz"}};
   for (int k = 0; k < 6; ++k) {
-    const Quantity q = wrench ? (k < 3 ? Quantity::kForce : Quantity::kMoment)
-                              : (k < 3 ? Quantity::kLength : Quantity::kAngle);
+    const Quantity q =
+        wrench ? (k < 3 ? Quantity::kForce : Quantity::kMoment) : (k < 3 ? Quantity::kLength : Quantity::kAngle);
     const std::string item =
         fmt::format("the prescribed {} {}", wrench ? "wrench" : "displacement", kNames[wrench ? 1 : 0][k]);
     if (Status s = check_quantity(v[k], q, item); !s.ok()) return s;
@@ -302,10 +303,11 @@ StatusOr<PlatformState> platform_equilibrium_under_wrench(const std::vector<Chai
     }
     if (it >= opt.max_newton_iterations) {
       P->report.converged = false;
-      return Status::NotConverged(fmt::format("the platform equilibrium under the wrench did not converge in {} "
-                                              "iterations (relative wrench residual {:.2e}); the load may exceed the "
-                                              "buckling load",
-                                              it, res));
+      return Status::NotConverged(
+          fmt::format("the platform equilibrium under the wrench did not converge in {} "
+                      "iterations (relative wrench residual {:.2e}); the load may exceed the "
+                      "buckling load",
+                      it, res));
     }
     // Minimum norm along lost directions.
     const Vec6 dt = Eigen::CompleteOrthogonalDecomposition<Mat6>(Kt).solve(R).cwiseQuotient(w);

@@ -11,8 +11,8 @@
 
 #include <sys/wait.h>
 
-#include "kinestat/cli/app.hpp"
 #include "cli_run.hpp"
+#include "kinestat/cli/app.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -65,7 +65,8 @@ TEST(BadInput, OptionValuesAreCheckedNotReplacedByDefaults) {
   expect_exit(with({"--material", "E=210000,nu=0.3,G=80000"}), kExitBadInput, {"unknown item 'G=80000'"});
   expect_exit({"link-stiffness", kBar, "--clamp", "x=1e300", "--reference", "x=200"}, kExitBadInput,
               {"--clamp x=1e300 = 1e+300 mm is too large for a length"});
-  expect_exit({"vjm", kPuu, "--point", "nan,0,0"}, kExitBadInput, {"--point component 1 = nan mm is not a finite number"});
+  expect_exit({"vjm", kPuu, "--point", "nan,0,0"}, kExitBadInput,
+              {"--point component 1 = nan mm is not a finite number"});
 }
 
 TEST(BadInput, IdentificationThatCannotSucceedIsBadInput) {
@@ -106,10 +107,10 @@ TEST(BadInput, OutOfMemoryIsAMessageAndExitOneNotAnAbort) {
   // main() catches std::bad_alloc: 400^3 joint-grid points (~10 GB) under a 1 GB address-space limit.
   const std::string kinestat = std::string(KINESTAT_BINARY_DIR) + "/src/cli/kinestat";
   const std::string err = (std::filesystem::temp_directory_path() / "kinestat_oom.err").string();
-  const std::string cmd = "ulimit -v 1000000; '" + kinestat +
-                          "' design orthoglide --cube 200 --mu 0.5 --strategy 1 --vtk-grid 400 --max-points 1e9 --vtk '" +
-                          (std::filesystem::temp_directory_path() / "kinestat_oom_vtk").string() + "' >/dev/null 2>'" +
-                          err + "'";
+  const std::string cmd =
+      "ulimit -v 1000000; '" + kinestat +
+      "' design orthoglide --cube 200 --mu 0.5 --strategy 1 --vtk-grid 400 --max-points 1e9 --vtk '" +
+      (std::filesystem::temp_directory_path() / "kinestat_oom_vtk").string() + "' >/dev/null 2>'" + err + "'";
   const int status = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal: " << status;
   EXPECT_EQ(WEXITSTATUS(status), kExitInternal);

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
 #include "kinestat/cli/app.hpp"
@@ -78,7 +78,7 @@ chains:
 TEST(CommandConventions, VersionNamesKinestatAndTheNumericalLibraries) {
   const CliRun r = run_cli({"--version"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
-  EXPECT_EQ(r.out.rfind("kinestat 0.", 0), 0u) << r.out;  // project(VERSION) of CMakeLists.txt
+  EXPECT_EQ(r.out.rfind("kinestat 0.", 0), 0u) << r.out;            // project(VERSION) of CMakeLists.txt
   EXPECT_NE(r.out.find("CHOLMOD 3."), std::string::npos) << r.out;  // the loaded SuiteSparse 5 library
   EXPECT_NE(r.out.find("BLAS: "), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("no BLAS mapped"), std::string::npos) << r.out;  // CHOLMOD links it: it is loaded
@@ -208,7 +208,8 @@ TEST(CommandConventions, EveryCommandReportsFailuresTheSameWay) {
       {{"fivebar", "--point", "30,130", "--assembly", "down"}, kExitBadInput, "--assembly"},
       {{"fivebar", "--theta1", "64"}, kExitBadInput, "--theta2"},
       {{"fivebar", "--theta1", "30", "--theta2", "30"}, kExitSingular, ""},
-      {{"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--strategy", "3", "--search-points", "5"}, kExitOk,
+      {{"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--strategy", "3", "--search-points", "5"},
+       kExitOk,
        ""},
       {{"design", "orthoglide", "--cube", "200", "--mu", "1.5"}, kExitBadInput, "--mu"},
       {{"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--vtk-grid", "5"}, kExitBadInput, "--vtk"},
@@ -220,7 +221,8 @@ TEST(CommandConventions, EveryCommandReportsFailuresTheSameWay) {
       {with(kBarLink, {"--unit", "inch"}), kExitBadInput, "--unit"},
       // Clamped along one edge only: the bar turns freely about it.
       {{"link-stiffness", kBar, "--clamp", "box:-1,-11,-16,150,-9,-14", "--reference", "x=200", "--size", "20"},
-       kExitSingular, ""},
+       kExitSingular,
+       ""},
   };
   for (const Case& c : cases) {
     const CliRun r = run_cli(c.args);
@@ -238,10 +240,9 @@ TEST(CommandConventions, EveryCommandReportsFailuresTheSameWay) {
 // A singular result is explained in the report; with --quiet (no report) the reason still reaches
 // stderr, through the same one-line-prefix report as every failure.
 TEST(CommandConventions, QuietSingularResultsStillSayWhy) {
-  for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"solve", kModels + "released_chain.yaml"},
-        std::vector<std::string>{"fivebar", "--theta1", "30", "--theta2", "30"},
-        std::vector<std::string>{"vjm", single_leg_model()}}) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"solve", kModels + "released_chain.yaml"},
+                                               std::vector<std::string>{"fivebar", "--theta1", "30", "--theta2", "30"},
+                                               std::vector<std::string>{"vjm", single_leg_model()}}) {
     const CliRun r = run_cli(with(args, {"--quiet"}));
     EXPECT_EQ(r.code, kExitSingular) << args[0];
     EXPECT_TRUE(r.out.empty()) << r.out;

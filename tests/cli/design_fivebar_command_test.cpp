@@ -23,13 +23,15 @@ namespace fs = std::filesystem;
 // 2 x 2 designs about the paper's five-bar, a coarse region above the base; `changes` replace or
 // add options (as "--option=value", which also takes values that start with '-').
 std::vector<std::string> small_run(const std::vector<std::pair<std::string, std::string>>& changes = {}) {
-  std::vector<std::pair<std::string, std::string>> options = {
-      {"--r1", "80:120"}, {"--r2", "90:130"},   {"--steps", "2"},         {"--region", "-60:60,80:180"},
-      {"--step", "20"},   {"--min-stiffness", "5"}};
+  std::vector<std::pair<std::string, std::string>> options = {{"--r1", "80:120"}, {"--r2", "90:130"},
+                                                              {"--steps", "2"},   {"--region", "-60:60,80:180"},
+                                                              {"--step", "20"},   {"--min-stiffness", "5"}};
   for (const auto& [name, value] : changes) {
     auto it = std::find_if(options.begin(), options.end(), [&](const auto& o) { return o.first == name; });
-    if (it != options.end()) it->second = value;
-    else options.emplace_back(name, value);
+    if (it != options.end())
+      it->second = value;
+    else
+      options.emplace_back(name, value);
   }
   std::vector<std::string> args = {"design", "fivebar", "--quiet"};
   for (const auto& [name, value] : options) args.push_back(name + "=" + value);

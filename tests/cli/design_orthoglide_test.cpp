@@ -26,8 +26,9 @@ TEST(DesignOrthoglide, PrintsThePapersOtherAnalyses) {
   const CliRun r = run_cli({"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--strategy", "1"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const mechanisms::OrthoglideDesign d = *mechanisms::design_orthoglide(1, 0.5, 0.2);
-  EXPECT_EQ(after(r.out, "joint box kept"), fmt::format("              {:.2f} % of [rho_min, rho_max]^3 within the software limit",
-                                                      100 * d.joint_box_kept));
+  EXPECT_EQ(
+      after(r.out, "joint box kept"),
+      fmt::format("              {:.2f} % of [rho_min, rho_max]^3 within the software limit", 100 * d.joint_box_kept));
   // Section 6: the paper's 2.42 and 3.42 for 5 and 10 mm.
   EXPECT_EQ(after(r.out, "cube, encoders +5.0 mm    ").substr(0, 14), "[0.507, 2.419]") << r.out;
   EXPECT_EQ(after(r.out, "cube, encoders +10.0 mm   ").substr(0, 14), "[0.515, 3.420]") << r.out;
@@ -41,8 +42,8 @@ TEST(DesignOrthoglide, PrintsThePapersOtherAnalyses) {
 }
 
 TEST(DesignOrthoglide, EncoderOffsetsOption) {
-  CliRun r = run_cli({"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--strategy", "2", "--encoder-offsets",
-                      "-5,0"});
+  CliRun r =
+      run_cli({"design", "orthoglide", "--cube", "200", "--mu", "0.5", "--strategy", "2", "--encoder-offsets", "-5,0"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("cube, encoders -5.0 mm"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("5.0 mm further in than commanded"), std::string::npos) << r.out;

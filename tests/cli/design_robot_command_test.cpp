@@ -25,10 +25,10 @@ namespace {
 const std::string kDelta = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/delta.yaml";
 // A coarse box in the Delta's reach, and a threshold inside its k_t_min range there, so that the
 // designs' stiff volumes differ.
-const std::vector<std::string> kRegion = {"--box=-300:300,-300:300,-950:-650", "--step", "150",
-                                          "--min-stiffness", "3"};
+const std::vector<std::string> kRegion = {"--box=-300:300,-300:300,-950:-650", "--step", "150", "--min-stiffness", "3"};
 
-std::vector<std::string> delta_design(const std::vector<std::string>& params, const std::vector<std::string>& more = {}) {
+std::vector<std::string> delta_design(const std::vector<std::string>& params,
+                                      const std::vector<std::string>& more = {}) {
   std::vector<std::string> args = {"design", kDelta};
   for (const std::string& p : params) args.insert(args.end(), {"--param", p});
   args.insert(args.end(), kRegion.begin(), kRegion.end());
@@ -41,7 +41,8 @@ std::vector<std::string> delta_design(const std::vector<std::string>& params, co
 // for the loaded mode, a wrench in N, N m).
 mechanisms::WorkspaceMap direct_map(const io::ParamOverrides& params, std::optional<Vec6> wrench = std::nullopt,
                                     const std::array<mechanisms::MapRange, 3>& box = {mechanisms::MapRange{-0.3, 0.3},
-                                                                                     {-0.3, 0.3}, {-0.95, -0.65}},
+                                                                                      {-0.3, 0.3},
+                                                                                      {-0.95, -0.65}},
                                     double step = 0.15) {
   using namespace mechanisms;
   auto model = io::read_robot_model(kDelta, params);
@@ -95,9 +96,9 @@ TEST(DesignRobotCommand, BestDesignEqualsItsDirectMap) {
 
 // The loaded mode (--wrench): each design's stiff volume is that of its loaded map.
 TEST(DesignRobotCommand, LoadedModeEqualsItsDirectMap) {
-  const CliRun r = run_cli({"design", kDelta, "--param", "arm=250:350", "--steps", "2",
-                            "--box=-100:100,-100:100,-750:-650", "--step", "100", "--min-stiffness", "3", "--wrench",
-                            "0,0,-200,0,0,5000", "--json", "-", "--quiet"});
+  const CliRun r =
+      run_cli({"design", kDelta, "--param", "arm=250:350", "--steps", "2", "--box=-100:100,-100:100,-750:-650",
+               "--step", "100", "--min-stiffness", "3", "--wrench", "0,0,-200,0,0,5000", "--json", "-", "--quiet"});
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_NE(j["description"].get<std::string>().find("loaded under a wrench"), std::string::npos) << j["description"];
@@ -105,8 +106,9 @@ TEST(DesignRobotCommand, LoadedModeEqualsItsDirectMap) {
   wrench << 0, 0, -200, 0, 0, 5;  // N, N m
   for (const auto& design : j["designs_table"]) {
     ASSERT_EQ(design["status"], "ok") << design;
-    const mechanisms::WorkspaceMap map = direct_map({{"arm", design["values"][0].get<double>()}}, wrench,
-                                                    {mechanisms::MapRange{-0.1, 0.1}, {-0.1, 0.1}, {-0.75, -0.65}}, 0.1);
+    const mechanisms::WorkspaceMap map =
+        direct_map({{"arm", design["values"][0].get<double>()}}, wrench,
+                   {mechanisms::MapRange{-0.1, 0.1}, {-0.1, 0.1}, {-0.75, -0.65}}, 0.1);
     ASSERT_GT(map.stiff_measure, 0.0);
     EXPECT_NEAR(design["stiff_measure"].get<double>(), map.stiff_measure, 1e-12 * map.stiff_measure);
   }
@@ -172,8 +174,8 @@ TEST(DesignRobotCommand, EveryDesignFailingExits2WithTheFirstReason) {
 }
 
 TEST(DesignRobotCommand, CostAboveTheLimitIsRefusedWithItsTime) {
-  const CliRun r = run_cli({"design", kDelta, "--param", "arm=250:350", "--param", "forearm=700:900", "--steps",
-                            "100", "--step", "20", "--min-stiffness", "1"});
+  const CliRun r = run_cli({"design", kDelta, "--param", "arm=250:350", "--param", "forearm=700:900", "--steps", "100",
+                            "--step", "20", "--min-stiffness", "1"});
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("10000 designs x 43706 region points"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(" h on "), std::string::npos) << r.err;

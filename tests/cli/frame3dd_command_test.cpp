@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "kinestat/cli/app.hpp"
-#include "cli_run.hpp"
 #include "../io/frame3dd_example_b2015.hpp"
+#include "cli_run.hpp"
+#include "kinestat/cli/app.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -175,8 +175,9 @@ double top_sway(const std::string& json_text) {
 TEST(ModesFrame3dd, GeometricStiffnessFlagPrestressesByTheLastCase) {
   const CliRun r = run_cli({"modes", write_temp("modes_pdelta.3dd", with_flag(1)), "--units", "N-mm"});
   EXPECT_EQ(r.code, kExitBadInput);
-  expect_contains(r.err, "modes_pdelta.3dd:16: geometric stiffness flag 1: as Frame3DD, the frequencies of the "
-                         "structure prestressed by its last load case, 'case 1'");
+  expect_contains(r.err,
+                  "modes_pdelta.3dd:16: geometric stiffness flag 1: as Frame3DD, the frequencies of the "
+                  "structure prestressed by its last load case, 'case 1'");
   expect_contains(r.err, "modes_pdelta.3dd:29: 0 dynamic modes and no modal data");
   expect_contains(r.err, "has no density");
 }
@@ -197,8 +198,8 @@ TEST(ModesFrame3dd, PrestressPastTheCriticalLoadIsRefused) {
   expect_contains(r.err, "load case 'case 1': the loads reach or exceed the critical (buckling) load");
   std::string heavy0 = heavy;
   heavy0[heavy0.find("1   # geometric")] = '0';
-  r = run_cli({"modes", write_temp("modes_heavy0.3dd", heavy0), "--units", "N-mm", "--count", "1", "--prestress",
-               "case 1"});
+  r = run_cli(
+      {"modes", write_temp("modes_heavy0.3dd", heavy0), "--units", "N-mm", "--count", "1", "--prestress", "case 1"});
   EXPECT_EQ(r.code, kExitBadInput);
   expect_contains(r.err, "prestress of load case 'case 1': its loads are at or past the critical (buckling) load");
   // 2000 N = 0.77 P_cr: the sway frequency falls roughly as sqrt(1 - P/P_cr) = 0.48 (inexact: the
@@ -232,8 +233,9 @@ TEST(ModesFrame3dd, ExampleBGivesFrame3ddsPublishedFrequencies) {
   const std::string file = write_temp("exB.3dd", io::kExampleB2015);
   CliRun r = run_cli({"modes", file, "--units", "N-mm", "--json", "-"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
-  expect_contains(r.err, "exB.3dd:19: geometric stiffness flag 1: as Frame3DD, the frequencies of the structure "
-                         "prestressed by its last load case, 'case 3'");
+  expect_contains(r.err,
+                  "exB.3dd:19: geometric stiffness flag 1: as Frame3DD, the frequencies of the structure "
+                  "prestressed by its last load case, 'case 3'");
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const nlohmann::json& pre = j.at("prestress");
   EXPECT_EQ(pre.at("load_case"), "case 3");

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "kinestat/cli/app.hpp"
 #include "cli_run.hpp"
+#include "kinestat/cli/app.hpp"
 
 namespace kinestat::cli {
 namespace {

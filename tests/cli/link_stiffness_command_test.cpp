@@ -9,18 +9,18 @@
 #include <sstream>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
+#include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkDataArray.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
+#include <nlohmann/json.hpp>
 
+#include "cli_run.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
-#include "cli_run.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -37,8 +37,8 @@ TEST(LinkStiffnessCommand, BarJsonMatchesBeamTheoryAndCacheReproducesIt) {
   std::filesystem::remove_all(tmp);
   std::filesystem::create_directories(tmp);
   const std::string json = (tmp / "bar.json").string(), cache = (tmp / "cache").string();
-  const std::vector<std::string> args = {kBar, "--material", "steel", "--clamp", "x=0", "--reference", "x=200",
-                                         "--size", "7", "--json", json, "--cache", cache};
+  const std::vector<std::string> args = {kBar,     "--material", "steel",  "--clamp", "x=0",     "--reference", "x=200",
+                                         "--size", "7",          "--json", json,      "--cache", cache};
   CliRun r = run_link_stiffness(args);
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("[N/m"), std::string::npos) << r.out;  // units are printed
@@ -103,8 +103,8 @@ TEST(LinkStiffnessCommand, SolverOptionsAreCheckedAndPetscRefusesAFreeMotion) {
   };
   CliRun r = run_link_stiffness(with({"--solver", "petsc-cg", "--cg-rtol", "0"}));
   EXPECT_EQ(r.code, kExitBadInput);
-  EXPECT_NE(r.err.find(solver::backend_built(solver::Backend::kPetscCg) ? "--cg-rtol" : "not built"),
-            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(solver::backend_built(solver::Backend::kPetscCg) ? "--cg-rtol" : "not built"), std::string::npos)
+      << r.err;
   r = run_link_stiffness(with({"--max-iterations", "0"}));
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("--max-iterations"), std::string::npos) << r.err;
@@ -156,8 +156,8 @@ TEST(LinkStiffnessCommand, ConvergenceStudyOfTheBarGivesAnEstimateOfEveryTerm) {
 TEST(LinkStiffnessCommand, VtkCollectionAndProgress) {
   const auto dir = std::filesystem::temp_directory_path() / "kinestat_link_vtk";
   std::filesystem::remove_all(dir);
-  CliRun r = run_link_stiffness(
-      {kBar, "--clamp", "x=0", "--reference", "x=200", "--size", "20", "--vtk", dir.string()});
+  CliRun r =
+      run_link_stiffness({kBar, "--clamp", "x=0", "--reference", "x=200", "--size", "20", "--vtk", dir.string()});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.err.find("meshing"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("factorizing"), std::string::npos) << r.err;
@@ -167,7 +167,8 @@ TEST(LinkStiffnessCommand, VtkCollectionAndProgress) {
   std::size_t at = 0;
   const char* cases[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
   for (int k = 0; k < 6; ++k) {
-    const std::string entry = fmt::format("timestep=\"{}\" part=\"0\" name=\"{}\" file=\"bar_{}.vtu\"", k, cases[k], cases[k]);
+    const std::string entry =
+        fmt::format("timestep=\"{}\" part=\"0\" name=\"{}\" file=\"bar_{}.vtu\"", k, cases[k], cases[k]);
     at = text.find(entry, at);
     ASSERT_NE(at, std::string::npos) << entry << "\n" << text;
     EXPECT_TRUE(std::filesystem::exists(dir / fmt::format("bar_{}.vtu", cases[k])));

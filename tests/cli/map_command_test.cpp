@@ -10,9 +10,9 @@
 #include "cli_run.hpp"
 #include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
-#include "kinestat/mechanisms/robot_kernel.hpp"
 #include "kinestat/mechanisms/five_bar.hpp"
 #include "kinestat/mechanisms/five_bar_vjm.hpp"
+#include "kinestat/mechanisms/robot_kernel.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
@@ -30,7 +30,7 @@ TEST(MapCommand, FiveBarJsonToStdoutIsTheOnlyOutput) {
   const auto& dims = j["grid"]["dimensions"];
   EXPECT_EQ(j["fields"]["k_t_min"].size(), dims[0].get<std::size_t>() * dims[1].get<std::size_t>());
   EXPECT_EQ(dims[2], 1);
-  EXPECT_FALSE(j["fields"].contains("deflection_t"));  // no --load
+  EXPECT_FALSE(j["fields"].contains("deflection_t"));       // no --load
   EXPECT_FALSE(j["fields"].contains("newton_iterations"));  // no loaded mode
   EXPECT_GT(j["summary"]["status_counts"]["ok"].get<int>(), 0);
   EXPECT_NE(j["description"].get<std::string>().find("+-"), std::string::npos);
@@ -52,8 +52,8 @@ TEST(MapCommand, FiveBarSummaryInMillimetres) {
 }
 
 TEST(MapCommand, OrthoglideSliceUnderAWrench) {
-  const CliRun r = run_cli({"map", kPuu, "--box", "-40:40,-40:40,10", "--step", "40", "--wrench", "100,0,0,0,0,500",
-                            "--json", "-"});
+  const CliRun r =
+      run_cli({"map", kPuu, "--box", "-40:40,-40:40,10", "--step", "40", "--wrench", "100,0,0,0,0,500", "--json", "-"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["grid"]["dimensions"], nlohmann::json::array({3, 3, 1}));
@@ -82,8 +82,8 @@ std::pair<double, double> force_stiffness_range(const Mat6& C) {
 // (posture_kernels_test.cpp). The Orthoglide: `kinestat vjm`'s path.
 TEST(MapCommand, ValuesEqualTheSinglePostureCommands) {
   const Vec6 load = (Vec6() << 3.0, -2.0, 0.0, 0.0, 0.0, 0.0).finished();
-  const CliRun r = run_cli({"map", "fivebar", "--region", "-100:100,0:150", "--step", "25", "--load", "3,-2,0,0,0,0",
-                            "--json", "-"});
+  const CliRun r = run_cli(
+      {"map", "fivebar", "--region", "-100:100,0:150", "--step", "25", "--load", "3,-2,0,0,0,0", "--json", "-"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   const mechanisms::FiveBarParams params;
@@ -184,7 +184,8 @@ TEST(MapCommand, EmptyRegionExitsTwoAndWritesNothing) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   const std::string json = (dir / "m.json").string(), vti = (dir / "m.vti").string();
-  const CliRun r = run_cli({"map", "fivebar", "--region", "500:600,500:600", "--step", "20", "--json", json, "--vti", vti});
+  const CliRun r =
+      run_cli({"map", "fivebar", "--region", "500:600,500:600", "--step", "20", "--json", json, "--vti", vti});
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find("no reachable point"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--region"), std::string::npos) << r.err;
@@ -233,8 +234,8 @@ TEST(MapCommand, RobotFileWithItsWorkspace) {
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--region"), std::string::npos) << bad.err;
   // A 3-PRS commands no x or y: a box that spans x is refused with the form to use.
-  bad = run_cli({"map", std::string(KINESTAT_SOURCE_DIR) + "/models/robots/prs_head.yaml", "--step", "5",
-                 "--box", "-10:10,0,300:400"});
+  bad = run_cli({"map", std::string(KINESTAT_SOURCE_DIR) + "/models/robots/prs_head.yaml", "--step", "5", "--box",
+                 "-10:10,0,300:400"});
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("commands no x"), std::string::npos) << bad.err;
 }
@@ -243,8 +244,8 @@ TEST(MapCommand, RobotFileWithItsWorkspace) {
 // and each point's k_t_min is the kernel's at the pose (--position, the point's angles).
 TEST(MapCommand, RobotOrientationMap) {
   const std::string file = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/hexapod.yaml";
-  const CliRun r = run_cli({"map", file, "--angles", "-10:10,-10:10,5", "--angle-step", "10", "--position",
-                            "20,0,820", "--json", "-"});
+  const CliRun r = run_cli(
+      {"map", file, "--angles", "-10:10,-10:10,5", "--angle-step", "10", "--position", "20,0,820", "--json", "-"});
   ASSERT_EQ(r.code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["grid"]["axis_names"][0], "rx");
@@ -262,8 +263,8 @@ TEST(MapCommand, RobotOrientationMap) {
   const mechanisms::PostureResult p = mechanisms::make_robot_kernel(at)->evaluate(Vec3(0.02, 0.0, 0.82));
   ASSERT_EQ(p.status, mechanisms::PostureStatus::kOk);
   // k_t_min = lambda_min(C_tt^-1) (docs/maps.md).
-  const double kt = Eigen::SelfAdjointEigenSolver<Mat3>(Mat3(p.compliance.topLeftCorner<3, 3>()).inverse())
-                        .eigenvalues()(0);
+  const double kt =
+      Eigen::SelfAdjointEigenSolver<Mat3>(Mat3(p.compliance.topLeftCorner<3, 3>()).inverse()).eigenvalues()(0);
   EXPECT_NEAR(j["fields"]["k_t_min"][2].get<double>(), kt, 1e-9 * kt);
   // Without a workspace of angles in the file, --angle-step alone is refused; --step with --angles too.
   CliRun bad = run_cli({"map", file, "--angles", "-10:10,-10:10,0", "--step", "5"});

@@ -20,8 +20,8 @@ TEST(BucklingCommand, EulerColumnLoadFactorJsonAndVtk) {
   const auto dir = std::filesystem::path(KINESTAT_BINARY_DIR) / "test_buckling_out";
   std::filesystem::remove_all(dir);
   const std::string json = (dir / "b.json").string();
-  const CliRun r = run_cli({"buckling", kModels + "euler_column.yaml", "--count", "2", "--json", json, "--vtk",
-                            (dir / "vtk").string()});
+  const CliRun r = run_cli(
+      {"buckling", kModels + "euler_column.yaml", "--count", "2", "--json", json, "--vtk", (dir / "vtk").string()});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("Critical load factors"), std::string::npos) << r.out;
   std::ifstream in(json);
@@ -39,8 +39,8 @@ TEST(BucklingCommand, EulerColumnLoadFactorJsonAndVtk) {
               1e-9 * 1000.0 * l1);
   // Mode 1: midspan (node n4) moves 1 m along y at the normalized scale.
   EXPECT_NEAR(j["modes"][0]["shape"][4]["translation"][1].get<double>(), 1.0, 1e-12);
-  for (const char* f : {"euler_column_buckling_mode1.vtu", "euler_column_buckling_mode2.vtu",
-                        "euler_column_buckling.pvd"})
+  for (const char* f :
+       {"euler_column_buckling_mode1.vtu", "euler_column_buckling_mode2.vtu", "euler_column_buckling.pvd"})
     EXPECT_TRUE(std::filesystem::exists(dir / "vtk" / f)) << f;
 }
 
@@ -97,8 +97,8 @@ TEST(ModesCommand, ColumnFrequencyJsonAndVtk) {
   const auto dir = std::filesystem::path(KINESTAT_BINARY_DIR) / "test_modes_out";
   std::filesystem::remove_all(dir);
   const std::string json = (dir / "m.json").string();
-  const CliRun r = run_cli({"modes", kModels + "euler_column.yaml", "--count", "2", "--json", json, "--vtk",
-                            (dir / "vtk").string()});
+  const CliRun r = run_cli(
+      {"modes", kModels + "euler_column.yaml", "--count", "2", "--json", json, "--vtk", (dir / "vtk").string()});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   EXPECT_NE(r.out.find("Natural frequencies"), std::string::npos) << r.out;
   std::ifstream in(json);

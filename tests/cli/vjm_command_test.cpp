@@ -9,8 +9,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "kinestat/cli/app.hpp"
 #include "cli_run.hpp"
+#include "kinestat/cli/app.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/mechanisms/robot_kernel.hpp"
@@ -42,9 +42,9 @@ Mat6 printed_matrix(const std::string& out, const std::string& section, const st
 // series: actuator, foot (axial, L/EA) and leg (two tube bars, axial). Inputs of models/orthoglide_*.yaml
 // (identified so that this is Tables 1-2's 2.78e-4 mm/N; checked below too).
 double q0_translational_compliance() {
-  const double k_actuator = 4170.3e3;                                                   // N/m
-  const double foot = 0.63275 / (210e9 * (0.06 * 0.06 - 0.05 * 0.05));                // m/N
-  const double d = 0.014873, t = 0.0014873;                                             // bar tube (m)
+  const double k_actuator = 4170.3e3;                                   // N/m
+  const double foot = 0.63275 / (210e9 * (0.06 * 0.06 - 0.05 * 0.05));  // m/N
+  const double d = 0.014873, t = 0.0014873;                             // bar tube (m)
   const double leg = 0.3106 / (70e9 * 2 * std::numbers::pi / 4 * (d * d - (d - 2 * t) * (d - 2 * t)));
   const double c = 1 / k_actuator + foot + leg;
   EXPECT_NEAR(c, 2.78e-7, 1e-4 * 2.78e-7);
@@ -112,8 +112,13 @@ TEST(VjmCommand, WrenchOnVeryStiffSpringsConverges) {
     std::ofstream f(path);
     f << "units: mm-N-s\nchains:\n";
     // Base point, then a rotation (axis, deg) that turns the local x towards the tool point.
-    struct Leg { const char* base; const char* axis; int angle; };
-    const Leg legs[3] = {{"[250, 0, 0]", "[0, 0, 1]", 180}, {"[0, 250, 0]", "[0, 0, 1]", -90}, {"[0, 0, 250]", "[0, 1, 0]", 90}};
+    struct Leg {
+      const char* base;
+      const char* axis;
+      int angle;
+    };
+    const Leg legs[3] = {
+        {"[250, 0, 0]", "[0, 0, 1]", 180}, {"[0, 250, 0]", "[0, 0, 1]", -90}, {"[0, 0, 250]", "[0, 1, 0]", 90}};
     for (int i = 0; i < 3; ++i) {
       f << "  - name: leg " << i << "\n    elements:\n";
       f << "      - {translate: " << legs[i].base << "}\n";
@@ -179,8 +184,7 @@ TEST(VjmCommand, RobotFileAtAPoint) {
   ASSERT_EQ(p.status, mechanisms::PostureStatus::kOk);
   const auto& K = j["unloaded"]["stiffness"];
   for (int i = 0; i < 6; ++i)
-    for (int k = 0; k < 6; ++k)
-      EXPECT_NEAR(K[i][k].get<double>(), p.stiffness(i, k), 1e-9 * p.stiffness.norm());
+    for (int k = 0; k < 6; ++k) EXPECT_NEAR(K[i][k].get<double>(), p.stiffness(i, k), 1e-9 * p.stiffness.norm());
   const CliRun text = run_cli({"vjm", file, "--point", "20,-10,790"});
   EXPECT_NE(text.out.find("(actuated)"), std::string::npos) << text.out;
   const CliRun far = run_cli({"vjm", file, "--point", "2000,0,790"});
@@ -208,7 +212,8 @@ TEST(VjmCommand, RobotFileWithFeaLinks) {
            "planar: true\ntask: [x, y, rz]\ntool: [0, 0, 0]\nlegs:\n  - copies: 3\n    chain:\n"
            "      - revolute: {at: [a, 0, 0], axis: [0, 0, 1]}\n"
            "      - prismatic: {at: [a, 0, 0], axis: [px - a, py, 0], actuated: true}\n"
-           "      - link: {to: [px, py, 0], spring: {fea: {mesh: " << mesh
+           "      - link: {to: [px, py, 0], spring: {fea: {mesh: "
+        << mesh
         << ", material: steel, clamp: x=0, reference: x=200, size: 20}}}\n"
            "      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}\n";
     return dir + "/" + name;

@@ -60,8 +60,8 @@ TEST(WriteErrors, AFailedRunKeepsTheEarlierResult) {
   std::stringstream before;
   before << std::ifstream(json).rdbuf();
   // The second run fails on its PNG (written before the JSON): the first JSON stays as it was.
-  const CliRun r = run_cli({"map", "fivebar", "--region", "-100:100,0:150", "--step", "50", "--png", "/dev/full",
-                            "--json", json});
+  const CliRun r =
+      run_cli({"map", "fivebar", "--region", "-100:100,0:150", "--step", "50", "--png", "/dev/full", "--json", json});
   EXPECT_EQ(r.code, kExitBadInput);
   std::stringstream after;
   after << std::ifstream(json).rdbuf();

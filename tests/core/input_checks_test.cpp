@@ -49,8 +49,9 @@ TEST(InputChecks, SizeLimitNamesTheEstimateTheLimitAndTheAdvice) {
   EXPECT_TRUE(check_size(2e6, 2e6, "grid", "points", "raise --max-points").ok());
   const Status s = check_size(1e15, 2e6, "--vtk-grid 100000", "points (N^3)", "raise it with --max-points");
   ASSERT_EQ(s.code(), StatusCode::kInvalidInput);
-  EXPECT_EQ(s.message(), "--vtk-grid 100000: about 1e+15 points (N^3), above the limit of 2e+06; raise it with "
-                         "--max-points");
+  EXPECT_EQ(s.message(),
+            "--vtk-grid 100000: about 1e+15 points (N^3), above the limit of 2e+06; raise it with "
+            "--max-points");
   EXPECT_FALSE(check_size(std::nan(""), 1.0, "x", "y", "z").ok());  // an estimate that is not a number
 }
 

@@ -14,7 +14,7 @@ TEST(StiffnessIndices, DiagonalMatrixByHand) {
   K(2, 0) = 0.5;
   const auto ix = stiffness_indices(K);
   EXPECT_DOUBLE_EQ(ix.trace, -1.0);
-  EXPECT_DOUBLE_EQ(ix.norm_1, 4.0);                   // column 2: |-4|
+  EXPECT_DOUBLE_EQ(ix.norm_1, 4.0);  // column 2: |-4|
   EXPECT_DOUBLE_EQ(ix.norm_inf, 4.0);
   EXPECT_DOUBLE_EQ(ix.max_abs_entry, 4.0);
   EXPECT_NEAR(ix.norm_frobenius, std::sqrt(1 + 16 + 4 + 0.5), 1e-14);
@@ -84,7 +84,7 @@ TEST(CartesianIndices, BlockEigenvaluesAndIndicesByHand) {
     EXPECT_NEAR(b.rotational_eigenvalues(i), dr(i), 1e-14 * dr(2));
   }
   EXPECT_GT(std::abs(b.eigenvalues(0) - dr(0)), 1.0);  // the coupling moves the 6x6's spectrum
-  EXPECT_LT(b.symmetry_error, 1e-15);  // R D R' is symmetric to round-off: 8e-17 measured
+  EXPECT_LT(b.symmetry_error, 1e-15);                  // R D R' is symmetric to round-off: 8e-17 measured
 }
 
 TEST(Frame, ElementAxesAreRightHandedAndContainOrientation) {

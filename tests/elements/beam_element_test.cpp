@@ -54,8 +54,8 @@ TEST(BeamElement, CantileverFlexibilityByCondensation) {
   EXPECT_NEAR(C(2, 2), L * L * L / (3 * E * s.Iy), 1e-10 * C(2, 2));
   EXPECT_NEAR(C(3, 3), L / (G * s.J), 1e-10 * C(3, 3));
   EXPECT_NEAR(C(5, 5), L / (E * s.Iz), 1e-10 * C(5, 5));
-  EXPECT_NEAR(C(1, 5), L * L / (2 * E * s.Iz), 1e-10 * C(1, 5));    // Fy -> +rz
-  EXPECT_NEAR(C(2, 4), -L * L / (2 * E * s.Iy), 1e-10 * C(1, 5));   // Fz -> -ry
+  EXPECT_NEAR(C(1, 5), L * L / (2 * E * s.Iz), 1e-10 * C(1, 5));   // Fy -> +rz
+  EXPECT_NEAR(C(2, 4), -L * L / (2 * E * s.Iy), 1e-10 * C(1, 5));  // Fz -> -ry
 }
 
 TEST(BeamElement, TimoshenkoAddsShearCompliance) {

@@ -90,10 +90,22 @@ TEST(MemberLoads, TrapezoidalLoadMatchesTheIntegratedGreensFunctionAndTheTriangl
   // The point-load table integrated against w(x) dx (the fixed-fixed beam's Green's function),
   // by Simpson's rule on 2000 intervals: error ~ h^4 f'''' ~ 1e-12 of the result.
   auto w = [&](double x) { return w1 + (w2 - w1) * (x - a) / (b - a); };
-  auto R1 = [&](double x) { const double c = L - x; return w(x) * c * c * (3 * x + c) / (L * L * L); };
-  auto M1 = [&](double x) { const double c = L - x; return w(x) * x * c * c / (L * L); };
-  auto R2 = [&](double x) { const double c = L - x; return w(x) * x * x * (x + 3 * c) / (L * L * L); };
-  auto M2 = [&](double x) { const double c = L - x; return w(x) * x * x * c / (L * L); };
+  auto R1 = [&](double x) {
+    const double c = L - x;
+    return w(x) * c * c * (3 * x + c) / (L * L * L);
+  };
+  auto M1 = [&](double x) {
+    const double c = L - x;
+    return w(x) * x * c * c / (L * L);
+  };
+  auto R2 = [&](double x) {
+    const double c = L - x;
+    return w(x) * x * x * (x + 3 * c) / (L * L * L);
+  };
+  auto M2 = [&](double x) {
+    const double c = L - x;
+    return w(x) * x * x * c / (L * L);
+  };
   const double scale = std::abs(w1) * L;
   EXPECT_NEAR(f(1), -simpson(R1, a, b, 2000), 1e-10 * scale);
   EXPECT_NEAR(f(5), -simpson(M1, a, b, 2000), 1e-10 * scale * L);

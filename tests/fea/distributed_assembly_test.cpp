@@ -62,8 +62,7 @@ TEST(DistributedAssembly, TwoElementHalvesAddedByTheBackendGiveTheWholeStiffness
   // The two slabs of elements along the bar's axis (x), as two ranks assemble them.
   const std::vector<int> order = elements_along_longest_axis(mesh);
   const int half = element_range(elements, 0, 2).second;
-  for (int k = 1; k < elements; ++k)
-    ASSERT_LE(element_centre_x(mesh, order[k - 1]), element_centre_x(mesh, order[k]));
+  for (int k = 1; k < elements; ++k) ASSERT_LE(element_centre_x(mesh, order[k - 1]), element_centre_x(mesh, order[k]));
   ASSERT_TRUE(assemble_stiffness(mesh, D, {}, map, &first, std::span(order).first(half)).ok());
   ASSERT_TRUE(assemble_stiffness(mesh, D, {}, map, &second, std::span(order).subspan(half)).ok());
   // Each half holds part of the matrix only; the halves share the entries of their common nodes.
@@ -83,7 +82,8 @@ TEST(DistributedAssembly, TwoElementHalvesAddedByTheBackendGiveTheWholeStiffness
     EXPECT_EQ(report.nnz_matrix, whole.nonZeros());
     double worst = 0.0;
     for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) worst = std::max(worst, std::abs(C_sum(i, j) - C(i, j)) / std::sqrt(C(i, i) * C(j, j)));
+      for (int j = 0; j < 6; ++j)
+        worst = std::max(worst, std::abs(C_sum(i, j) - C(i, j)) / std::sqrt(C(i, i) * C(j, j)));
     EXPECT_LT(worst, 1e-9);
   }
 }

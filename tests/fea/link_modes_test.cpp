@@ -9,8 +9,8 @@
 #include <iostream>
 #include <numbers>
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
+#include <Eigen/Eigenvalues>
 
 #include "kinestat/elements/beam_element.hpp"
 #include "kinestat/elements/section.hpp"
@@ -59,7 +59,11 @@ FirstModes classify(const std::vector<std::pair<double, Vec6>>& modes) {
     scaled.tail<3>() *= 0.01;
     int kind = 0;
     scaled.maxCoeff(&kind);
-    double* slot = kind == 0 ? &f.axial : kind == 1 ? &f.bending_z : kind == 2 ? &f.bending_y : kind == 3 ? &f.torsion : nullptr;
+    double* slot = kind == 0   ? &f.axial
+                   : kind == 1 ? &f.bending_z
+                   : kind == 2 ? &f.bending_y
+                   : kind == 3 ? &f.torsion
+                               : nullptr;
     if (slot && *slot == 0.0) *slot = hz;
   }
   return f;
@@ -108,7 +112,9 @@ FirstModes timoshenko_beam_modes(int elements) {
   return classify(modes);
 }
 
-StatusOr<LinkStiffness> solve_bar(int n, int modes = 8) { return link_stiffness(bar_mesh(n), steel(), bar_options(modes)); }
+StatusOr<LinkStiffness> solve_bar(int n, int modes = 8) {
+  return link_stiffness(bar_mesh(n), steel(), bar_options(modes));
+}
 
 std::string line(const char* name, const FirstModes& f) {
   return fmt::format("{:>28}: bending about z {:9.2f} Hz, about y {:9.2f} Hz, torsion {:9.2f} Hz, axial {:9.2f} Hz\n",
@@ -129,7 +135,8 @@ TEST(LinkModes, BarCantileverMatchesBeamTheoryAndConverges) {
             << line("closed forms (EB, rods)", closed) << line("Timoshenko beams (40)", beam);
   std::cout << link_modes_report(*fine);
   for (const FirstModes* f : {&fc, &ff})
-    for (double hz : {f->bending_z, f->bending_y, f->torsion, f->axial}) ASSERT_GT(hz, 0.0) << "a kind of mode is missing";
+    for (double hz : {f->bending_z, f->bending_y, f->torsion, f->axial})
+      ASSERT_GT(hz, 0.0) << "a kind of mode is missing";
 
   // Mass: rho V of the box to round-off (sum of element volumes).
   EXPECT_NEAR(fine->mass, kSteelDensity * L * b * h, 1e-12 * fine->mass);

@@ -87,8 +87,7 @@ TEST(LinkStiffnessRequest, DamagedCacheEntryIsRecomputedWithAWarning) {
        [&] {
          std::filesystem::resize_file(entry, std::filesystem::file_size(entry) - 10);  // cut 10 bytes short
        }},
-      {"not symmetric",
-       [&] { testing::set_entry_compliance_term(entry, 2, 4, 2.0 * good(2, 4)); }},  // checksum right
+      {"not symmetric", [&] { testing::set_entry_compliance_term(entry, 2, 4, 2.0 * good(2, 4)); }},  // checksum right
       {"not a regular file",
        [&] {
          std::filesystem::remove(entry);

@@ -28,8 +28,9 @@ StatusOr<LinkStiffness> analyse(const std::string& file, double size, const Regi
 
 TEST(OrthoglideLinks, ParallelogramBarAxialComplianceIsBoundedByBarModels) {
   const double L = 0.3106;
-  auto r = analyse("parallelogram_bar.off", 4e-3, Region::box(Vec3(-6.5e-3, -6.5e-3, -8e-3), Vec3(6.5e-3, 6.5e-3, 8e-3)),
-                   Region::box(Vec3(L - 6.5e-3, -6.5e-3, -8e-3), Vec3(L + 6.5e-3, 6.5e-3, 8e-3)), Vec3(L, 0, 0));
+  auto r =
+      analyse("parallelogram_bar.off", 4e-3, Region::box(Vec3(-6.5e-3, -6.5e-3, -8e-3), Vec3(6.5e-3, 6.5e-3, 8e-3)),
+              Region::box(Vec3(L - 6.5e-3, -6.5e-3, -8e-3), Vec3(L + 6.5e-3, 6.5e-3, 8e-3)), Vec3(L, 0, 0));
   ASSERT_TRUE(r.ok()) << r.status().message();
   EXPECT_LT(r->compliance_symmetry_error, 1e-6);
   EXPECT_GT(r->cartesian.indices->eigenvalues(0), 0.0);

@@ -157,8 +157,7 @@ std::vector<Damage> damages() {
          std::filesystem::create_directory(path(d, k));
        },
        "not a regular file"},
-      {"not an entry",
-       [=](const std::string& d, const std::string& k) { write_file(path(d, k), "hello\n"); },
+      {"not an entry", [=](const std::string& d, const std::string& k) { write_file(path(d, k), "hello\n"); },
        "not a cache entry"},
   };
 }
@@ -194,8 +193,15 @@ TEST(ResultCache, KeysCannotLeaveTheCacheFolder) {
   const std::filesystem::path root = std::filesystem::temp_directory_path() / "kinestat_fea_cache_keys";
   std::filesystem::remove_all(root);
   const std::string dir = (root / "a" / "b" / "cache").string();
-  const std::vector<std::string> keys = {"../../escaped", "..", "a/b", "/tmp/x", "", std::string(31, 'a') + "/",
-                                         std::string(32, 'A'), std::string(33, 'a'), std::string(16, '0')};
+  const std::vector<std::string> keys = {"../../escaped",
+                                         "..",
+                                         "a/b",
+                                         "/tmp/x",
+                                         "",
+                                         std::string(31, 'a') + "/",
+                                         std::string(32, 'A'),
+                                         std::string(33, 'a'),
+                                         std::string(16, '0')};
   for (const std::string& key : keys) {
     StatusOr<CachedLinkStiffness> load = load_cached_link_stiffness(dir, key);
     EXPECT_EQ(load.status().code(), StatusCode::kInvalidInput) << key;
@@ -246,8 +252,10 @@ TEST(ResultCache, ConcurrentWritersNeverExposeHalfAnEntry) {
     threads.emplace_back([&] {
       while (!done) {
         StatusOr<CachedLinkStiffness> found = load_cached_link_stiffness(dir, key);
-        if (!found.ok() || !found->result) ++rejected;
-        else ++served;
+        if (!found.ok() || !found->result)
+          ++rejected;
+        else
+          ++served;
       }
     });
   for (int w = 0; w < 3; ++w) threads[w].join();

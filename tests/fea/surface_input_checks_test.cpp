@@ -31,8 +31,8 @@ std::string write_file(const std::string& name, const std::string& bytes) {
 std::string box_off(double a, double b, double c) {
   std::string s = "OFF\n8 12 0\n";
   for (int i = 0; i < 8; ++i) s += fmt::format("{} {} {}\n", i & 4 ? a : 0.0, i & 2 ? b : 0.0, i & 1 ? c : 0.0);
-  for (const char* f : {"0 1 3", "0 3 2", "4 6 7", "4 7 5", "0 4 5", "0 5 1", "2 3 7", "2 7 6", "0 2 6", "0 6 4",
-                        "1 5 7", "1 7 3"})
+  for (const char* f :
+       {"0 1 3", "0 3 2", "4 6 7", "4 7 5", "0 4 5", "0 5 1", "2 3 7", "2 7 6", "0 2 6", "0 6 4", "1 5 7", "1 7 3"})
     s += std::string("3 ") + f + "\n";
   return s;
 }
@@ -137,8 +137,7 @@ TEST(OptionParsers, RegionsAreRangedAndNormalized) {
 }
 
 TEST(OptionParsers, MaterialRefusesUnknownItemsAndOutOfRangeValues) {
-  expect_contains(parse_material("E=2.1e11,nu=0.3,G=8e10", "--material").status().message(),
-                  "unknown item 'G=8e10'");
+  expect_contains(parse_material("E=2.1e11,nu=0.3,G=8e10", "--material").status().message(), "unknown item 'G=8e10'");
   // rho (kg/m^3) is an item since the link modes need a density.
   EXPECT_DOUBLE_EQ(parse_material("E=2.1e11,nu=0.3,rho=7800", "--material")->density, 7800.0);
   expect_contains(parse_material("E=2.1e11,nu=0.3,rho=0", "--material").status().message(), "rho");

@@ -5,8 +5,8 @@
 #include <array>
 #include <cmath>
 
-#include "kinestat/core/frame.hpp"
 #include "fea/elasticity_assembly.hpp"
+#include "kinestat/core/frame.hpp"
 #include "kinestat/fea/tet_element.hpp"
 #include "kinestat/fea/tet_mesh.hpp"
 
@@ -148,7 +148,8 @@ TEST(TetMass, QuadratureRulesAreExactToTheirDegree) {
           double sum = 0.0;
           for (const auto& [p, w] : rule) sum += w * std::pow(p.x(), i) * std::pow(p.y(), j) * std::pow(p.z(), k);
           const double exact = factorial(i) * factorial(j) * factorial(k) / factorial(i + j + k + 3);
-          EXPECT_NEAR(sum, exact, 1e-14 * exact) << degree << ": " << i << " " << j << " " << k;  // measured: at most 7.3e-16
+          EXPECT_NEAR(sum, exact, 1e-14 * exact)
+              << degree << ": " << i << " " << j << " " << k;  // measured: at most 7.3e-16
         }
   }
 }
@@ -229,7 +230,8 @@ TEST(Assembly, CompressedColumnsEqualDenseSumOfElementMatrices) {
       for (int a = 0; a < mesh.nodes_per_element; ++a) x[a] = mesh.nodes[v[a]];
       const MatX Ke = tet_stiffness(x.data(), mesh.nodes_per_element, D[material[e]]);
       for (int a = 0; a < mesh.nodes_per_element; ++a)
-        for (int b = 0; b < mesh.nodes_per_element; ++b) Kmesh.block<3, 3>(3 * v[a], 3 * v[b]) += Ke.block<3, 3>(3 * a, 3 * b);
+        for (int b = 0; b < mesh.nodes_per_element; ++b)
+          Kmesh.block<3, 3>(3 * v[a], 3 * v[b]) += Ke.block<3, 3>(3 * a, 3 * b);
     }
     const MatX expected = T.transpose() * Kmesh * T;
     const MatX assembled = MatX(solver::SparseMatrix(K.selfadjointView<Eigen::Lower>()));
@@ -247,7 +249,8 @@ TEST(Assembly, CompressedColumnsEqualDenseSumOfElementMatrices) {
       for (int a = 0; a < mesh.nodes_per_element; ++a) x[a] = mesh.nodes[v[a]];
       const MatX Me = tet_mass(x.data(), mesh.nodes_per_element, density[material[e]]);
       for (int a = 0; a < mesh.nodes_per_element; ++a)
-        for (int b = 0; b < mesh.nodes_per_element; ++b) Mmesh.block<3, 3>(3 * v[a], 3 * v[b]) += Me.block<3, 3>(3 * a, 3 * b);
+        for (int b = 0; b < mesh.nodes_per_element; ++b)
+          Mmesh.block<3, 3>(3 * v[a], 3 * v[b]) += Me.block<3, 3>(3 * a, 3 * b);
     }
     const MatX expected_mass = T.transpose() * Mmesh * T;
     const MatX assembled_mass = MatX(solver::SparseMatrix(M.selfadjointView<Eigen::Lower>()));

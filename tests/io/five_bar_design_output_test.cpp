@@ -3,9 +3,9 @@
 #include "kinestat/io/five_bar_design_output.hpp"
 
 #include <gtest/gtest.h>
-#include <vtkDataArray.h>
 #include <vtkCell.h>
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>

@@ -10,12 +10,11 @@
 #include <string>
 #include <vector>
 
-
+#include "frame3dd_example_b2015.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/io/frame3dd.hpp"
 #include "kinestat/msa/modes.hpp"
 #include "kinestat/msa/static_analysis.hpp"
-#include "frame3dd_example_b2015.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -128,16 +127,32 @@ constexpr const char* kExampleA = R"(Example A: linear static analysis of a 2D t
 // Frame3DD's published results of example A (examples/exA.out, Frame3DD 20091022), retyped: per
 // node X-dsp, Y-dsp (in) and Z-rot (rad), printed with 6 decimals; the other dofs are fixed.
 constexpr std::array<std::array<double, 3>, 12> kExADisplacement1 = {{
-    {0.0, 0.0, -0.001345},           {0.011745, -0.163879, -0.001037}, {0.036037, -0.284156, -0.000577},
-    {0.060329, -0.315889, 0.000023}, {0.084889, -0.279500, 0.000541},  {0.109449, -0.174012, 0.001021},
-    {0.125867, 0.0, 0.001479},       {0.100000, -0.147194, -0.000921}, {0.088255, -0.275880, -0.000632},
-    {0.059691, -0.315889, 0.000006}, {0.031127, -0.275362, 0.000599},  {0.014710, -0.157594, 0.000928},
+    {0.0, 0.0, -0.001345},
+    {0.011745, -0.163879, -0.001037},
+    {0.036037, -0.284156, -0.000577},
+    {0.060329, -0.315889, 0.000023},
+    {0.084889, -0.279500, 0.000541},
+    {0.109449, -0.174012, 0.001021},
+    {0.125867, 0.0, 0.001479},
+    {0.100000, -0.147194, -0.000921},
+    {0.088255, -0.275880, -0.000632},
+    {0.059691, -0.315889, 0.000006},
+    {0.031127, -0.275362, 0.000599},
+    {0.014710, -0.157594, 0.000928},
 }};
 constexpr std::array<std::array<double, 3>, 12> kExADisplacement2 = {{
-    {0.0, -1.000000, -0.000823},      {0.072934, -1.059998, -0.000092}, {0.135418, -1.005266, 0.000899},
-    {0.189627, -0.833841, 0.001622},  {0.218801, -0.599724, 0.002109},  {0.239698, -0.315535, 0.002400},
-    {0.250147, 0.0, 0.002623},        {0.100000, -1.070446, -0.000148}, {0.047756, -1.005266, 0.000919},
-    {0.016410, -0.833841, 0.001634},  {-0.014937, -0.599724, 0.002125}, {-0.025386, -0.305086, 0.002354},
+    {0.0, -1.000000, -0.000823},
+    {0.072934, -1.059998, -0.000092},
+    {0.135418, -1.005266, 0.000899},
+    {0.189627, -0.833841, 0.001622},
+    {0.218801, -0.599724, 0.002109},
+    {0.239698, -0.315535, 0.002400},
+    {0.250147, 0.0, 0.002623},
+    {0.100000, -1.070446, -0.000148},
+    {0.047756, -1.005266, 0.000919},
+    {0.016410, -0.833841, 0.001634},
+    {-0.014937, -0.599724, 0.002125},
+    {-0.025386, -0.305086, 0.002354},
 }};
 // Axial end force Nx at the first node of elements 1..21 (kip, 3 decimals; the force on the element,
 // negative in tension, as kinestat's N1).
@@ -149,10 +164,10 @@ constexpr std::array<double, 21> kExAAxial2 = {-176.256, -151.005, -131.005, -70
                                                35.711,   -25.251,  35.711,   126.256, 75.754,  75.754,  25.251};
 // Case 1 end moments Mzz at both ends (in kip, 3 decimals): the small bending of Izz = 0.01 in^4.
 constexpr std::array<std::array<double, 2>, 21> kExAMoment1 = {{
-    {0.002, 0.003},  {0.002, 0.004},   {-0.002, 0.001},  {-0.002, 0.001}, {-0.003, -0.000}, {-0.004, -0.002},
-    {-0.002, -0.000}, {-0.004, -0.003}, {-0.001, 0.000}, {-0.002, -0.003}, {0.001, -0.001},  {0.000, 0.0},
-    {-0.001, 0.001}, {0.002, 0.002},   {0.001, 0.0},     {0.003, 0.002},  {0.002, 0.0},     {0.004, 0.005},
-    {-0.001, 0.002}, {-0.002, 0.001},  {-0.004, -0.002},
+    {0.002, 0.003},   {0.002, 0.004},   {-0.002, 0.001},  {-0.002, 0.001},  {-0.003, -0.000}, {-0.004, -0.002},
+    {-0.002, -0.000}, {-0.004, -0.003}, {-0.001, 0.000},  {-0.002, -0.003}, {0.001, -0.001},  {0.000, 0.0},
+    {-0.001, 0.001},  {0.002, 0.002},   {0.001, 0.0},     {0.003, 0.002},   {0.002, 0.0},     {0.004, 0.005},
+    {-0.001, 0.002},  {-0.002, 0.001},  {-0.004, -0.002},
 }};
 // Reactions Fx, Fy (kip, 3 decimals) at nodes 1, 7 and 8; every other reaction is printed 0.0.
 struct PrintedReaction {
@@ -160,7 +175,8 @@ struct PrintedReaction {
   double fx, fy;
 };
 constexpr std::array<PrintedReaction, 3> kExAReaction1 = {{{1, 11.941, 40.323}, {7, 0.0, 39.677}, {8, -11.941, 0.0}}};
-constexpr std::array<PrintedReaction, 3> kExAReaction2 = {{{1, -201.508, -25.251}, {7, 0.0, 25.251}, {8, 151.508, 0.0}}};
+constexpr std::array<PrintedReaction, 3> kExAReaction2 = {
+    {{1, -201.508, -25.251}, {7, 0.0, 25.251}, {8, 151.508, 0.0}}};
 
 // A printed value agrees when it is the correct rounding of ours: |ours - printed| <= half a unit
 // of the last printed digit (5e-7 in or rad for 6 decimals, 5e-4 kip or in kip for 3), i.e. a
@@ -182,7 +198,7 @@ TEST(Frame3ddExampleA, DisplacementsReactionsAndEndForcesMatchPublishedOutput) {
   ASSERT_TRUE(sol.status.ok()) << sol.status.message();
   ASSERT_EQ(sol.cases.size(), 2u);
   const std::array<const std::array<std::array<double, 3>, 12>*, 2> displacement = {&kExADisplacement1,
-                                                                                   &kExADisplacement2};
+                                                                                    &kExADisplacement2};
   const std::array<const std::array<double, 21>*, 2> axial = {&kExAAxial1, &kExAAxial2};
   const std::array<const std::array<PrintedReaction, 3>*, 2> reaction = {&kExAReaction1, &kExAReaction2};
   double worst = 0.0;  // the largest difference in half-digits, reported
@@ -479,8 +495,10 @@ TEST(Frame3ddExampleB2015, SecondOrderApexAgreesWithPublishedOutputToTheFormulat
       worst = std::max(worst, std::abs(ours - printed));
       if (std::abs(linear - printed) > kTolerance) ++linear_misses;
     }
-  std::printf("Frame3DD example B (2015), second order: largest difference %.3g (mm, rad); the linear solve "
-              "misses %d of 18 values by more than %.1e\n", worst, linear_misses, kTolerance);
+  std::printf(
+      "Frame3DD example B (2015), second order: largest difference %.3g (mm, rad); the linear solve "
+      "misses %d of 18 values by more than %.1e\n",
+      worst, linear_misses, kTolerance);
   EXPECT_GE(linear_misses, 7);
 }
 
@@ -537,8 +555,8 @@ TEST(Frame3ddReader, EachRecordBecomesItsSiLoad) {
   ASSERT_TRUE(s.ok()) << s.status().message();
   EXPECT_EQ(s->title(), "cantilever, N and mm");
   const msa::Beam& b = s->beams().at(0);
-  EXPECT_EQ(b.theory, BeamTheory::kTimoshenko);                 // shear flag 1
-  EXPECT_NEAR(s->sections()[0].Asz, 60e-6, 1e-18);              // mm^2 -> m^2
+  EXPECT_EQ(b.theory, BeamTheory::kTimoshenko);     // shear flag 1
+  EXPECT_NEAR(s->sections()[0].Asz, 60e-6, 1e-18);  // mm^2 -> m^2
   // The twist's polar moment (rotary mass, K_G's Wagner term) is Jxx, as in Frame3DD's element, not
   // Iy + Iz = 1700 mm^4.
   EXPECT_NEAR(s->sections()[0].Ip, 2000e-12, 1e-24);
@@ -548,8 +566,8 @@ TEST(Frame3ddReader, EachRecordBecomesItsSiLoad) {
   EXPECT_NEAR(b.orientation.z(), std::sin(std::numbers::pi / 6), 1e-15);
   ASSERT_EQ(s->load_cases().size(), 1u);
   const msa::LoadCase& lc = s->load_cases()[0];
-  EXPECT_NEAR(lc.gravity.z(), -9.81, 1e-12);           // mm/s^2 -> m/s^2
-  EXPECT_NEAR(lc.loads.at(0).wrench[4], 5.0, 1e-12);    // 5000 N mm
+  EXPECT_NEAR(lc.gravity.z(), -9.81, 1e-12);          // mm/s^2 -> m/s^2
+  EXPECT_NEAR(lc.loads.at(0).wrench[4], 5.0, 1e-12);  // 5000 N mm
   // Uniform, then trapezoidal y and z (x has x1 = x2: nothing), point, temperature.
   ASSERT_EQ(lc.member_loads.size(), 5u);
   EXPECT_NEAR(lc.member_loads[0].w1.y(), 500.0, 1e-9);  // N/mm -> N/m
@@ -587,7 +605,7 @@ TEST(Frame3ddReader, ModalDataBecomesSettingsAndNodalMasses) {
   EXPECT_EQ(analysis.condensation, 1);
   ASSERT_EQ(s->masses().size(), 3u);
   EXPECT_EQ(s->masses()[0].node, 1);
-  EXPECT_NEAR(s->masses()[0].mass, 500.0, 1e-12);                             // 0.5 t
+  EXPECT_NEAR(s->masses()[0].mass, 500.0, 1e-12);                               // 0.5 t
   EXPECT_TRUE(s->masses()[0].inertia.isApprox(Vec3(0.01, 0.02, 0.03), 1e-15));  // t mm^2 = 1e-3 kg m^2
   EXPECT_EQ(s->masses()[1].node, 0);
   EXPECT_EQ(s->masses()[2].node, 1);
@@ -677,8 +695,9 @@ TEST(Frame3ddReader, BadInputNamesTheLine) {
   expect_contains(m, "bad.3dd:29: modal analysis method: the file ends here, before 1 (subspace Jacobi) or 2");
   expect_contains(m, "after a number of dynamic modes > 0 come the modal data");
   m = error_of(replace_line(kCantilever, 36, "1  7.85e-9  0.0"));
-  expect_contains(m, "bad.3dd:36: extra node inertia: expected 5 values (n M Ixx Iyy Izz) on this line, found 3; "
-                     "check the number of nodes with extra inertia at line 35");
+  expect_contains(m,
+                  "bad.3dd:36: extra node inertia: expected 5 values (n M Ixx Iyy Izz) on this line, found 3; "
+                  "check the number of nodes with extra inertia at line 35");
   m = error_of(replace_line(kCantilever, 38, "3  0.2"));
   expect_contains(m, "bad.3dd:38: extra element mass: element 3 does not exist");
   m = error_of(replace_line(kCantilever, 36, "2  -0.5  10 20 30"));

@@ -29,19 +29,24 @@ void expect_structure_error(const std::string& yaml, int line, std::initializer_
 }
 
 // A cantilever in mm-N-s; `extra` is appended (its first line is line 12).
-std::string cantilever_mm(const std::string& node_b = "[1000, 0, 0]", const std::string& section = "{id: rod, type: circle, d: 20}") {
-  return "units: mm-N-s\n"                                                  // 1
-         "nodes:\n"                                                         // 2
-         "  - {id: A, xyz: [0, 0, 0]}\n"                                    // 3
-         "  - {id: B, xyz: " + node_b + "}\n"                               // 4
-         "materials:\n"                                                     // 5
-         "  - {id: steel, E: 210000, nu: 0.3}\n"                            // 6
-         "sections:\n"                                                      // 7
-         "  - " + section + "\n"                                            // 8
-         "beams:\n"                                                         // 9
-         "  - {id: b, nodes: [A, B], material: steel, section: rod}\n"      // 10
-         "supports:\n"                                                      // 11
-         "  - {node: A, fixed: all}\n";                                     // 12
+std::string cantilever_mm(const std::string& node_b = "[1000, 0, 0]",
+                          const std::string& section = "{id: rod, type: circle, d: 20}") {
+  return "units: mm-N-s\n"                // 1
+         "nodes:\n"                       // 2
+         "  - {id: A, xyz: [0, 0, 0]}\n"  // 3
+         "  - {id: B, xyz: " +
+         node_b +
+         "}\n"                                    // 4
+         "materials:\n"                           // 5
+         "  - {id: steel, E: 210000, nu: 0.3}\n"  // 6
+         "sections:\n"                            // 7
+         "  - " +
+         section +
+         "\n"                                                           // 8
+         "beams:\n"                                                     // 9
+         "  - {id: b, nodes: [A, B], material: steel, section: rod}\n"  // 10
+         "supports:\n"                                                  // 11
+         "  - {node: A, fixed: all}\n";                                 // 12
 }
 
 TEST(InputValidation, ValuesThatOverflowOnceInSiAreRefusedNamingItemAndUnit) {
@@ -50,27 +55,27 @@ TEST(InputValidation, ValuesThatOverflowOnceInSiAreRefusedNamingItemAndUnit) {
   expect_structure_error(cantilever_mm("[1000, 0, 0]", "{id: rod, A: 100, Iy: 1e308, Iz: 1, J: 1}"), 8,
                          {"section 'rod'", "'Iy' = 1e+308 mm^4 is too large for a second moment of area"});
   const std::string joint = cantilever_mm() +
-                            "joints:\n"                                                                   // 13
-                            "  - {id: j, nodes: [B, B], stiffness: [1e308, 1, 1, 1, 1, 1]}\n";           // 14
+                            "joints:\n"                                                         // 13
+                            "  - {id: j, nodes: [B, B], stiffness: [1e308, 1, 1, 1, 1, 1]}\n";  // 14
   expect_structure_error(joint, 14, {"joint 'j'", "'stiffness ux' = 1e+308 N/mm is too large"});
   const std::string load = cantilever_mm() +
-                           "load_cases:\n"                                                                // 13
-                           "  - name: push\n"                                                             // 14
-                           "    loads:\n"                                                                 // 15
-                           "      - {node: B, moment: [0, 0, 1e300]}\n";                                  // 16
+                           "load_cases:\n"                                // 13
+                           "  - name: push\n"                             // 14
+                           "    loads:\n"                                 // 15
+                           "      - {node: B, moment: [0, 0, 1e300]}\n";  // 16
   expect_structure_error(load, 16, {"load case 'push'", "'moment' = 1e+300 N mm is too large for a moment"});
 }
 
 TEST(InputValidation, AHollowSectionWhoseWallLeavesNoHoleIsRefused) {
   // d - 2t < 0 still gives a positive area and inertia: it used to be accepted in model files.
   const char* vjm =
-      "units: mm-N-s\n"                                                                             // 1
-      "chains:\n"                                                                                   // 2
-      "  - name: leg\n"                                                                             // 3
-      "    elements:\n"                                                                             // 4
-      "      - actuator: {type: prismatic, axis: [1, 0, 0], value: 0, stiffness: 1000}\n"           // 5
-      "      - spring: {cantilever: {E: 210000, nu: 0.3, length: 100,\n"                            // 6
-      "                 section: {type: tube, d: 10, t: 6}}}\n";                                    // 7
+      "units: mm-N-s\n"                                                                    // 1
+      "chains:\n"                                                                          // 2
+      "  - name: leg\n"                                                                    // 3
+      "    elements:\n"                                                                    // 4
+      "      - actuator: {type: prismatic, axis: [1, 0, 0], value: 0, stiffness: 1000}\n"  // 5
+      "      - spring: {cantilever: {E: 210000, nu: 0.3, length: 100,\n"                   // 6
+      "                 section: {type: tube, d: 10, t: 6}}}\n";                           // 7
   const auto m = read_vjm_model_yaml_string(vjm, "leg.yaml");
   ASSERT_FALSE(m.ok());
   EXPECT_EQ(m.status().code(), StatusCode::kInvalidInput);
@@ -95,11 +100,11 @@ TEST(InputValidation, AnAxisWhoseNormOverflowsIsStillADirection) {
 
 TEST(InputValidation, TwoValuesForOnePrescribedDofAreRefused) {
   const std::string m = cantilever_mm() +
-                        "load_cases:\n"                                          // 13
-                        "  - name: settle\n"                                     // 14
-                        "    prescribed:\n"                                      // 15
-                        "      - {node: A, dof: uz, value: 1}\n"                 // 16
-                        "      - {node: A, dof: uz, value: 2}\n";                // 17
+                        "load_cases:\n"                            // 13
+                        "  - name: settle\n"                       // 14
+                        "    prescribed:\n"                        // 15
+                        "      - {node: A, dof: uz, value: 1}\n"   // 16
+                        "      - {node: A, dof: uz, value: 2}\n";  // 17
   expect_structure_error(m, 17, {"load case 'settle'", "dof uz of node 'A' is already prescribed (at model.yaml:16)"});
 }
 
@@ -121,36 +126,40 @@ constexpr const char* kThreeNodes =
 
 TEST(InputValidation, ChecksAfterReadingNameFileAndLine) {
   const std::string nodes = kThreeNodes;
-  expect_solve_error(nodes + "rigid_links:\n"                       // 5
-                             "  - {id: r1, master: A, slave: B}\n"  // 6
-                             "  - {id: r2, master: B, slave: C}\n"  // 7
-                             "  - {id: r3, master: C, slave: A}\n", // 8
+  expect_solve_error(nodes +
+                         "rigid_links:\n"                        // 5
+                         "  - {id: r1, master: A, slave: B}\n"   // 6
+                         "  - {id: r2, master: B, slave: C}\n"   // 7
+                         "  - {id: r3, master: C, slave: A}\n",  // 8
                      "model.yaml:", "closed loop");
-  expect_solve_error(nodes + "rigid_links:\n"                       // 5
-                             "  - {id: r1, master: A, slave: C}\n"  // 6
-                             "  - {id: r2, master: B, slave: C}\n", // 7
+  expect_solve_error(nodes +
+                         "rigid_links:\n"                        // 5
+                         "  - {id: r1, master: A, slave: C}\n"   // 6
+                         "  - {id: r2, master: B, slave: C}\n",  // 7
                      "model.yaml:7: ", "node 'C' is tied rigidly to two nodes");
-  expect_solve_error(nodes + "supports:\n"                                                // 5
-                             "  - {node: A, fixed: [ux]}\n"                               // 6
-                             "  - {node: A, fixed: [uy], frame: {x: [0, 1, 0], z: [0, 0, 1]}}\n",  // 7
+  expect_solve_error(nodes +
+                         "supports:\n"                                                         // 5
+                         "  - {node: A, fixed: [ux]}\n"                                        // 6
+                         "  - {node: A, fixed: [uy], frame: {x: [0, 1, 0], z: [0, 0, 1]}}\n",  // 7
                      "model.yaml:7: ", "two supports in different frames");
-  expect_solve_error(nodes + "supports:\n"                       // 5
-                             "  - {node: A, fixed: all}\n"       // 6
-                             "  - {node: B, fixed: all}\n"       // 7
-                             "  - {node: C, fixed: all}\n",      // 8
+  expect_solve_error(nodes +
+                         "supports:\n"                   // 5
+                         "  - {node: A, fixed: all}\n"   // 6
+                         "  - {node: B, fixed: all}\n"   // 7
+                         "  - {node: C, fixed: all}\n",  // 8
                      "model.yaml: ", "every dof of the structure is supported");
 }
 
 TEST(InputValidation, OrthoglideModelChecksNameTheLine) {
   // E overflows once converted from MPa: refused at its line, not later without one.
   const char* model =
-      "units: mm-N-s\n"                                                              // 1
-      "mechanism: orthoglide\n"                                                      // 2
-      "orthoglide:\n"                                                                // 3
-      "  architecture: 3-PUU\n"                                                      // 4
-      "  link_length: 310.0\n"                                                       // 5
-      "  actuator_stiffness: 1e4\n"                                                  // 6
-      "  bar: {E: 1e305, nu: 0.3, section: {type: circle, d: 10}}\n"                 // 7
+      "units: mm-N-s\n"                                                               // 1
+      "mechanism: orthoglide\n"                                                       // 2
+      "orthoglide:\n"                                                                 // 3
+      "  architecture: 3-PUU\n"                                                       // 4
+      "  link_length: 310.0\n"                                                        // 5
+      "  actuator_stiffness: 1e4\n"                                                   // 6
+      "  bar: {E: 1e305, nu: 0.3, section: {type: circle, d: 10}}\n"                  // 7
       "  foot: {E: 210000, nu: 0.3, length: 100, section: {type: circle, d: 30}}\n";  // 8
   const auto m = read_vjm_model_yaml_string(model, "og.yaml");
   ASSERT_FALSE(m.ok());

@@ -99,7 +99,8 @@ Rgb viridis(double t) {
 class MapPng : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = ::testing::TempDir() + "kinestat_png_test_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    dir_ =
+        ::testing::TempDir() + "kinestat_png_test_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

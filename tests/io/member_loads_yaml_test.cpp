@@ -147,35 +147,38 @@ void expect_error(const std::string& yaml, int line, std::initializer_list<const
 std::string with_member_load(const std::string& entry, const std::string& units = "SI",
                              const std::string& material = "{id: steel, E: 210e9, nu: 0.3}") {
   return "units: " + units +
-         "\n"                                             // 1
-         "nodes:\n"                                       // 2
-         "  - {id: A, xyz: [0, 0, 0]}\n"                  // 3
-         "  - {id: B, xyz: [1, 0, 0]}\n"                  // 4
-         "materials:\n"                                   // 5
-         "  - " + material + "\n"                         // 6
-         "sections:\n"                                    // 7
-         "  - {id: rod, type: circle, d: 0.02}\n"         // 8
-         "beams:\n"                                       // 9
+         "\n"                             // 1
+         "nodes:\n"                       // 2
+         "  - {id: A, xyz: [0, 0, 0]}\n"  // 3
+         "  - {id: B, xyz: [1, 0, 0]}\n"  // 4
+         "materials:\n"                   // 5
+         "  - " +
+         material +
+         "\n"                                                           // 6
+         "sections:\n"                                                  // 7
+         "  - {id: rod, type: circle, d: 0.02}\n"                       // 8
+         "beams:\n"                                                     // 9
          "  - {id: b, nodes: [A, B], material: steel, section: rod}\n"  // 10
-         "supports:\n"                                    // 11
-         "  - {node: A, fixed: all}\n"                    // 12
-         "load_cases:\n"                                  // 13
-         "  - name: c\n"                                  // 14
-         "    member_loads:\n"                            // 15
-         "      - " + entry + "\n";                       // 16
+         "supports:\n"                                                  // 11
+         "  - {node: A, fixed: all}\n"                                  // 12
+         "load_cases:\n"                                                // 13
+         "  - name: c\n"                                                // 14
+         "    member_loads:\n"                                          // 15
+         "      - " +
+         entry + "\n";  // 16
 }
 
 TEST(MemberLoadsYaml, BadInputNamesTheLineTheItemAndTheFix) {
-  expect_error(with_member_load("{beam: b, type: uniform, w: [0, 0, -1], at: 3}"), 16,
-               {"load case 'c': the member load on beam 'b'", "unknown key 'at'; allowed keys are: beam, type, axes, w"});
+  expect_error(
+      with_member_load("{beam: b, type: uniform, w: [0, 0, -1], at: 3}"), 16,
+      {"load case 'c': the member load on beam 'b'", "unknown key 'at'; allowed keys are: beam, type, axes, w"});
   expect_error(with_member_load("{beam: q, type: uniform, w: [0, 0, -1]}"), 16,
                {"load case 'c' member load", "unknown beam 'q'; define it under beams"});
   expect_error(with_member_load("{beam: b, type: point, a: 1.5, force: [0, 0, -1]}"), 16,
                {"the member load on beam 'b'", "a = 1.5 m lies beyond the end of the beam (length 1 m)"});
   expect_error(with_member_load("{beam: b, type: point, a: 1500, force: [0, 0, -1]}", "mm-N-s",
                                 "{id: steel, E: 210000, nu: 0.3}"),
-               16,
-               {"a = 1500 mm lies beyond the end of the beam (length 1 mm)"});
+               16, {"a = 1500 mm lies beyond the end of the beam (length 1 mm)"});
   expect_error(with_member_load("{beam: b, type: trapezoidal, a: 0.8, b: 0.2, w1: [0, 0, 1], w2: [0, 0, 1]}"), 16,
                {"give a < b"});
   expect_error(with_member_load("{beam: b, type: linear, w: [0, 0, -1]}"), 16,

@@ -35,8 +35,8 @@ TEST(NodalMassesYaml, ReadInSIAndMillimetres) {
   EXPECT_DOUBLE_EQ(si->masses()[0].inertia(2), 0.3);
   // mm-N-s: mass in t (N s^2/mm = 1000 kg), inertia in t mm^2 (= 1e-3 kg m^2). Coordinates are in mm
   // there, but the masses do not depend on them.
-  auto mm = read_structure_yaml_string(model("mm-N-s", "  - {node: B, mass: 0.0125, inertia: [100, 200, 300]}\n"),
-                                       "mm");
+  auto mm =
+      read_structure_yaml_string(model("mm-N-s", "  - {node: B, mass: 0.0125, inertia: [100, 200, 300]}\n"), "mm");
   ASSERT_TRUE(mm.ok()) << mm.status().message();
   EXPECT_NEAR(mm->masses()[0].mass, 12.5, 1e-12);
   EXPECT_NEAR(mm->masses()[0].inertia(0), 0.1, 1e-15);

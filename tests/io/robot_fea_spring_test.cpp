@@ -50,12 +50,15 @@ std::string robot(const std::string& spring) {
          "    chain:\n"
          "      - revolute: {at: [a, 0, 0], axis: [0, 0, 1]}\n"
          "      - prismatic: {at: [a, 0, 0], axis: [px - a, py, 0], actuated: true}\n"
-         "      - link: {to: [px, py, 0], length: 200, " + spring + "}\n"
+         "      - link: {to: [px, py, 0], length: 200, " +
+         spring +
+         "}\n"
          "      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}\n";
 }
 constexpr int kLinkLine = 14;
-const std::string kFea = "spring: {fea: {mesh: bar.off, material: steel, clamp: x=0, reference: x=200, size: 6, "
-                         "cache: cache}}";
+const std::string kFea =
+    "spring: {fea: {mesh: bar.off, material: steel, clamp: x=0, reference: x=200, size: 6, "
+    "cache: cache}}";
 
 StatusOr<RobotModel> build(const std::string& path, std::vector<std::string>* stages = nullptr) {
   StatusOr<RobotDescription> d = io::read_robot_description(path);
@@ -150,9 +153,9 @@ TEST(RobotFeaSpring, MatchesTheBeamRobotAndTheMatrixRobot) {
   // The MSA's joints are diagonal: it refuses the full 6x6, naming the spring and the VJM.
   StatusOr<msa::Structure> s = robot_msa_structure(*fea, fea->home());
   ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.status().message().find(fmt::format("{}:{}: leg 1 link 1 spring fea", (dir / "fea.yaml").string(),
-                                                  kLinkLine)),
-            std::string::npos)
+  EXPECT_NE(
+      s.status().message().find(fmt::format("{}:{}: leg 1 link 1 spring fea", (dir / "fea.yaml").string(), kLinkLine)),
+      std::string::npos)
       << s.status().message();
   EXPECT_NE(s.status().message().find("--method vjm"), std::string::npos) << s.status().message();
 }
@@ -162,7 +165,8 @@ TEST(RobotFeaSpring, MatchesTheBeamRobotAndTheMatrixRobot) {
 TEST(RobotFeaSpring, UnresolvedAndMissingMeshNamedByFileAndLine) {
   const fs::path dir = fresh_dir("robot_fea_spring_errors");
   const std::string path = (dir / "robot.yaml").string();
-  std::ofstream(path) << robot("spring: {fea: {mesh: " + kBar.string() + ", material: steel, clamp: x=0, "
+  std::ofstream(path) << robot("spring: {fea: {mesh: " + kBar.string() +
+                               ", material: steel, clamp: x=0, "
                                "reference: x=200, size: 20}}");
   StatusOr<RobotDescription> d = io::read_robot_description(path);
   ASSERT_TRUE(d.ok()) << d.status().message();
@@ -175,8 +179,9 @@ TEST(RobotFeaSpring, UnresolvedAndMissingMeshNamedByFileAndLine) {
   EXPECT_NE(m.status().message().find("resolve_robot_fea_springs"), std::string::npos) << m.status().message();
   EXPECT_FALSE(io::read_robot_model(path).ok());  // the same through the io shortcut
 
-  std::ofstream(path, std::ios::trunc) << robot("spring: {fea: {mesh: missing.off, material: steel, clamp: x=0, "
-                                                "reference: x=200}}");
+  std::ofstream(path, std::ios::trunc) << robot(
+      "spring: {fea: {mesh: missing.off, material: steel, clamp: x=0, "
+      "reference: x=200}}");
   StatusOr<RobotDescription> missing = io::read_robot_description(path);
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.status().message().find(fmt::format("{}:{}:", path, kLinkLine)), std::string::npos)
@@ -187,8 +192,9 @@ TEST(RobotFeaSpring, UnresolvedAndMissingMeshNamedByFileAndLine) {
   // A joint's spring is not a mesh's.
   std::string text = robot("beam: {material: steel, section: bar}");
   text.replace(text.find("axis: [0, 0, 1]}"), 16,
-               "axis: [0, 0, 1], spring: {fea: {mesh: " + kBar.string() + ", material: steel, clamp: x=0, "
-               "reference: x=200}}}");
+               "axis: [0, 0, 1], spring: {fea: {mesh: " + kBar.string() +
+                   ", material: steel, clamp: x=0, "
+                   "reference: x=200}}}");
   std::ofstream(path, std::ios::trunc) << text;
   StatusOr<RobotDescription> joint = io::read_robot_description(path);
   ASSERT_FALSE(joint.ok());

@@ -181,8 +181,8 @@ TEST(RobotMsa, EqualsVjmOnBundledRobots) {
             Vec3 point;
             for (int a = 0; a < 3; ++a) point(a) = box[a].first + f(a) * (box[a].second - box[a].first);
             const PostureResult v = vjm->evaluate(point), m = msa->evaluate(point);
-            const std::string where = fmt::format("{} at ({:.6g}, {:.6g}, {:.6g}) m", msa->description(), point.x(),
-                                                  point.y(), point.z());
+            const std::string where =
+                fmt::format("{} at ({:.6g}, {:.6g}, {:.6g}) m", msa->description(), point.x(), point.y(), point.z());
             ASSERT_EQ(m.status, v.status) << where;
             if (v.status != PostureStatus::kOk) continue;
             ++ok;
@@ -196,9 +196,10 @@ TEST(RobotMsa, EqualsVjmOnBundledRobots) {
             worst_k = std::max(worst_k, dk);
             worst_c = std::max(worst_c, dc);
           }
-      fmt::print("{}{}: {} points, worst relative difference MSA - VJM: stiffness {:.1e}, compliance {:.1e} "
-                 "(condition number up to {:.1e})\n",
-                 c.name, pass ? " (tilted)" : "", ok, worst_k, worst_c, worst_kappa);
+      fmt::print(
+          "{}{}: {} points, worst relative difference MSA - VJM: stiffness {:.1e}, compliance {:.1e} "
+          "(condition number up to {:.1e})\n",
+          c.name, pass ? " (tilted)" : "", ok, worst_k, worst_c, worst_kappa);
       EXPECT_GT(ok, 0);
     }
   }
@@ -241,9 +242,10 @@ TEST(RobotMsa, FiveBarEqualsBuiltInMsaKernel) {
         EXPECT_NE(g.status, PostureStatus::kOk) << point.transpose();
       }
     }
-  fmt::print("five-bar, generic MSA - built-in MSA kernel: {} points, stiffness {:.1e}, compliance {:.1e} (the MSA "
-             "reference's own error, doubled: up to {:.1e}, {:.1e})\n",
-             ok, worst_k, worst_c, five_bar_msa_bound().first, five_bar_msa_bound().second);
+  fmt::print(
+      "five-bar, generic MSA - built-in MSA kernel: {} points, stiffness {:.1e}, compliance {:.1e} (the MSA "
+      "reference's own error, doubled: up to {:.1e}, {:.1e})\n",
+      ok, worst_k, worst_c, five_bar_msa_bound().first, five_bar_msa_bound().second);
   EXPECT_GT(ok, 15);
 }
 
@@ -293,7 +295,8 @@ legs:
       ASSERT_EQ(m.status, PostureStatus::kOk) << point.transpose();
       const Mat6 finite = on_complement(v.stiffness, v.compliance);
       EXPECT_LT(relative(m.stiffness, finite), 1e-9) << point.transpose() << "\nMSA\n"
-                                                     << m.stiffness << "\nVJM\n" << finite;
+                                                     << m.stiffness << "\nVJM\n"
+                                                     << finite;
       EXPECT_LT(relative(m.compliance, v.compliance), 1e-9) << point.transpose();
       ++ok;
     }
@@ -308,8 +311,7 @@ TEST(RobotMsa, RefusalsNamed) {
   auto s = robot_msa_structure(*hexapod, hexapod->home());
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.status().code(), StatusCode::kInvalidInput);
-  EXPECT_NE(s.status().message().find("closes a loop of rigid constraints"), std::string::npos)
-      << s.status().message();
+  EXPECT_NE(s.status().message().find("closes a loop of rigid constraints"), std::string::npos) << s.status().message();
   RobotKernelOptions o;
   o.model = hexapod;
   o.method = StiffnessMethod::kMsa;

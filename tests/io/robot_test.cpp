@@ -11,8 +11,8 @@
 
 #include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
-#include "kinestat/mechanisms/orthoglide_kernel.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
+#include "kinestat/mechanisms/orthoglide_kernel.hpp"
 #include "kinestat/mechanisms/robot_kernel.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
@@ -358,7 +358,10 @@ TEST(RobotFiles, OrthoglideEqualsBuiltInKernel) {
           ++ok;
         }
     std::printf("Orthoglide 3-PUU, %s: generic - built-in stiffness up to %.1e relative over %d points\n",
-                mode == 0 ? "unloaded" : mode == 1 ? "loaded by a displacement" : "loaded under a wrench", worst, ok);
+                mode == 0   ? "unloaded"
+                : mode == 1 ? "loaded by a displacement"
+                            : "loaded under a wrench",
+                worst, ok);
     EXPECT_GT(ok, 40);
   }
 }

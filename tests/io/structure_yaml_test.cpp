@@ -153,17 +153,17 @@ TEST(StructureYaml, BeamJointLinkErrors) {
 // on such a section is an error at the beam's line; `beam_theory:` sets every beam's default.
 TEST(StructureYaml, HandWrittenShearAreasNeedTimoshenkoBeams) {
   const std::string m =
-      "nodes:\n"                                                            // 1
-      "  - {id: A, xyz: [0, 0, 0]}\n"                                       // 2
-      "  - {id: B, xyz: [1, 0, 0]}\n"                                       // 3
-      "  - {id: C, xyz: [0, 1, 0]}\n"                                       // 4
-      "materials:\n"                                                        // 5
-      "  - {id: steel, E: 210e9, nu: 0.3}\n"                                // 6
-      "sections:\n"                                                         // 7
-      "  - {id: rod, type: circle, d: 0.02}\n"                              // 8
-      "  - {id: s, A: 1e-4, Iy: 1e-8, Iz: 1e-8, J: 2e-8, Asz: 8e-5}\n"     // 9
-      "supports:\n"                                                         // 10
-      "  - {node: A, fixed: all}\n";                                        // 11
+      "nodes:\n"                                                        // 1
+      "  - {id: A, xyz: [0, 0, 0]}\n"                                   // 2
+      "  - {id: B, xyz: [1, 0, 0]}\n"                                   // 3
+      "  - {id: C, xyz: [0, 1, 0]}\n"                                   // 4
+      "materials:\n"                                                    // 5
+      "  - {id: steel, E: 210e9, nu: 0.3}\n"                            // 6
+      "sections:\n"                                                     // 7
+      "  - {id: rod, type: circle, d: 0.02}\n"                          // 8
+      "  - {id: s, A: 1e-4, Iy: 1e-8, Iz: 1e-8, J: 2e-8, Asz: 8e-5}\n"  // 9
+      "supports:\n"                                                     // 10
+      "  - {node: A, fixed: all}\n";                                    // 11
   expect_error(m + "beams:\n  - {id: b, nodes: [A, B], material: steel, section: s}\n", 13,
                {"beam 'b'", "section 's' gives shear areas", "theory: timoshenko"});
   expect_error("beam_theory: bernoulli\n" + m, 1, {"unknown beam_theory 'bernoulli'"});
@@ -197,10 +197,10 @@ TEST(StructureYaml, RollAngleGivesFrame3ddLocalAxes) {
       "  - {id: rod, type: circle, d: 0.02}\n"  // 8
       "supports:\n"                             // 9
       "  - {node: A, fixed: all}\n";            // 10
-  auto s = read_structure_yaml_string(
-      m + "beams:\n  - {id: b, nodes: [A, D], material: steel, section: rod, roll: 30}\n"
-          "  - {id: v, nodes: [A, E], material: steel, section: rod, roll: 90}\n",
-      "t.yaml");
+  auto s =
+      read_structure_yaml_string(m + "beams:\n  - {id: b, nodes: [A, D], material: steel, section: rod, roll: 30}\n"
+                                     "  - {id: v, nodes: [A, E], material: steel, section: rod, roll: 90}\n",
+                                 "t.yaml");
   ASSERT_TRUE(s.ok()) << s.status().message();
   const double p = std::numbers::pi / 6, cx = 1.0 / 3, cy = 2.0 / 3, cz = 2.0 / 3, den = std::sqrt(1 - cz * cz);
   const Vec3 y((-cx * cz * std::sin(p) - cy * std::cos(p)) / den, (-cy * cz * std::sin(p) + cx * std::cos(p)) / den,

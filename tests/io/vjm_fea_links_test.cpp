@@ -20,28 +20,43 @@ namespace fs = std::filesystem;
 
 struct LinkCase {
   const char* mesh;
-  const char* regions;          // clamp, reference, reference_point (mm), as in docs/fea.md
+  const char* regions;  // clamp, reference, reference_point (mm), as in docs/fea.md
   Vec3 reference_point_mm;
   double size_mm;
-  double axial_lo, axial_hi;    // bounds of K_xx (N/m) from bar models; 0 = none
+  double axial_lo, axial_hi;  // bounds of K_xx (N/m) from bar models; 0 = none
 };
 
 TEST(VjmFeaLinks, EveryBundledMeshFeedsAModelFile) {
   const double E = 210e9;
   const double tube_area = std::numbers::pi / 4 * (0.04 * 0.04 - 0.032 * 0.032);
   const LinkCase cases[] = {
-      {"bar.off", "clamp: x=0, reference: x=200, reference_point: [200, 0, 0]", {200, 0, 0}, 8,
-       0.98 * E * 0.02 * 0.03 / 0.2, 1.03 * E * 0.02 * 0.03 / 0.2},
+      {"bar.off",
+       "clamp: x=0, reference: x=200, reference_point: [200, 0, 0]",
+       {200, 0, 0},
+       8,
+       0.98 * E * 0.02 * 0.03 / 0.2,
+       1.03 * E * 0.02 * 0.03 / 0.2},
       // 48 facets per circle: the polygon's area is 0.3 % below the circle's.
-      {"tube.off", "clamp: x=0, reference: x=300, reference_point: [300, 0, 0]", {300, 0, 0}, 8,
-       0.98 * E * tube_area / 0.3, 1.03 * E * tube_area / 0.3},
-      {"foot.off", "clamp: x=0, reference: 'box:94,-25,21,111,25,39', reference_point: [102.5, 0, 30]",
-       {102.5, 0, 30}, 7, 0, 0},
+      {"tube.off",
+       "clamp: x=0, reference: x=300, reference_point: [300, 0, 0]",
+       {300, 0, 0},
+       8,
+       0.98 * E * tube_area / 0.3,
+       1.03 * E * tube_area / 0.3},
+      {"foot.off",
+       "clamp: x=0, reference: 'box:94,-25,21,111,25,39', reference_point: [102.5, 0, 30]",
+       {102.5, 0, 30},
+       7,
+       0,
+       0},
       // Axial: between the 20 x 10 mm bar over L - 13 mm (softest) and over L - 30 mm (stiffest).
       {"parallelogram_bar.off",
        "clamp: 'box:-6.5,-6.5,-8,6.5,6.5,8', reference: 'box:304.1,-6.5,-8,317.1,6.5,8', "
        "reference_point: [310.6, 0, 0]",
-       {310.6, 0, 0}, 5, E * 0.02 * 0.01 / (0.3106 - 0.013), E * 0.02 * 0.01 / (0.3106 - 0.030)},
+       {310.6, 0, 0},
+       5,
+       E * 0.02 * 0.01 / (0.3106 - 0.013),
+       E * 0.02 * 0.01 / (0.3106 - 0.030)},
   };
   for (const LinkCase& c : cases) {
     SCOPED_TRACE(c.mesh);

@@ -30,7 +30,8 @@ std::string bar_model(const std::string& spring) {
          "    elements:\n"
          "      - {rotate: {axis: [0, 0, 1], angle: 90}}\n"
          "      - {translate: [200, 0, 0]}\n"
-         "      - {spring: " + spring + "}\n";
+         "      - {spring: " +
+         spring + "}\n";
 }
 
 Mat6 model_stiffness(StatusOr<VjmModel> model) {
@@ -154,7 +155,8 @@ TEST(VjmFeaSpring, BadInputNamesFileAndLine) {
 TEST(VjmFeaSpring, ReadingRecordsTheSpringAndResolvingFindsABadRegion) {
   const std::string name = (fresh_dir("vjm_fea_spring_region") / "model.yaml").string();
   StatusOr<VjmModel> m = read_vjm_model_yaml_string(
-      bar_model("{fea: {mesh: " + kBar.string() + ", material: steel, clamp: x=-50, reference: x=200, size: 20}}"), name);
+      bar_model("{fea: {mesh: " + kBar.string() + ", material: steel, clamp: x=-50, reference: x=200, size: 20}}"),
+      name);
   ASSERT_TRUE(m.ok()) << m.status().message();
   ASSERT_EQ(m->fea_springs.size(), 1u);
   EXPECT_FALSE(m->fea_springs[0].resolved);

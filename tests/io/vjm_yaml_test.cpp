@@ -146,7 +146,8 @@ INSTANTIATE_TEST_SUITE_P(
     VjmYaml, BadVjmFile,
     ::testing::Values(
         BadCase{"Empty", "", "bad.yaml: file: the file is empty"},
-        BadCase{"UnknownTopKey", "units: SI\nchain: []\n", "bad.yaml:2: file: unknown key 'chain'; allowed keys are: units"},
+        BadCase{"UnknownTopKey", "units: SI\nchain: []\n",
+                "bad.yaml:2: file: unknown key 'chain'; allowed keys are: units"},
         BadCase{"UnknownUnits", "units: inch\nchains: []\n", "bad.yaml:1: units: unknown units 'inch'"},
         BadCase{"UnknownMechanism", "mechanism: hexapod\n", "bad.yaml:1: file: unknown mechanism 'hexapod'"},
         BadCase{"OrthoglideBlockMissing", "mechanism: orthoglide\n", "file: missing required key 'orthoglide'"},
@@ -156,16 +157,20 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"PoissonOutOfRange", kBadNu.c_str(), "bad.yaml:6: orthoglide bar: 'nu' = 0.7 is not in (-1, 0.5)"},
         BadCase{"NoChains", "units: SI\n", "file: missing required key 'chains'"},
         BadCase{"EmptyChains", "chains: []\n", "bad.yaml:1: chains: the list is empty"},
-        BadCase{"TwoKindsInOneElement", "chains:\n  - name: a\n    elements:\n      - {translate: [1, 0, 0], rotate: {axis: [0, 0, 1], angle: 1}}\n",
+        BadCase{"TwoKindsInOneElement",
+                "chains:\n  - name: a\n    elements:\n      - {translate: [1, 0, 0], rotate: {axis: [0, 0, 1], angle: "
+                "1}}\n",
                 "bad.yaml:4: chain 'a' element 1: give exactly one of"},
         BadCase{"UnknownElement", "chains:\n  - name: a\n    elements:\n      - {twist: 1}\n",
                 "bad.yaml:4: chain 'a' element 1: unknown key 'twist'"},
         BadCase{"ZeroAxis", "chains:\n  - name: a\n    elements:\n      - rotate: {axis: [0, 0, 0], angle: 1}\n",
                 "bad.yaml:4: chain 'a' element 1 (rotate): 'axis': the direction must be finite and non-zero"},
         BadCase{"CoupledToUnknownJoint",
-                "chains:\n  - name: a\n    elements:\n      - coupled: {to: q9, type: revolute, axis: [0, 1, 0], coefficient: -1}\n",
+                "chains:\n  - name: a\n    elements:\n      - coupled: {to: q9, type: revolute, axis: [0, 1, 0], "
+                "coefficient: -1}\n",
                 "bad.yaml:4: chain 'a' element 1 (coupled): no passive joint with id 'q9'"},
-        BadCase{"BadJointType", "chains:\n  - name: a\n    elements:\n      - passive: {type: ball, axis: [0, 1, 0], q: 0}\n",
+        BadCase{"BadJointType",
+                "chains:\n  - name: a\n    elements:\n      - passive: {type: ball, axis: [0, 1, 0], q: 0}\n",
                 "bad.yaml:4: chain 'a' element 1 (passive): unknown joint type 'ball'"},
         BadCase{"NegativeActuatorStiffness",
                 "chains:\n  - name: a\n    elements:\n      - actuator: {type: prismatic, axis: [1, 0, 0], value: 0,\n"
@@ -173,16 +178,19 @@ INSTANTIATE_TEST_SUITE_P(
                 "bad.yaml:5: chain 'a' element 1 (actuator): 'stiffness' = -5 N/m must be positive"},
         BadCase{"MatrixNotSixRows", "chains:\n  - name: a\n    elements:\n      - spring: {matrix: [[1, 2]]}\n",
                 "bad.yaml:4: chain 'a' element 1 (spring): 'matrix' must be 6 rows of 6 numbers"},
-        BadCase{"UnknownSection",
-                "chains:\n  - name: a\n    elements:\n      - spring:\n          cantilever: {E: 1, nu: 0.3, length: 1,\n"
-                "                       section: {type: star, d: 1}}\n",
-                "bad.yaml:6: chain 'a' element 1 (spring) cantilever section: unknown section type 'star'"},
+        BadCase{
+            "UnknownSection",
+            "chains:\n  - name: a\n    elements:\n      - spring:\n          cantilever: {E: 1, nu: 0.3, length: 1,\n"
+            "                       section: {type: star, d: 1}}\n",
+            "bad.yaml:6: chain 'a' element 1 (spring) cantilever section: unknown section type 'star'"},
         BadCase{"SpringNotPositiveDefinite",
-                "chains:\n  - name: a\n    elements:\n      - spring: {matrix: [[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0], [0, 0, 1, 0, 0, 0],\n"
+                "chains:\n  - name: a\n    elements:\n      - spring: {matrix: [[1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, "
+                "0], [0, 0, 1, 0, 0, 0],\n"
                 "                          [0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 1, 0], [0, 0, 0, 0, 0, -1]]}\n",
                 "bad.yaml:2: chain 'a': "},
         BadCase{"ToolPointsDoNotMeet",
-                "chains:\n  - name: a\n    elements: [{translate: [1, 0, 0]}]\n  - name: b\n    elements: [{translate: [0, 1, 0]}]\n",
+                "chains:\n  - name: a\n    elements: [{translate: [1, 0, 0]}]\n  - name: b\n    elements: [{translate: "
+                "[0, 1, 0]}]\n",
                 "bad.yaml:2: chains: "},
         BadCase{"MalformedYaml", "chains:\n  - name: [a\n", "bad.yaml:3: malformed YAML"}),
     [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });

@@ -59,8 +59,7 @@ TEST(FiveBarDesignSweep, CountsEqualThoseOfASeparateMapOfEachDesign) {
     EXPECT_EQ(r.reachable, reachable) << "design " << k;
     EXPECT_EQ(r.singularity_free, free) << "design " << k;
     EXPECT_EQ(r.stiff, stiff) << "design " << k;
-    EXPECT_NEAR(sweep->share(r.stiff), static_cast<double>(stiff) / static_cast<double>(o.region.num_points()),
-                1e-15);
+    EXPECT_NEAR(sweep->share(r.stiff), static_cast<double>(stiff) / static_cast<double>(o.region.num_points()), 1e-15);
   }
   // The threshold separates points, so the stiff share is a criterion of its own.
   EXPECT_TRUE(some_weak);

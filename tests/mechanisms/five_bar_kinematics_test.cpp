@@ -78,7 +78,8 @@ TEST(FiveBarKinematics, DirectKinematicsMatchesEq22To27) {
     const double e = p.r1 * (s1 - s2) / den, f = p.r1 * p.r3 * (c2 + c1) / den;
     const double d = 1.0 + e * e;
     const double g = 2.0 * (e * f - e * p.r1 * c1 + e * p.r3 - p.r1 * s1);
-    const double h = f * f - 2.0 * f * (p.r1 * c1 - p.r3) - 2.0 * p.r1 * p.r3 * c1 + p.r3 * p.r3 + p.r1 * p.r1 - p.r2 * p.r2;
+    const double h =
+        f * f - 2.0 * f * (p.r1 * c1 - p.r3) - 2.0 * p.r1 * p.r3 * c1 + p.r3 * p.r3 + p.r1 * p.r1 - p.r2 * p.r2;
     const double y_hi = (-g + std::sqrt(g * g - 4.0 * d * h)) / (2.0 * d);
     const double y_lo = (-g - std::sqrt(g * g - 4.0 * d * h)) / (2.0 * d);
     auto both = direct_kinematics(p, t1 * kDeg, t2 * kDeg);
@@ -179,8 +180,10 @@ TEST(FiveBarKinematics, UnreachableInputsAreReported) {
 
 TEST(FiveBarKinematics, JacobiansMatchFiniteDifferences) {
   const FiveBarParams p;
-  for (const auto& [t1, t2, a] : {std::tuple{80.0, 100.0, Assembly::kUp}, {60.0, 114.0, Assembly::kUp},
-                                  {64.0, 75.0, Assembly::kDown}, {30.0, 100.0, Assembly::kUp}}) {
+  for (const auto& [t1, t2, a] : {std::tuple{80.0, 100.0, Assembly::kUp},
+                                  {60.0, 114.0, Assembly::kUp},
+                                  {64.0, 75.0, Assembly::kDown},
+                                  {30.0, 100.0, Assembly::kUp}}) {
     auto q = direct_kinematics(p, t1 * kDeg, t2 * kDeg, a);
     ASSERT_TRUE(q.ok());
     const FiveBarJacobians J = five_bar_jacobians(*q);

@@ -157,8 +157,8 @@ TEST(FiveBarTable1, ReciprocityAndMirrorSymmetry) {
 void expect_singular_with_free_y_motion(double theta_deg) {
   SCOPED_TRACE("theta1 = theta2 = " + std::to_string(static_cast<int>(theta_deg)) + " deg");
   const msa::Solution sol = solve_posture(theta_deg, theta_deg);
-  ASSERT_EQ(sol.status.code(), StatusCode::kSingular) << "solved with dy under Fy = "
-                                                      << (sol.cases.empty() ? 0.0 : response(sol).fy_dy) << " m";
+  ASSERT_EQ(sol.status.code(), StatusCode::kSingular)
+      << "solved with dy under Fy = " << (sol.cases.empty() ? 0.0 : response(sol).fy_dy) << " m";
   EXPECT_TRUE(sol.cases.empty());
   // One free motion (docs/five_bar.md): the out-of-plane twist (ratio ~7e-11) is a real elastic mode.
   ASSERT_EQ(sol.singularity.modes.size(), 1u) << sol.status.message();
@@ -212,7 +212,8 @@ double expected_trace(const FiveBarParams& p) {
   const double L = p.r1;  // all links 0.1 m long (r1 = r2)
   const double E = p.link_material.E, G = p.link_material.G;
   const Section& s = p.link_section;
-  const double beam_end = E * s.A / L + 12.0 * E * (s.Iy + s.Iz) / (L * L * L) + G * s.J / L + 4.0 * E * (s.Iy + s.Iz) / L;
+  const double beam_end =
+      E * s.A / L + 12.0 * E * (s.Iy + s.Iz) / (L * L * L) + G * s.J / L + 4.0 * E * (s.Iy + s.Iz) / L;
   return 3 * 2 * p.joint_stiffness.sum() + 6 * beam_end;
 }
 

@@ -21,7 +21,7 @@ constexpr double kTol = 1e-9;
 
 struct Comparison {
   int compared = 0, failed = 0;
-  int unstable = 0;  // kOk points whose loaded stiffness has a negative eigenvalue: past a buckling limit
+  int unstable = 0;    // kOk points whose loaded stiffness has a negative eigenvalue: past a buckling limit
   double worst = 0.0;  // largest relative difference of a field
   double warm_steps = 0.0, scratch_steps = 0.0;  // Newton steps summed over the reachable points
 };
@@ -88,10 +88,11 @@ Comparison compare_with_scratch(const OrthoglideKernelOptions& o, const MapGrid&
         EXPECT_TRUE(a == b || (std::isnan(a) && std::isnan(b))) << field_info(map->fields[f].field).name << " " << i;
       }
   }
-  fmt::print("{}: {} points compared ({} past a buckling limit), {} failed, worst relative difference {:.1e}; "
-             "Newton steps per reachable point {:.1f} warm, {:.1f} from scratch\n",
-             kernel->description(), c.compared, c.unstable, c.failed, c.worst,
-             c.warm_steps / std::max(1, c.compared + c.failed), c.scratch_steps / std::max(1, c.compared + c.failed));
+  fmt::print(
+      "{}: {} points compared ({} past a buckling limit), {} failed, worst relative difference {:.1e}; "
+      "Newton steps per reachable point {:.1f} warm, {:.1f} from scratch\n",
+      kernel->description(), c.compared, c.unstable, c.failed, c.worst,
+      c.warm_steps / std::max(1, c.compared + c.failed), c.scratch_steps / std::max(1, c.compared + c.failed));
   return c;
 }
 

@@ -42,9 +42,12 @@ Vec3 svd_singular_values_at(const Vec3& p) {
 
 TEST(OrthoglideDesign, QAxisTable1) {
   // Table 1: P1 (chi = 1), O (0), P2 (-1/2), P3 (-1).
-  struct Row { double chi, p, rho; };
-  for (const Row& r : {Row{1.0, -std::sqrt(1.0 / 3), 0.0}, Row{0.0, 0.0, 1.0}, Row{-0.5, std::sqrt(1.0 / 6), std::sqrt(1.5)},
-                       Row{-1.0, std::sqrt(1.0 / 3), std::sqrt(4.0 / 3)}}) {
+  struct Row {
+    double chi, p, rho;
+  };
+  for (const Row& r :
+       {Row{1.0, -std::sqrt(1.0 / 3), 0.0}, Row{0.0, 0.0, 1.0}, Row{-0.5, std::sqrt(1.0 / 6), std::sqrt(1.5)},
+        Row{-1.0, std::sqrt(1.0 / 3), std::sqrt(4.0 / 3)}}) {
     EXPECT_NEAR(unit_q_axis_position(r.chi), r.p, 1e-15);
     EXPECT_NEAR(unit_q_axis_joint(r.chi), r.rho, 1e-15);
   }
@@ -91,8 +94,8 @@ TEST(OrthoglideDesign, CriticalPointClosedFormsMatchSvd) {
       const Vec3 joints = *inverse_kinematics(kUnit, p);
       // The point lies on the face rho_x = rho of the joint box (and rho_y = rho for Q and R).
       EXPECT_NEAR(joints.x(), rho, 1e-14) << to_string(c);
-      const double r1 = c == CriticalPoint::kR ? std::pow(rho * rho * (2 - rho * rho), 0.25)    // eq. (20)
-                        : c == CriticalPoint::kS ? std::sqrt(rho * (2 - rho))                  // eq. (24)
+      const double r1 = c == CriticalPoint::kR   ? std::pow(rho * rho * (2 - rho * rho), 0.25)  // eq. (20)
+                        : c == CriticalPoint::kS ? std::sqrt(rho * (2 - rho))                   // eq. (24)
                                                  : rho;
       EXPECT_NEAR(joints.z(), r1, 1e-14) << to_string(c);
       EXPECT_NEAR((unit_critical_point_singular_values(c, rho) - svd_singular_values_at(p)).norm(), 0.0, 1e-12)
@@ -120,9 +123,9 @@ TEST(OrthoglideDesign, Section52ClosedFormsAndBoundaries) {
   EXPECT_NEAR(rho_rq, 0.2240, kDigits4);
   EXPECT_NEAR(1 / sigma_max(C::kQ, rho_rq), 0.4210, kDigits4);
   // mu*: the Q- and R- bounds of eq. (36b) meet.
-  const double mu_star = bisect(
-      [](double m) { return (3 * m - 1) / std::sqrt(6 * m * m - 4 * m + 2) - m / std::sqrt(m * m - 2 * m + 2); }, 0.4,
-      0.7);
+  const double mu_star =
+      bisect([](double m) { return (3 * m - 1) / std::sqrt(6 * m * m - 4 * m + 2) - m / std::sqrt(m * m - 2 * m + 2); },
+             0.4, 0.7);
   EXPECT_NEAR(mu_star, 0.5387, kDigits4);
   EXPECT_NEAR(unit_joint_space_rho_min(mu_star), 0.4892, kDigits4);
   EXPECT_NEAR(unit_q_axis_limits(mu_star).rho_plus, 1.1700, kDigits4);
@@ -136,7 +139,9 @@ TEST(OrthoglideDesign, Section52ClosedFormsAndBoundaries) {
 TEST(OrthoglideDesign, CriticalPointsMatchNumericalSearch) {
   // Joint-limit pairs with rho_min >= 0.25: the Q- area of Fig. 9a (and Q+ near (1, 1)) and both
   // areas of Fig. 9b. The critical points Q, R, S give the exact extremes over W_rho.
-  struct Case { double rho_min, rho_max; };
+  struct Case {
+    double rho_min, rho_max;
+  };
   for (const Case& c : {Case{0.30, 1.20}, Case{0.60, 1.10}, Case{0.95, 1.20}, Case{0.90, 1.02}, Case{0.40, 1.05}}) {
     const TransmissionRange formula = unit_joint_space_range(c.rho_min, c.rho_max);
     const WorkspaceSearch search = search_joint_space(kUnit, c.rho_min, c.rho_max, kInf, 41);
@@ -365,7 +370,8 @@ double face_minimum(double r, double t0) {
   double f = unit_mu_min(Vec3(r, best.x(), best.y()));
   for (double h = (1 - r) / (n - 1); h > 1e-12;) {
     bool moved = false;
-    for (const Eigen::Vector2d& d : {Eigen::Vector2d(h, 0), Eigen::Vector2d(-h, 0), Eigen::Vector2d(0, h), Eigen::Vector2d(0, -h)}) {
+    for (const Eigen::Vector2d& d :
+         {Eigen::Vector2d(h, 0), Eigen::Vector2d(-h, 0), Eigen::Vector2d(0, h), Eigen::Vector2d(0, -h)}) {
       const Eigen::Vector2d yz = (best + d).cwiseMax(r).cwiseMin(1.0);
       if (yz.maxCoeff() < t0) continue;
       const double g = unit_mu_min(Vec3(r, yz.x(), yz.y()));

@@ -101,7 +101,8 @@ TEST(OrthoglideFrameInput, UnreachablePointAndBadValuesAreInvalidInput) {
   s = orthoglide_frame(bad, OrthoglideArchitecture::kPUU, Vec3::Zero());
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.status().code(), StatusCode::kInvalidInput);
-  EXPECT_NE(s.status().message().find("bar_section.J = 0 m^4 must be positive"), std::string::npos) << s.status().message();
+  EXPECT_NE(s.status().message().find("bar_section.J = 0 m^4 must be positive"), std::string::npos)
+      << s.status().message();
 }
 
 }  // namespace

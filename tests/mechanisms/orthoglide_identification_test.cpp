@@ -24,9 +24,9 @@
 namespace kinestat::mechanisms {
 namespace {
 
-constexpr double kQ0 = 0.0, kQ1 = -73.65, kQ2 = 126.35;  // tables' x = y = z (mm)
-constexpr double kTran = 1e-7;                           // 1e-4 mm/N in m/N
-constexpr double kRot = 1e-4;                            // 1e-7 rad/(N mm) in rad/(N m)
+constexpr double kQ0 = 0.0, kQ1 = -73.65, kQ2 = 126.35;                             // tables' x = y = z (mm)
+constexpr double kTran = 1e-7;                                                      // 1e-4 mm/N in m/N
+constexpr double kRot = 1e-4;                                                       // 1e-7 rad/(N mm) in rad/(N m)
 const Vec6 kPaperLoad = (Vec6() << -0.5e-3, -0.5e-3, -0.5e-3, 0, 0, 0).finished();  // tables' (0.5, 0.5, 0.5) mm
 
 using A = OrthoglideArchitecture;
@@ -137,9 +137,9 @@ TEST(OrthoglideIdentification, UndeterminedOrImpossibleRequestsAreBadInput) {
   // two of them cannot separate the actuator from the foot.
   std::vector<ComplianceTarget> symmetric = {targets[0], targets[0]};
   symmetric[1].row = symmetric[1].col = 1;
-  expect_invalid(identify_orthoglide_inputs(
-                     start, {OrthoglideInput::kActuatorStiffness, OrthoglideInput::kFootLength}, symmetric),
-                 "the targets cannot determine the inputs");
+  expect_invalid(
+      identify_orthoglide_inputs(start, {OrthoglideInput::kActuatorStiffness, OrthoglideInput::kFootLength}, symmetric),
+      "the targets cannot determine the inputs");
 
   std::vector<ComplianceTarget> negative = targets;
   negative[0].value = -negative[0].value;
@@ -152,8 +152,7 @@ TEST(OrthoglideIdentification, AnUnreachableTargetNamesItsSource) {
   targets[2].source = "targets.yaml:7";
   StatusOr<OrthoglideIdentification> r = identify_orthoglide_inputs(paper_calibration_start(), kInputs, targets);
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.status().message().rfind("targets.yaml:7: target 'Table 2, Q0, k_rot': ", 0), 0u)
-      << r.status().message();
+  EXPECT_EQ(r.status().message().rfind("targets.yaml:7: target 'Table 2, Q0, k_rot': ", 0), 0u) << r.status().message();
 }
 
 // ---- Predictions: the entries not used above, against the tables. ----

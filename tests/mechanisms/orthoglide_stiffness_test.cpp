@@ -195,8 +195,8 @@ TEST(OrthoglideStiffness, BeamBuiltSpringsAsOverridesReproduceTheDefault) {
   // The overrides enter in the frame documented in the header: passing the beam-built springs of
   // that frame explicitly must give the default result (unloaded and loaded), up to round-off.
   OrthoglideStiffnessModel beams;
-  beams.foot_spring = vjm::cantilever_spring(beams.foot_material, beams.foot_section, beams.foot_length,
-                                             BeamTheory::kTimoshenko);
+  beams.foot_spring =
+      vjm::cantilever_spring(beams.foot_material, beams.foot_section, beams.foot_length, BeamTheory::kTimoshenko);
   beams.bar_spring =
       vjm::cantilever_spring(beams.bar_material, beams.bar_section, beams.link_length, BeamTheory::kEulerBernoulli);
   for (OrthoglideArchitecture a : {OrthoglideArchitecture::kPUU, OrthoglideArchitecture::kPRPaR})
@@ -205,8 +205,7 @@ TEST(OrthoglideStiffness, BeamBuiltSpringsAsOverridesReproduceTheDefault) {
       StatusOr<OrthoglideStiffness> o = orthoglide_stiffness(beams, a, paper_table_point(c), kPaperLoad);
       ASSERT_TRUE(o.ok()) << o.status().message();
       for (auto [x, y] : {std::pair{&d.unloaded, &o->unloaded}, std::pair{&d.loaded, &o->loaded}})
-        EXPECT_LT((x->stiffness - y->stiffness).cwiseAbs().maxCoeff(), 1e-12 * x->stiffness.cwiseAbs().maxCoeff())
-            << c;
+        EXPECT_LT((x->stiffness - y->stiffness).cwiseAbs().maxCoeff(), 1e-12 * x->stiffness.cwiseAbs().maxCoeff()) << c;
     }
   // And the override is what is used: a foot twice as stiff makes the platform stiffer along x (each
   // foot is in series with its leg), so a silently ignored override fails here.

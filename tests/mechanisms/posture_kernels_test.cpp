@@ -114,11 +114,21 @@ Tally compare(PostureKernel& fast, PostureKernel& ref, const std::vector<Vec3>& 
     EXPECT_EQ(to_string(f.status), std::string(to_string(r.status))) << where;
     if (f.status != r.status) continue;
     switch (r.status) {
-      case PostureStatus::kOk: ++t.ok; break;
-      case PostureStatus::kSingular: ++t.singular; break;
-      case PostureStatus::kUnreachable: ++t.unreachable; break;
-      case PostureStatus::kFailed: ++t.failed; break;
-      case PostureStatus::kNearSingular: ADD_FAILURE() << where << ": a kernel never returns near-singular"; break;
+      case PostureStatus::kOk:
+        ++t.ok;
+        break;
+      case PostureStatus::kSingular:
+        ++t.singular;
+        break;
+      case PostureStatus::kUnreachable:
+        ++t.unreachable;
+        break;
+      case PostureStatus::kFailed:
+        ++t.failed;
+        break;
+      case PostureStatus::kNearSingular:
+        ADD_FAILURE() << where << ": a kernel never returns near-singular";
+        break;
     }
     if (r.status != PostureStatus::kOk) {
       EXPECT_TRUE(f.stiffness.isZero() && f.compliance.isZero() && f.deflection.isZero()) << where << ": values";
@@ -197,7 +207,8 @@ TEST(PostureKernels, FiveBarVjmEqualsTheReference) {
   for (const auto& [mode, assembly] : kFiveBarModes) {
     const FiveBarKernelOptions o = five_bar_options(StiffnessMethod::kVjm, mode, assembly);
     const Tally t = compare(*make_five_bar_kernel(o), *make_reference_five_bar_kernel(o), five_bar_points(o.params));
-    all.ok += t.ok, all.singular += t.singular, all.unreachable += t.unreachable, all.worst = std::max(all.worst, t.worst);
+    all.ok += t.ok, all.singular += t.singular, all.unreachable += t.unreachable,
+        all.worst = std::max(all.worst, t.worst);
   }
   fmt::print("five-bar VJM, 4 modes: {} ok, {} singular, {} unreachable; worst difference {:.2f} of the bound\n",
              all.ok, all.singular, all.unreachable, all.worst);
@@ -237,9 +248,10 @@ TEST(PostureKernels, FiveBarMsaEqualsTheReference) {
       worst_own = std::max(worst_own, own.value);
     }
   }
-  fmt::print("five-bar MSA, 4 modes: {} ok, {} singular, {} unreachable; against the VJM reference {:.2f} of the "
-             "bound; the MSA reference's own error up to {:.1e}\n",
-             all.ok, all.singular, all.unreachable, worst_vs_vjm, worst_own);
+  fmt::print(
+      "five-bar MSA, 4 modes: {} ok, {} singular, {} unreachable; against the VJM reference {:.2f} of the "
+      "bound; the MSA reference's own error up to {:.1e}\n",
+      all.ok, all.singular, all.unreachable, worst_vs_vjm, worst_own);
   EXPECT_GT(all.ok, 300);
   EXPECT_GT(all.singular, 20);
 }
@@ -323,9 +335,10 @@ void check_loaded(OrthoglideArchitecture a) {
     // The excuse is for a rare stall of the reference's iteration, not a way to pass mismatches:
     // measured 0 of the 54 points in every mode; more than 2 would mean the kernels disagree.
     EXPECT_LE(t.explained, 2);
-    fmt::print("{}: {} ok, {} singular, {} failed, {} unreachable, {} where the reference stalls; worst "
-               "difference {:.2f} of the bound\n",
-               fast->description(), t.ok, t.singular, t.failed, t.unreachable, t.explained, t.worst);
+    fmt::print(
+        "{}: {} ok, {} singular, {} failed, {} unreachable, {} where the reference stalls; worst "
+        "difference {:.2f} of the bound\n",
+        fast->description(), t.ok, t.singular, t.failed, t.unreachable, t.explained, t.worst);
   }
 }
 
@@ -351,7 +364,8 @@ TEST(PostureKernels, InvalidModelsAsTheReference) {
     OrthoglideKernelOptions o;
     if (bad == 0) o.model.actuator_stiffness = 0.0;
     if (bad == 1) o.model.bar_spring = -Mat6::Identity();
-    const Tally t = compare(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), orthoglide_points(), false);
+    const Tally t =
+        compare(*make_orthoglide_kernel(o), *make_reference_orthoglide_kernel(o), orthoglide_points(), false);
     EXPECT_EQ(t.ok, 0);
     EXPECT_GT(bad == 0 ? t.unreachable : t.failed, 300);
   }

@@ -86,7 +86,6 @@ void cross_check(BeamTheory theory) {
 TEST(VjmVsMsa, BeamFrameWithElasticJointEulerBernoulli) { cross_check(BeamTheory::kEulerBernoulli); }
 TEST(VjmVsMsa, BeamFrameWithElasticJointTimoshenko) { cross_check(BeamTheory::kTimoshenko); }
 
-
 // Released joints: the five-bar (two chains closed at P through passive revolutes) by the VJM and
 // by MSA on the same inputs (mechanisms/five_bar_vjm.hpp vs make_five_bar_structure). Both models are
 // exact for beams and linear springs; the 2e11 N/m joint springs next to ~1e4 N/m of link stiffness
@@ -100,8 +99,8 @@ TEST(VjmVsMsa, FiveBarWithReleasedJointsAtTable1Postures) {
     ASSERT_TRUE(q.ok());
     const auto kv = vjm::platform_unloaded_stiffness(mechanisms::five_bar_vjm_chains(p, *q));
     ASSERT_TRUE(kv.ok()) << kv.status().message();
-    const auto km = msa::cartesian_stiffness(mechanisms::make_five_bar_structure(p, *q), ws,
-                                             mechanisms::kFiveBarPlatformNode);
+    const auto km =
+        msa::cartesian_stiffness(mechanisms::make_five_bar_structure(p, *q), ws, mechanisms::kFiveBarPlatformNode);
     ASSERT_TRUE(km.ok() && km->stiffness_defined);
     const double scale = km->stiffness.cwiseAbs().maxCoeff();
     EXPECT_LT((kv->stiffness - km->stiffness).cwiseAbs().maxCoeff(), 1e-6 * scale) << t1 << ", " << t2;
@@ -121,8 +120,8 @@ TEST(VjmVsMsa, FiveBarSingularPostureLosesTheSameDirection) {
   const Vec6& d = kv->free_directions[0];
   EXPECT_NEAR(std::abs(d(1)), d.head<3>().norm(), 1e-6);  // translation of P along y
   msa::Workspace ws;
-  const auto km = msa::cartesian_stiffness(mechanisms::make_five_bar_structure(p, *q), ws,
-                                           mechanisms::kFiveBarPlatformNode);
+  const auto km =
+      msa::cartesian_stiffness(mechanisms::make_five_bar_structure(p, *q), ws, mechanisms::kFiveBarPlatformNode);
   EXPECT_EQ(km.status().code(), StatusCode::kSingular);
 }
 

@@ -35,8 +35,20 @@ std::array<double, kNumMapFields> expected_fields(const Mat6& K, const Vec6& def
              Krr = K.bottomRightCorner<3, 3>();
   const Vec3 t = schur_eigenvalues(Ktt, Ktr, Krt, Krr);
   const Vec3 r = schur_eigenvalues(Krr, Krt, Ktr, Ktt);
-  return {t(0), t(2), r(0), r(2), ix.trace, ix.norm_1, ix.norm_2, ix.norm_frobenius, ix.norm_inf,
-          ix.condition_number, ix.log10_abs_det, deflection.head<3>().norm(), deflection.tail<3>().norm(), measure};
+  return {t(0),
+          t(2),
+          r(0),
+          r(2),
+          ix.trace,
+          ix.norm_1,
+          ix.norm_2,
+          ix.norm_frobenius,
+          ix.norm_inf,
+          ix.condition_number,
+          ix.log10_abs_det,
+          deflection.head<3>().norm(),
+          deflection.tail<3>().norm(),
+          measure};
 }
 
 void expect_point_fields(const WorkspaceMap& map, std::size_t i, const std::array<double, kNumMapFields>& want,
@@ -133,9 +145,8 @@ TEST(FiveBarMap, EqualsSingleMsaSolvesAndMarksUnreachablePoints) {
   // The summary's minimum is a value of the field, found where it is.
   const FieldValues* kt = map->find(MapField::kTranslationalMin);
   ASSERT_NE(kt, nullptr);
-  const auto at = std::min_element(kt->values.begin(), kt->values.end(), [](double a, double b) {
-    return std::isnan(b) || (!std::isnan(a) && a < b);
-  });
+  const auto at = std::min_element(kt->values.begin(), kt->values.end(),
+                                   [](double a, double b) { return std::isnan(b) || (!std::isnan(a) && a < b); });
   EXPECT_EQ(kt->summary.min, *at);
   EXPECT_EQ(kt->summary.argmin, grid.point(at - kt->values.begin()));
 }
@@ -156,8 +167,8 @@ TEST(FiveBarMap, VjmMethodEqualsTheVjmOfEachPosture) {
     auto K = vjm::platform_unloaded_stiffness(five_bar_vjm_chains(o.params, *q));
     ASSERT_TRUE(K.ok() && K->compliance_defined);
     const FiveBarJacobians jac = five_bar_jacobians(*q);
-    expect_point_fields(*map, i, expected_fields(K->stiffness, Vec6::Zero(), std::min(jac.parallel_measure, jac.serial_measure)),
-                        1e-9);
+    expect_point_fields(
+        *map, i, expected_fields(K->stiffness, Vec6::Zero(), std::min(jac.parallel_measure, jac.serial_measure)), 1e-9);
     ++compared;
   }
   EXPECT_GT(compared, 5);
@@ -278,8 +289,8 @@ TEST(FiveBarLoci, AgreeWithTheMapToTheGridStep) {
       auto box = five_bar_workspace_box(o.params, o.mode, o.assembly);
       ASSERT_TRUE(box.ok());
       const double step = c.step;
-      const MapGrid grid = plane_grid(box->min.x() - step, box->max.x() + step, box->min.y() - step,
-                                      box->max.y() + step, step);
+      const MapGrid grid =
+          plane_grid(box->min.x() - step, box->max.x() + step, box->min.y() - step, box->max.y() + step, step);
       auto map = compute_workspace_map(*make_five_bar_kernel(o), grid);
       ASSERT_TRUE(map.ok());
       const std::vector<MapCurve> loci = five_bar_singular_loci(o.params, o.mode, o.assembly);

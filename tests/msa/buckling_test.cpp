@@ -7,10 +7,9 @@
 #include <numbers>
 #include <string>
 
-
+#include "beam_line.hpp"
 #include "kinestat/elements/section.hpp"
 #include "kinestat/msa/buckling.hpp"
-#include "beam_line.hpp"
 
 namespace kinestat::msa {
 namespace {
@@ -25,13 +24,24 @@ Structure column(Ends ends, int n, double L = 2.0, double P = 1000.0) {
   Structure s = straight(L, n, rectangle_section(0.02, 0.03));
   const DofMask pinned{true, true, true, true, false, false};  // with the twist held
   const DofMask fixed = kAllDofs;
-  const DofMask roller{false, true, true, false, false, false};   // free along the axis only
-  const DofMask guided{false, true, true, true, true, true};      // clamped but free to shorten
+  const DofMask roller{false, true, true, false, false, false};  // free along the axis only
+  const DofMask guided{false, true, true, true, true, true};     // clamped but free to shorten
   switch (ends) {
-    case Ends::kPinnedPinned: s.add_support({0, pinned, Mat3::Identity()}); s.add_support({n, roller, Mat3::Identity()}); break;
-    case Ends::kFixedFree: s.add_support({0, fixed, Mat3::Identity()}); break;
-    case Ends::kFixedPinned: s.add_support({0, fixed, Mat3::Identity()}); s.add_support({n, roller, Mat3::Identity()}); break;
-    case Ends::kFixedFixed: s.add_support({0, fixed, Mat3::Identity()}); s.add_support({n, guided, Mat3::Identity()}); break;
+    case Ends::kPinnedPinned:
+      s.add_support({0, pinned, Mat3::Identity()});
+      s.add_support({n, roller, Mat3::Identity()});
+      break;
+    case Ends::kFixedFree:
+      s.add_support({0, fixed, Mat3::Identity()});
+      break;
+    case Ends::kFixedPinned:
+      s.add_support({0, fixed, Mat3::Identity()});
+      s.add_support({n, roller, Mat3::Identity()});
+      break;
+    case Ends::kFixedFixed:
+      s.add_support({0, fixed, Mat3::Identity()});
+      s.add_support({n, guided, Mat3::Identity()});
+      break;
   }
   LoadCase lc{.name = "axial"};
   Vec6 w = Vec6::Zero();
@@ -45,10 +55,14 @@ Structure column(Ends ends, int n, double L = 2.0, double P = 1000.0) {
 // (Timoshenko & Gere, Theory of Elastic Stability, sec. 2.4), i.e. K = pi / 4.4934 = 0.6992.
 double euler_load(Ends ends, double EI, double L) {
   switch (ends) {
-    case Ends::kPinnedPinned: return kPi * kPi * EI / (L * L);
-    case Ends::kFixedFree: return kPi * kPi * EI / (4 * L * L);
-    case Ends::kFixedPinned: return 4.493409457909064 * 4.493409457909064 * EI / (L * L);
-    case Ends::kFixedFixed: return 4 * kPi * kPi * EI / (L * L);
+    case Ends::kPinnedPinned:
+      return kPi * kPi * EI / (L * L);
+    case Ends::kFixedFree:
+      return kPi * kPi * EI / (4 * L * L);
+    case Ends::kFixedPinned:
+      return 4.493409457909064 * 4.493409457909064 * EI / (L * L);
+    case Ends::kFixedFixed:
+      return 4 * kPi * kPi * EI / (L * L);
   }
   return 0.0;
 }

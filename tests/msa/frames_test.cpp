@@ -7,9 +7,9 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/frame.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
-#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::msa {
 namespace {
@@ -17,7 +17,8 @@ namespace {
 const Material kSteel{"steel", 2.1e11, 0.81e11};
 
 // A straight beam from the origin along `dir` in `n` elements, clamped at node "0".
-Structure cantilever(const Vec3& dir, double L, int n, const Section& sec, BeamTheory th = BeamTheory::kEulerBernoulli) {
+Structure cantilever(const Vec3& dir, double L, int n, const Section& sec,
+                     BeamTheory th = BeamTheory::kEulerBernoulli) {
   Structure s;
   const int m = s.add_material(kSteel);
   const int c = s.add_section(sec);
@@ -54,7 +55,8 @@ TEST(Cantilever, TipDeflectionRotationAxialAndTorsion) {
   EXPECT_NEAR(tz(4), -P * L * L / (2 * E * sec.Iy), 1e-10 * std::abs(tz(4)));
   EXPECT_NEAR(sol.cases[1].displacement[4](0), P * L / (E * sec.A), 1e-10 * P * L / (E * sec.A));
   EXPECT_NEAR(sol.cases[2].displacement[4](3), T * L / (G * sec.J), 1e-10 * T * L / (G * sec.J));
-  EXPECT_NEAR(sol.cases[3].displacement[4](1), P * L * L * L / (3 * E * sec.Iz), 1e-10 * P * L * L * L / (3 * E * sec.Iz));
+  EXPECT_NEAR(sol.cases[3].displacement[4](1), P * L * L * L / (3 * E * sec.Iz),
+              1e-10 * P * L * L * L / (3 * E * sec.Iz));
   EXPECT_NEAR(sol.cases[3].displacement[4](5), P * L * L / (2 * E * sec.Iz), 1e-10 * P * L * L / (2 * E * sec.Iz));
   // Reaction at the clamp: -P and the moment P L.
   EXPECT_NEAR(sol.cases[0].reaction[0](2), -P, 1e-9 * P);
@@ -278,7 +280,8 @@ TEST(Frame, AssembledMatricesAreSymmetricAndRigidMotionIsFree) {
   // The unsupported assembly has the six rigid-body motions as its null space.
   for (int k = 0; k < 6; ++k) {
     VecX u(s.num_dofs());
-    for (size_t n = 0; n < s.nodes().size(); ++n) u.segment<6>(6 * n) = rigid_transfer(s.nodes()[n].position) * Vec6::Unit(k);
+    for (size_t n = 0; n < s.nodes().size(); ++n)
+      u.segment<6>(6 * n) = rigid_transfer(s.nodes()[n].position) * Vec6::Unit(k);
     EXPECT_LT((Kd * u).norm(), 1e-9 * Kd.norm() * u.norm()) << "rigid mode " << k;
   }
   auto map = build_dof_map(s);

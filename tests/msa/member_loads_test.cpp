@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "kinestat/msa/static_analysis.hpp"
 #include "beam_line.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 #include "msa/assembly.hpp"
 
 namespace kinestat::msa {
@@ -114,7 +114,7 @@ TEST(MemberLoadSolve, TemperatureInAClampedBeamAndAFreeCantilever) {
     const LoadCaseResult& r = sol.cases[0];
     const double N = kSteel.E * sec.A * t.alpha * t.dT;
     EXPECT_NEAR(r.beam_end_forces[0](6), -N, kRel * N);  // axial force -E A alpha dT: compression
-    EXPECT_NEAR(r.reaction[0](0), N, kRel * N);           // the left wall pushes along +x
+    EXPECT_NEAR(r.reaction[0](0), N, kRel * N);          // the left wall pushes along +x
     EXPECT_NEAR(r.reaction[2](0), -N, kRel * N);
     const double Mz = kSteel.E * sec.Iz * t.alpha * t.dTy / t.hy;
     const double My = kSteel.E * sec.Iy * t.alpha * t.dTz / t.hz;
@@ -256,14 +256,16 @@ TEST(MemberLoadSolve, ValidationNamesTheItemAndTheFix) {
     return t.validate().message();
   };
   MemberLoad missing = uniform(3, Vec3(0, 0, -1));
-  expect_contains(message(missing), "frame.yaml:21: load case 'c': a member load is applied to a beam that does not exist");
+  expect_contains(message(missing),
+                  "frame.yaml:21: load case 'c': a member load is applied to a beam that does not exist");
   MemberLoad outside;
   outside.beam = 0;
   outside.type = MemberLoadType::kPoint;
   outside.a = 2.5;
   outside.force = Vec3(0, 0, 1);
-  expect_contains(message(outside), "frame.yaml:21: load case 'c': the member load on beam 'b0': a = 2.5 m lies outside "
-                                    "the beam (length 2 m)");
+  expect_contains(message(outside),
+                  "frame.yaml:21: load case 'c': the member load on beam 'b0': a = 2.5 m lies outside "
+                  "the beam (length 2 m)");
   MemberLoad reversed = outside;
   reversed.type = MemberLoadType::kTrapezoidal;
   reversed.a = 1.5;

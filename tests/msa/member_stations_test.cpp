@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "kinestat/msa/static_analysis.hpp"
 #include "beam_line.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::msa {
 namespace {
@@ -22,8 +22,8 @@ void expect_curve(const BeamStations& st, bool forces, int dof, const std::funct
   ASSERT_GT(scale, 0.0);
   for (size_t k = 0; k < st.x.size(); ++k) {
     const double got = forces ? st.forces[k](dof) : st.displacement[k](dof);
-    EXPECT_NEAR(got, exact(st.x[k]), rel * scale) << (forces ? "force " : "displacement ") << dof << " at x = "
-                                                  << st.x[k];
+    EXPECT_NEAR(got, exact(st.x[k]), rel * scale)
+        << (forces ? "force " : "displacement ") << dof << " at x = " << st.x[k];
   }
 }
 
@@ -54,16 +54,18 @@ TEST(MemberStations, SimplySupportedBeamDeflectionMomentAndShear) {
   ASSERT_EQ(st.x.size(), 9u);
   const double EI = kSteel.E * sec.Iy;
   // w(x) = -q x (L^3 - 2 L x^2 + x^3) / (24 EI): 5 q L^4 / 384 EI at midspan.
-  expect_curve(st, false, 2, [&](double x) { return -q * x * (L * L * L - 2 * L * x * x + x * x * x) / (24 * EI); },
-               kRel);
+  expect_curve(
+      st, false, 2, [&](double x) { return -q * x * (L * L * L - 2 * L * x * x + x * x * x) / (24 * EI); }, kRel);
   EXPECT_NEAR(st.displacement[4](2), -5 * q * L * L * L * L / (384 * EI), kRel * 5 * q * L * L * L * L / (384 * EI));
   // ry = -dw/dx.
-  expect_curve(st, false, 4, [&](double x) { return q * (L * L * L - 6 * L * x * x + 4 * x * x * x) / (24 * EI); },
-               kRel);
+  expect_curve(
+      st, false, 4, [&](double x) { return q * (L * L * L - 6 * L * x * x + 4 * x * x * x) / (24 * EI); }, kRel);
   // My = -q x (L - x) / 2 (sagging: -EI w''), q L^2 / 8 at midspan; Vz = q (x - L/2).
-  expect_curve(st, true, 4, [&](double x) { return -q * x * (L - x) / 2; }, kRel);
+  expect_curve(
+      st, true, 4, [&](double x) { return -q * x * (L - x) / 2; }, kRel);
   EXPECT_NEAR(st.forces[4](4), -q * L * L / 8, kRel * q * L * L / 8);
-  expect_curve(st, true, 2, [&](double x) { return q * (x - L / 2); }, kRel);
+  expect_curve(
+      st, true, 2, [&](double x) { return q * (x - L / 2); }, kRel);
   // The ends agree with the end forces: x = L is end 2, x = 0 the negated end 1.
   EXPECT_LT((st.forces[8] - sol.cases[0].beam_end_forces[0].tail<6>()).norm(), kRel * q * L * L);
   EXPECT_LT((st.forces[0] + sol.cases[0].beam_end_forces[0].head<6>()).norm(), kRel * q * L * L);
@@ -79,11 +81,15 @@ TEST(MemberStations, CantileverUnderSelfWeightAlongItsLength) {
   ASSERT_TRUE(sol.status.ok()) << sol.status.message();
   const BeamStations st = stations(s, sol, 0, 7);
   const double q = kSteel.density * sec.A * g, EI = kSteel.E * sec.Iy;
-  expect_curve(st, false, 2, [&](double x) { return -q * x * x * (6 * L * L - 4 * L * x + x * x) / (24 * EI); }, kRel);
-  expect_curve(st, false, 4, [&](double x) { return q * x * (3 * L * L - 3 * L * x + x * x) / (6 * EI); }, kRel);
+  expect_curve(
+      st, false, 2, [&](double x) { return -q * x * x * (6 * L * L - 4 * L * x + x * x) / (24 * EI); }, kRel);
+  expect_curve(
+      st, false, 4, [&](double x) { return q * x * (3 * L * L - 3 * L * x + x * x) / (6 * EI); }, kRel);
   // Hogging moment My = q (L - x)^2 / 2 on the +x face (-EI w'' with w'' < 0), shear Vz = -q (L - x).
-  expect_curve(st, true, 4, [&](double x) { return q * (L - x) * (L - x) / 2; }, kRel);
-  expect_curve(st, true, 2, [&](double x) { return -q * (L - x); }, kRel);
+  expect_curve(
+      st, true, 4, [&](double x) { return q * (L - x) * (L - x) / 2; }, kRel);
+  expect_curve(
+      st, true, 2, [&](double x) { return -q * (L - x); }, kRel);
 }
 
 TEST(MemberStations, TimoshenkoCantileverWithAPointLoadOnTheSpan) {
@@ -111,7 +117,8 @@ TEST(MemberStations, TimoshenkoCantileverWithAPointLoadOnTheSpan) {
   // The tip node agrees: the nodal solution is exact too.
   EXPECT_NEAR(sol.cases[0].displacement[1](1), v(L), kRel * v(L));
   // Shear P before a and 0 after it (the station at a reports the value just after the load).
-  expect_curve(st, true, 1, [&](double x) { return x < a ? P : 0.0; }, kRel);
+  expect_curve(
+      st, true, 1, [&](double x) { return x < a ? P : 0.0; }, kRel);
 }
 
 TEST(MemberStations, TemperatureBendsAFreeCantileverAndNotAClampedBeam) {
@@ -128,9 +135,12 @@ TEST(MemberStations, TemperatureBendsAFreeCantileverAndNotAClampedBeam) {
   ASSERT_TRUE(cs.status.ok()) << cs.status.message();
   const BeamStations st = stations(c, cs, 0, 5);
   const double ky = 1.2e-5 * 20.0 / 0.05, kz = 1.2e-5 * -15.0 / 0.1;
-  expect_curve(st, false, 0, [&](double x) { return 1.2e-5 * 30.0 * x; }, kRel);
-  expect_curve(st, false, 1, [&](double x) { return -ky * x * x / 2; }, kRel);
-  expect_curve(st, false, 2, [&](double x) { return -kz * x * x / 2; }, kRel);
+  expect_curve(
+      st, false, 0, [&](double x) { return 1.2e-5 * 30.0 * x; }, kRel);
+  expect_curve(
+      st, false, 1, [&](double x) { return -ky * x * x / 2; }, kRel);
+  expect_curve(
+      st, false, 2, [&](double x) { return -kz * x * x / 2; }, kRel);
   for (const Vec6& f : st.forces) EXPECT_LT(f.norm(), 1e-6) << "a free beam carries no force";
 
   Structure b = straight(L, 2, sec);  // clamped at both ends
@@ -144,7 +154,8 @@ TEST(MemberStations, TemperatureBendsAFreeCantileverAndNotAClampedBeam) {
   const BeamStations sb = stations(b, bs, 0, 5);
   for (const Vec6& u : sb.displacement) EXPECT_LT(u.norm(), 1e-15) << "held straight";
   const double N = kSteel.E * sec.A * 1.2e-5 * 30.0;
-  expect_curve(sb, true, 0, [&](double) { return -N; }, kRel);
+  expect_curve(
+      sb, true, 0, [&](double) { return -N; }, kRel);
 }
 
 TEST(MemberStations, ReleasedEndRotatesAwayFromItsNode) {
@@ -178,12 +189,13 @@ TEST(MemberStations, ReleasedEndRotatesAwayFromItsNode) {
   ASSERT_TRUE(sol.status.ok()) << sol.status.message();
   const BeamStations st = stations(s, sol, 0, 11);
   const double EI = kSteel.E * sec.Iz;
-  expect_curve(st, false, 1, [&](double x) { return -w * x * x * (3 * L * L - 5 * L * x + 2 * x * x) / (48 * EI); },
-               kRel);
+  expect_curve(
+      st, false, 1, [&](double x) { return -w * x * x * (3 * L * L - 5 * L * x + 2 * x * x) / (48 * EI); }, kRel);
   EXPECT_NEAR(st.displacement[10](5), w * L * L * L / (48 * EI), kRel * w * L * L * L / (48 * EI));
   EXPECT_NEAR(sol.cases[0].displacement[1](5), 0.0, 1e-15);
   // Mz = EI v'' = -w (3L^2 - 15Lx + 12x^2) / 24: -w L^2 / 8 at the clamp, 0 at the release.
-  expect_curve(st, true, 5, [&](double x) { return -w * (3 * L * L - 15 * L * x + 12 * x * x) / 24; }, kRel);
+  expect_curve(
+      st, true, 5, [&](double x) { return -w * (3 * L * L - 15 * L * x + 12 * x * x) / 24; }, kRel);
   EXPECT_NEAR(st.forces[10](5), 0.0, kRel * w * L * L);
 }
 

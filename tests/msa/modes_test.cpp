@@ -3,17 +3,16 @@
 // cantilever's effective mass, and the refusals.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
-#include <vector>
 #include <numbers>
 #include <string>
+#include <vector>
 
-
+#include "beam_line.hpp"
 #include "kinestat/elements/section.hpp"
 #include "kinestat/msa/modes.hpp"
-#include "beam_line.hpp"
 
 namespace kinestat::msa {
 namespace {

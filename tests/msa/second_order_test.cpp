@@ -10,17 +10,17 @@
 #include <string>
 #include <tuple>
 
+#include "beam_line.hpp"
 #include "kinestat/elements/section.hpp"
 #include "kinestat/msa/buckling.hpp"
 #include "kinestat/msa/static_analysis.hpp"
-#include "beam_line.hpp"
 
 namespace kinestat::msa {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kL = 2.0;     // m
-constexpr double kH = 100.0;   // N, lateral (global y) at the tip
+constexpr double kL = 2.0;    // m
+constexpr double kH = 100.0;  // N, lateral (global y) at the tip
 
 // A cantilever along x clamped at node 0, in n beams, with the axial force P at the tip (N, positive
 // in tension: +x) and the lateral H along y: bending in the x-y plane, about local z (the 20 x 30 mm
@@ -57,7 +57,7 @@ Solution second_order(const Structure& s) {
 }
 
 struct AmplificationCase {
-  double ratio;    // P / P_cr (Euler's fixed-free load), negative in compression
+  double ratio;  // P / P_cr (Euler's fixed-free load), negative in compression
   const char* name;
   double error16;  // measured relative error of the tip deflection with n = 16 (see below)
 };

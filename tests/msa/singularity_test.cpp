@@ -141,8 +141,8 @@ TEST(Singularity, ReleasedChainSwingsAboutItsHinge) {
   ASSERT_EQ(sol2.status.code(), StatusCode::kSingular);
   ASSERT_EQ(sol2.singularity.modes.size(), 2u);
   for (const auto& fm : sol2.singularity.modes) {
-    EXPECT_LT(std::abs(fm.node_motion[3](2)), 1e-9);   // B no longer moves along z
-    EXPECT_LT(std::abs(fm.node_motion[2](3)), 1e-9);   // nor does A'B rotate about x
+    EXPECT_LT(std::abs(fm.node_motion[3](2)), 1e-9);  // B no longer moves along z
+    EXPECT_LT(std::abs(fm.node_motion[2](3)), 1e-9);  // nor does A'B rotate about x
   }
 }
 

@@ -37,13 +37,15 @@ Structure cantilever() {
 TEST(StructureValidation, LoadsWhoseSumWouldOverflowAreRefused) {
   Structure s = cantilever();
   // Two loads of 1e308 N on B sum to inf: each is already beyond the range of a force.
-  s.add_load_case({"push", {{1, (Vec6() << 1e308, 0, 0, 0, 0, 0).finished(), "frame.yaml:12"},
-                            {1, (Vec6() << 1e308, 0, 0, 0, 0, 0).finished(), "frame.yaml:13"}},
-                   {}, "frame.yaml:10"});
+  s.add_load_case({"push",
+                   {{1, (Vec6() << 1e308, 0, 0, 0, 0, 0).finished(), "frame.yaml:12"},
+                    {1, (Vec6() << 1e308, 0, 0, 0, 0, 0).finished(), "frame.yaml:13"}},
+                   {},
+                   "frame.yaml:10"});
   const Status st = s.validate();
   ASSERT_EQ(st.code(), StatusCode::kInvalidInput);
-  EXPECT_EQ(st.message().rfind("frame.yaml:12: load case 'push': the load on node 'B', force = 1e+308 N is too large", 0),
-            0u)
+  EXPECT_EQ(
+      st.message().rfind("frame.yaml:12: load case 'push': the load on node 'B', force = 1e+308 N is too large", 0), 0u)
       << st.message();
   // A solve never sees it: the status says why.
   EXPECT_EQ(solve(s).status.code(), StatusCode::kInvalidInput);

@@ -122,8 +122,7 @@ TEST(TieReactions, AnUnbalancedSolveIsAnErrorNotAResult) {
   s.add_load_case({.name = "moment", .loads = {{2, (Vec6() << 0, 3, -1000, 1, 2, 3).finished()}}});
   const Solution sol = solve(s, opt);
   ASSERT_EQ(sol.status.code(), StatusCode::kInternal) << solve(s).cases[1].equilibrium_error;
-  EXPECT_NE(sol.status.message().find("loads and reactions do not balance"), std::string::npos)
-      << sol.status.message();
+  EXPECT_NE(sol.status.message().find("loads and reactions do not balance"), std::string::npos) << sol.status.message();
 }
 
 }  // namespace

@@ -39,8 +39,8 @@ TEST(FactorMemory, EstimateBoundsTheFactorAndMatchesCholmodsPeak) {
   ASSERT_TRUE(r.supernodal);
   const double values = 8.0 * static_cast<double>(r.nnz_factor);
   EXPECT_GT(r.factor_bytes, values);
-  EXPECT_LT(r.factor_bytes, 2.5 * values);  // indices and the supernodes' padding: 1.94 here
-  EXPECT_GT(r.memory_available_bytes, 0.0);  // read from /proc/meminfo
+  EXPECT_LT(r.factor_bytes, 2.5 * values);        // indices and the supernodes' padding: 1.94 here
+  EXPECT_GT(r.memory_available_bytes, 0.0);       // read from /proc/meminfo
   EXPECT_GT(r.factor_bytes, 0.9 * r.peak_bytes);  // 1.05 here
   EXPECT_LT(r.factor_bytes, 1.25 * r.peak_bytes);
 }

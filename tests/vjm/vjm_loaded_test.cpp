@@ -209,8 +209,7 @@ TEST(VjmLoaded, WrenchOnAFreeDirectionIsRefused) {
   const std::vector<Chain> c = {pendulum(kK, kKa, kL)};
   const StatusOr<PlatformState> s = platform_equilibrium_under_wrench(c, (Vec6() << 0, 0, 0, 0, 0, 1.0).finished());
   EXPECT_EQ(s.status().code(), StatusCode::kSingular);
-  EXPECT_NE(s.status().message().find("rotation about +z"), std::string::npos)
-      << s.status().message();
+  EXPECT_NE(s.status().message().find("rotation about +z"), std::string::npos) << s.status().message();
 }
 
 // Three legs of length 0.25 m with spring Kleg at their far ends, meeting at a point.
@@ -232,7 +231,8 @@ std::vector<Chain> three_legs(const Mat6& Kleg) {
 TEST(VjmLoaded, SmallWrenchGivesLinearCompliance) {
   // Three elastic legs meeting at a point: for a small wrench the displacement is C W to first order
   // (relative error of the order of the strain, ~1e-6 here).
-  const std::vector<Chain> legs = three_legs(cantilever_spring(steel(), circle_section(0.01), 0.25, BeamTheory::kEulerBernoulli));
+  const std::vector<Chain> legs =
+      three_legs(cantilever_spring(steel(), circle_section(0.01), 0.25, BeamTheory::kEulerBernoulli));
   const Vec6 W = (Vec6() << 10.0, -5.0, 8.0, 0.2, 0.1, -0.3).finished();
   StatusOr<PlatformState> s = platform_equilibrium_under_wrench(legs, W);
   ASSERT_TRUE(s.ok()) << s.status().message();
@@ -259,10 +259,13 @@ TEST(VjmLoaded, VeryStiffSpringsConvergeUnderAWrench) {
     // Displacements ~1e-10 m and rotations ~1e-5 rad: linear statics holds to ~1e-6.
     StatusOr<CartesianStiffness> K0 = platform_unloaded_stiffness(legs);
     const Vec6 lin = K0->compliance * W;
-    EXPECT_LT((s->displacement - lin).norm(), 1e-5 * lin.norm()) << s->displacement.transpose() << "\n" << lin.transpose();
+    EXPECT_LT((s->displacement - lin).norm(), 1e-5 * lin.norm()) << s->displacement.transpose() << "\n"
+                                                                 << lin.transpose();
     Vec6 sum = Vec6::Zero();
     for (const ChainState& c : s->chains) sum += c.wrench;
-    EXPECT_LT((sum - W).norm(), 1e-5 * W.norm()) << s->report.summary() << "\n" << sum.transpose() << "\n" << s->displacement.transpose();
+    EXPECT_LT((sum - W).norm(), 1e-5 * W.norm()) << s->report.summary() << "\n"
+                                                 << sum.transpose() << "\n"
+                                                 << s->displacement.transpose();
   }
 }
 

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "kinestat/core/frame.hpp"
-#include "vjm/bordered_system.hpp"
 #include "kinestat/vjm/stiffness.hpp"
+#include "vjm/bordered_system.hpp"
 #include "vjm_test_chains.hpp"
 
 namespace kinestat::vjm {
@@ -108,8 +108,7 @@ TEST(VjmStiffness, PendulumUnloadedHasClosedFormAndNamesRigidDirections) {
   EXPECT_EQ(K->status.code(), StatusCode::kSingular);
   EXPECT_EQ(K->rigid_directions.size(), 3u);
   EXPECT_NE(K->status.message().find("rigid"), std::string::npos);
-  EXPECT_NE(K->status.message().find("translation along +z"), std::string::npos)
-      << K->status.message();
+  EXPECT_NE(K->status.message().find("translation along +z"), std::string::npos) << K->status.message();
   ASSERT_EQ(K->free_directions.size(), 1u);
   EXPECT_NEAR(std::abs(K->free_directions[0][5]), 1.0, 1e-12);  // rotation about z
 }

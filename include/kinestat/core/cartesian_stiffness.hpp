@@ -28,8 +28,9 @@ struct CartesianStiffness {
   // directions and is valid only when compliance_defined.
   Mat6 stiffness = Mat6::Zero();
   Mat6 compliance = Mat6::Zero();
-  bool stiffness_defined = false;   // no rigid direction: `stiffness` is the whole stiffness
-  bool compliance_defined = false;  // no free direction: `compliance` is the whole compliance, K C = I off rigid directions
+  bool stiffness_defined = false;  // no rigid direction: `stiffness` is the whole stiffness
+  bool compliance_defined =
+      false;  // no free direction: `compliance` is the whole compliance, K C = I off rigid directions
   std::vector<Vec6> free_directions;   // unit twists with zero stiffness (the point moves freely)
   std::vector<Vec6> rigid_directions;  // unit twists with infinite stiffness (left out of `stiffness`)
 

@@ -14,24 +14,24 @@
 namespace kinestat {
 
 enum class Quantity {
-  kLength,                   // m: coordinates, dimensions, displacements
-  kAngle,                    // rad
-  kForce,                    // N
-  kMoment,                   // N m
-  kModulus,                  // Pa: E, G
-  kArea,                     // m^2
-  kInertia,                  // m^4: second moments, torsion constant
-  kTranslationalStiffness,   // N/m
-  kRotationalStiffness,      // N m/rad
-  kCompliance,               // m/N, 1/N, rad/(N m): any compliance term
-  kRatio,                    // dimensionless: coefficients, factors, Poisson's ratio
-  kDensity,                  // kg/m^3
-  kAcceleration,             // m/s^2: gravity
-  kForcePerLength,           // N/m: distributed loads on beams
-  kTemperature,              // K: temperature changes
-  kThermalExpansion,         // 1/K
-  kMass,                     // kg: nodal masses
-  kMassInertia,              // kg m^2: nodal rotary inertias
+  kLength,                  // m: coordinates, dimensions, displacements
+  kAngle,                   // rad
+  kForce,                   // N
+  kMoment,                  // N m
+  kModulus,                 // Pa: E, G
+  kArea,                    // m^2
+  kInertia,                 // m^4: second moments, torsion constant
+  kTranslationalStiffness,  // N/m
+  kRotationalStiffness,     // N m/rad
+  kCompliance,              // m/N, 1/N, rad/(N m): any compliance term
+  kRatio,                   // dimensionless: coefficients, factors, Poisson's ratio
+  kDensity,                 // kg/m^3
+  kAcceleration,            // m/s^2: gravity
+  kForcePerLength,          // N/m: distributed loads on beams
+  kTemperature,             // K: temperature changes
+  kThermalExpansion,        // 1/K
+  kMass,                    // kg: nodal masses
+  kMassInertia,             // kg m^2: nodal rotary inertias
 };
 
 struct QuantityRange {

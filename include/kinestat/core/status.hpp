@@ -13,10 +13,10 @@ namespace kinestat {
 
 enum class StatusCode {
   kOk = 0,
-  kInvalidInput,   // a model, mesh or option the user must fix (CLI exit status 2)
-  kSingular,       // the structure is a mechanism at this posture: some motion is free
-  kNotConverged,   // an iterative method stopped before its tolerance
-  kInternal,       // a library failure (out of memory in CHOLMOD, ...)
+  kInvalidInput,  // a model, mesh or option the user must fix (CLI exit status 2)
+  kSingular,      // the structure is a mechanism at this posture: some motion is free
+  kNotConverged,  // an iterative method stopped before its tolerance
+  kInternal,      // a library failure (out of memory in CHOLMOD, ...)
 };
 
 // "kInvalidInput", ...: the enumerator's name, for messages about the status itself.
@@ -59,7 +59,7 @@ namespace detail {
 template <class T>
 class [[nodiscard]] StatusOr {
  public:
-  StatusOr(T value) : value_(std::move(value)) {}  // NOLINT: implicit by design
+  StatusOr(T value) : value_(std::move(value)) {}         // NOLINT: implicit by design
   StatusOr(Status status) : status_(std::move(status)) {  // NOLINT
     if (status_.ok()) status_ = Status::Internal("StatusOr made from an OK status without a value");
   }

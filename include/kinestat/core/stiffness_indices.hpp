@@ -18,12 +18,12 @@ struct MatrixIndices {
   int det_sign = 0;
   double log10_abs_det = 0.0;
   double determinant = 0.0;
-  double trace = 0.0;           // eq. (8)
-  double norm_1 = 0.0;          // eq. (9): max column sum of |k_ij|
-  double norm_2 = 0.0;          // eq. (10): spectral norm, max |eigenvalue|
-  double norm_frobenius = 0.0;  // eq. (11)
-  double norm_inf = 0.0;        // induced infinity-norm: max row sum of |k_ij| (the paper's "Chebyshev" column)
-  double max_abs_entry = 0.0;   // eq. (12) as printed: max |k_ij|
+  double trace = 0.0;             // eq. (8)
+  double norm_1 = 0.0;            // eq. (9): max column sum of |k_ij|
+  double norm_2 = 0.0;            // eq. (10): spectral norm, max |eigenvalue|
+  double norm_frobenius = 0.0;    // eq. (11)
+  double norm_inf = 0.0;          // induced infinity-norm: max row sum of |k_ij| (the paper's "Chebyshev" column)
+  double max_abs_entry = 0.0;     // eq. (12) as printed: max |k_ij|
   double condition_number = 0.0;  // eq. (13) with the 2-norm: max|eig| / min|eig| (inf if singular)
   Vector eigenvalues = Vector::Zero(N == Eigen::Dynamic ? 0 : N);  // of the symmetric part, ascending
   double symmetry_error = 0.0;  // ||K - K^T||_F / ||K||_F (the indices assume symmetry)

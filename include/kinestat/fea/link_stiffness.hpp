@@ -37,8 +37,8 @@ namespace kinestat::fea {
 enum class ReferenceModel { kRigidCoupling, kStiffBody };
 
 struct LinkStiffnessOptions {
-  Region clamp;       // nodes fixed in ux, uy, uz (the link's origin)
-  Region reference;   // the reference end: coupled nodes, or the pseudo-rigid body's elements
+  Region clamp;      // nodes fixed in ux, uy, uz (the link's origin)
+  Region reference;  // the reference end: coupled nodes, or the pseudo-rigid body's elements
   ReferenceModel reference_model = ReferenceModel::kRigidCoupling;
   // E_body / E_link of the pseudo-rigid body. 1e4 leaves a relative compliance error of order 1e-4
   // and costs ~4 of the ~16 digits to conditioning; beyond ~1e8 the Cholesky pivot check rejects it.
@@ -63,14 +63,14 @@ inline constexpr double kLinkModeResidualLimit = 1e-6;
 
 // One natural vibration mode of the clamped link, mass-normalized: q' M q = 1 (M in kg, kg m, kg m^2).
 struct LinkMode {
-  double omega = 0.0;                   // rad/s
-  double frequency = 0.0;               // Hz, omega / (2 pi)
+  double omega = 0.0;      // rad/s
+  double frequency = 0.0;  // Hz, omega / (2 pi)
   // Motion (u, theta) of the reference point in the mode (m/sqrt(kg), rad/sqrt(kg)): the reference
   // node's dofs (rigid coupling) or the stiff body's least-squares rigid motion.
   Vec6 reference_motion = Vec6::Zero();
-  Vec3 participation = Vec3::Zero();    // Gamma_d = q' M r_d, r_d: the link translated by 1 m along d (sqrt(kg))
-  Vec3 effective_mass = Vec3::Zero();   // Gamma_d^2 (kg): of a base excitation along d
-  double residual = 0.0;                // ||K q - omega^2 M q|| / ||K q|| on the solved dofs
+  Vec3 participation = Vec3::Zero();   // Gamma_d = q' M r_d, r_d: the link translated by 1 m along d (sqrt(kg))
+  Vec3 effective_mass = Vec3::Zero();  // Gamma_d^2 (kg): of a base excitation along d
+  double residual = 0.0;               // ||K q - omega^2 M q|| / ||K q|| on the solved dofs
   // Node displacements of the mass-normalized mode (m/sqrt(kg)); empty unless keep_fields.
   std::vector<Vec3> shape;
 };
@@ -91,7 +91,7 @@ struct LinkStiffness {
   int num_clamped_nodes = 0, num_reference_nodes = 0, num_stiff_elements = 0;
   ReferenceModel reference_model = ReferenceModel::kRigidCoupling;
   solver::FactorizationReport factorization;  // analysis and factorization times, nnz(L), flops
-  solver::SolveReport solve;                   // per load case: iterations and relative residual
+  solver::SolveReport solve;                  // per load case: iterations and relative residual
   std::string backend;
   // Elements each MPI rank assembled (a distributed backend: docs/fea.md, "Large meshes"); one entry,
   // all elements, on one process.

@@ -25,9 +25,9 @@ struct RichardsonEstimate {
 StatusOr<RichardsonEstimate> richardson_estimate(const std::vector<double>& h, const std::vector<double>& f);
 
 struct ConvergenceStudy {
-  std::vector<double> sizes;          // m, as requested
+  std::vector<double> sizes;  // m, as requested
   std::vector<int> num_dofs;
-  std::vector<Mat6> compliance;       // per size, SI units (see LinkStiffness)
+  std::vector<Mat6> compliance;                        // per size, SI units (see LinkStiffness)
   std::vector<StatusOr<RichardsonEstimate>> diagonal;  // per dof ux..rz of the compliance
 };
 

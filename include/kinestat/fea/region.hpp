@@ -13,8 +13,8 @@ namespace kinestat::fea {
 struct Region {
   enum class Kind { kPlane, kBox };
   Kind kind = Kind::kPlane;
-  Vec3 point = Vec3::Zero();         // plane: a point on it
-  Vec3 normal = Vec3::UnitX();       // plane: its normal (any length)
+  Vec3 point = Vec3::Zero();                  // plane: a point on it
+  Vec3 normal = Vec3::UnitX();                // plane: its normal (any length)
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // box corners
   // Distance (m) within which a node belongs to the plane or box; 0 = 1e-6 x the mesh's
   // bounding-box diagonal (round-off of mesh coordinates).

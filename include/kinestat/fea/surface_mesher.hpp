@@ -12,7 +12,7 @@
 namespace kinestat::fea {
 
 struct MeshingOptions {
-  double unit_scale = 1e-3;        // file length unit in metres (1e-3: the file is in mm)
+  double unit_scale = 1e-3;  // file length unit in metres (1e-3: the file is in mm)
   // Criteria in metres (after scaling). size: bound on the tetrahedra's circumradius and on
   // surface facets and feature edges; facet_distance: surface approximation error (0 = size / 10).
   double size = 5e-3;
@@ -32,8 +32,8 @@ struct MeshingOptions {
 struct SurfaceInfo {
   int triangles = 0;
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // bounding box, in the file's unit
-  double volume = 0.0;  // enclosed volume, file unit^3
-  double area = 0.0;    // surface area, file unit^2
+  double volume = 0.0;                        // enclosed volume, file unit^3
+  double area = 0.0;                          // surface area, file unit^2
 };
 
 // The number of tetrahedra Mesh_3 makes for `surface` at element size `size` (m), to refuse a mesh

@@ -14,13 +14,12 @@
 
 namespace kinestat::fea {
 
-inline constexpr std::array<std::array<int, 2>, 6> kTet10Edges = {
-    {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}};
+inline constexpr std::array<std::array<int, 2>, 6> kTet10Edges = {{{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}};
 
 struct TetMesh {
   std::vector<Vec3> nodes;
-  int nodes_per_element = 4;        // 4 (linear) or 10 (quadratic)
-  std::vector<int> connectivity;    // nodes_per_element entries per element
+  int nodes_per_element = 4;      // 4 (linear) or 10 (quadratic)
+  std::vector<int> connectivity;  // nodes_per_element entries per element
 
   int num_nodes() const { return static_cast<int>(nodes.size()); }
   int num_elements() const {

@@ -23,10 +23,10 @@ struct Frame3ddAnalysis {
   // The modal data that ends the file (Frame3DD's dynamic modes), for `kinestat modes`. The extra
   // node masses and inertias are in the Structure (its nodal masses), and so are the extra element
   // masses, as Frame3DD treats them: half on each end node's translations.
-  int modes = 0;                  // the number of desired dynamic modes (0: no modal data)
-  std::string modes_source;       // "FILE:LINE" of the count
-  bool lumped = false;            // the lumped mass flag is 1 (0: consistent masses)
-  std::string lumped_source;      // "FILE:LINE" of the flag
+  int modes = 0;              // the number of desired dynamic modes (0: no modal data)
+  std::string modes_source;   // "FILE:LINE" of the count
+  bool lumped = false;        // the lumped mass flag is 1 (0: consistent masses)
+  std::string lumped_source;  // "FILE:LINE" of the flag
   // Read and checked, not used by kinestat's eigensolver (docs/stability-and-modes.md): Frame3DD's
   // method (1 subspace Jacobi, 2 Stodola), its convergence tolerance, its shift (1/s^2, for
   // unrestrained structures), and its matrix condensation method (0 none, 1 static, 2 Guyan,
@@ -48,8 +48,7 @@ struct Frame3ddAnalysis {
 bool is_frame3dd_file(const std::string& path);
 
 StatusOr<msa::Structure> read_frame3dd(const std::string& path, const FileUnits& units,
-                                       std::vector<std::string>* notes = nullptr,
-                                       Frame3ddAnalysis* analysis = nullptr);
+                                       std::vector<std::string>* notes = nullptr, Frame3ddAnalysis* analysis = nullptr);
 
 // The same from text in memory; `display_name` stands for the file name in messages.
 StatusOr<msa::Structure> read_frame3dd_string(const std::string& text, const std::string& display_name,

@@ -26,7 +26,7 @@ struct IdentificationTargets {
 // Problems give kInvalidInput "FILE:LINE: ITEM: what is wrong; what to do".
 StatusOr<IdentificationTargets> read_identification_targets_yaml(const std::string& path);
 StatusOr<IdentificationTargets> read_identification_targets_yaml_string(const std::string& text,
-                                                                         const std::string& display_name);
+                                                                        const std::string& display_name);
 
 // The file's name of an input (`actuator_stiffness`, ...).
 const char* input_key(mechanisms::OrthoglideInput input);

@@ -33,12 +33,12 @@ struct PlotField2D {
 };
 
 struct PlotOptions {
-  std::string title;           // robot and mode, e.g. "five-bar ++ up: min translational stiffness"; '\n' breaks lines
+  std::string title;  // robot and mode, e.g. "five-bar ++ up: min translational stiffness"; '\n' breaks lines
   std::string x_label = "x (mm)";
   std::string y_label = "y (mm)";
-  std::string colorbar_label;  // quantity and unit, e.g. "k_t,min (N/mm)"
+  std::string colorbar_label;      // quantity and unit, e.g. "k_t,min (N/mm)"
   int width = 1000, height = 800;  // pixels of the whole image
-  bool log_scale = false;      // colour scale in log10 (positive fields)
+  bool log_scale = false;          // colour scale in log10 (positive fields)
   // Fixed ends of the colour scale (plot units; values beyond take the end colours); default: the
   // range of the values.
   std::optional<std::array<double, 2>> colour_range;

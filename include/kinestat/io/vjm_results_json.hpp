@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "kinestat/core/types.hpp"
 #include "kinestat/core/cartesian_stiffness.hpp"
+#include "kinestat/core/types.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
@@ -17,9 +17,9 @@ namespace kinestat::io {
 struct VjmResults {
   std::string model_file, title;
   int num_chains = 0;
-  Vec3 tool_point = Vec3::Zero();           // m
+  Vec3 tool_point = Vec3::Zero();  // m
   CartesianStiffness unloaded;
-  std::optional<vjm::PlatformState> state;       // empty: no load given
+  std::optional<vjm::PlatformState> state;   // empty: no load given
   std::optional<CartesianStiffness> loaded;  // empty: no load, or its stiffness failed
 };
 

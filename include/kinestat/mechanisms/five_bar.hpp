@@ -46,13 +46,13 @@ struct WorkingMode {
   int sign2 = 1;
   bool operator==(const WorkingMode&) const = default;
 };
-std::string to_string(WorkingMode m);  // "+-" etc.
+std::string to_string(WorkingMode m);                                        // "+-" etc.
 std::optional<WorkingMode> working_mode_from_name(const std::string& name);  // "++", "+-", "-+", "--"
 
 // Assembly mode of the direct kinematics (eq. (26)): kUp has P to the left of B1->B2,
 // (B2 - B1) x (P - B1) > 0, which is the solution of larger y whenever x_B1 < x_B2 (always for
-// r1 < r3; for r1 = r3 all but theta1 = 0, theta2 = 180 deg). Unlike "larger y" it does not swap along x_B1 = x_B2, where the two
-// solutions have equal y and eq. (23)-(24) divide by zero; it changes only through a parallel
+// r1 < r3; for r1 = r3 all but theta1 = 0, theta2 = 180 deg). Unlike "larger y" it does not swap along x_B1 = x_B2,
+// where the two solutions have equal y and eq. (23)-(24) divide by zero; it changes only through a parallel
 // singularity, as an assembly mode should.
 enum class Assembly { kUp, kDown };
 const char* to_string(Assembly a);
@@ -114,8 +114,7 @@ inline constexpr int kFiveBarPlatformNode = 4;
 // (joint_stiffness in the global frame, z the joint axis); nodes 1 and 8 fully fixed (blocked
 // actuators); load cases "Fx" and "Fy" of `load` N at node 5, the report node.
 msa::Structure make_five_bar_structure(const FiveBarParams& p, const FiveBarPosture& q);
-StatusOr<msa::Structure> make_five_bar_structure(const FiveBarParams& p, double theta1, double theta2,
-                                                 Assembly a);
+StatusOr<msa::Structure> make_five_bar_structure(const FiveBarParams& p, double theta1, double theta2, Assembly a);
 StatusOr<msa::Structure> make_five_bar_structure(const FiveBarParams& p, const Vec2& point, WorkingMode mode);
 
 }  // namespace kinestat::mechanisms

@@ -30,8 +30,8 @@ struct FiveBarDesignSweepOptions {
   int steps = 10;   // designs per swept length (a range of one value has one design)
   MapGrid region;   // the postures of every design (make_map_grid), the plane of P
   double near_singular_threshold = MapOptions{}.near_singular_threshold;
-  std::optional<double> min_stiffness;  // N/m, on k_t_min (the weakest direction, workspace_map.hpp)
-  int threads = 0;                      // 0: all cores
+  std::optional<double> min_stiffness;              // N/m, on k_t_min (the weakest direction, workspace_map.hpp)
+  int threads = 0;                                  // 0: all cores
   double max_postures = kDefaultMaxDesignPostures;  // designs x region points; refused above
   // The kernel of one design; empty: make_five_bar_kernel (the sweep kernel).
   std::function<std::unique_ptr<PostureKernel>(const FiveBarKernelOptions&)> make_kernel;
@@ -73,12 +73,14 @@ struct FiveBarDesignSweep {
   MapGrid region;
   std::string description;  // the first design's kernel: method, working and assembly mode
   double near_singular_threshold = 0.0;
-  std::optional<double> min_stiffness;  // N/m
+  std::optional<double> min_stiffness;       // N/m
   std::vector<FiveBarDesignResult> results;  // in design grid order (r1 fastest)
   // The best design by better_design; of equal ones the first in grid order.
   std::size_t best = 0;
   // Shares of the region's points, in [0, 1].
-  double share(std::size_t count) const { return static_cast<double>(count) / static_cast<double>(region.num_points()); }
+  double share(std::size_t count) const {
+    return static_cast<double>(count) / static_cast<double>(region.num_points());
+  }
 };
 
 // kInvalidInput naming the range ("r1", "r2"), the step count or the region when they are not usable.

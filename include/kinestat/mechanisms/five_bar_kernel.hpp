@@ -11,10 +11,10 @@ namespace kinestat::mechanisms {
 
 struct FiveBarKernelOptions {
   FiveBarParams params;
-  WorkingMode mode;                  // the inverse kinematics' root per leg (five_bar.hpp)
-  Assembly assembly = Assembly::kUp; // points whose posture has the other assembly mode are unreachable
+  WorkingMode mode;                   // the inverse kinematics' root per leg (five_bar.hpp)
+  Assembly assembly = Assembly::kUp;  // points whose posture has the other assembly mode are unreachable
   StiffnessMethod method = StiffnessMethod::kMsa;
-  Vec6 load = Vec6::Zero();          // wrench at P (N, N m) for PostureResult::deflection = C load
+  Vec6 load = Vec6::Zero();  // wrench at P (N, N m) for PostureResult::deflection = C load
 };
 
 // kInvalidInput naming the bad value: the parameters (validate(FiveBarParams)) and the load's

@@ -22,8 +22,8 @@ namespace kinestat::mechanisms {
 
 // ---- Q-axis, section 3.2 (L = 1). chi = -p / sqrt(1 - 2 p^2) parameterises the bisector; the
 // singularity-free part is chi in (-1/2, 1), where p and rho decrease monotonically with chi.
-double unit_q_axis_position(double chi);   // p = -chi / sqrt(1 + 2 chi^2)
-double unit_q_axis_joint(double chi);      // rho = (1 - chi) / sqrt(1 + 2 chi^2)
+double unit_q_axis_position(double chi);  // p = -chi / sqrt(1 + 2 chi^2)
+double unit_q_axis_joint(double chi);     // rho = (1 - chi) / sqrt(1 + 2 chi^2)
 double unit_q_axis_chi_from_position(double p);
 // Inverse of rho(chi) on (-1/2, 1): chi = (1 - rho^2) / (1 + rho sqrt(3 - 2 rho^2)), an algebraically
 // equal form of the root (rho sqrt(3 - 2 rho^2) - 1) / (2 rho^2 - 1) without the 0/0 at rho^2 = 1/2.
@@ -85,8 +85,7 @@ struct WorkspaceSearch {
 };
 // W_rho = {rho in [rho_min, rho_max]^3, rho_x + rho_y + rho_z <= joint_sum_limit} (m).
 WorkspaceSearch search_joint_space(const OrthoglideGeometry& g, double rho_min, double rho_max,
-                                   double joint_sum_limit = std::numeric_limits<double>::infinity(),
-                                   int n = 101);
+                                   double joint_sum_limit = std::numeric_limits<double>::infinity(), int n = 101);
 // The cube [p_min, p_max]^3 (m) in the working mode.
 WorkspaceSearch search_cube(const OrthoglideGeometry& g, double p_min, double p_max, int n = 101);
 
@@ -120,11 +119,11 @@ DexterousVolumes unit_dexterous_volumes(double mu_low, double mu_high, int n);
 // (rho_min, rho_min, t) at t ~ 0.45, short of R-. Along that edge it competes with the vertex
 // Q- = (rho_min, rho_min, rho_min) and stays the lower one up to rho_min = 0.2398: the true switch.
 struct MinimumSwitchPoints {
-  double rho_sr = 0.0, mu_sr = 0.0;      // S- | R- by the formulas
-  double rho_rq = 0.0, mu_rq = 0.0;      // R- | Q- by the formulas
-  double search_mu_at_rho_sr = 0.0;      // numerical search (search_joint_space) at rho_sr: the true mu_min
-  double search_mu_at_rho_rq = 0.0;      // ... at rho_rq
-  double rho_q = 0.0, mu_q = 0.0;        // the true switch to Q- and the factor there (Q-'s)
+  double rho_sr = 0.0, mu_sr = 0.0;  // S- | R- by the formulas
+  double rho_rq = 0.0, mu_rq = 0.0;  // R- | Q- by the formulas
+  double search_mu_at_rho_sr = 0.0;  // numerical search (search_joint_space) at rho_sr: the true mu_min
+  double search_mu_at_rho_rq = 0.0;  // ... at rho_rq
+  double rho_q = 0.0, mu_q = 0.0;    // the true switch to Q- and the factor there (Q-'s)
 };
 // `n`: grid of the numerical searches (search_joint_space).
 MinimumSwitchPoints unit_minimum_switch_points(int n = 41);
@@ -158,8 +157,8 @@ StatusOr<OrthoglideDesign> design_orthoglide(int strategy, double mu, double cub
 // on all three joints); the factors are those of the postures actually reached (direct kinematics).
 // With +5 and +10 mm the prototype's cube goes from [0.50, 2.00] to [0.507, 2.419] and [0.515, 3.420]:
 // the paper's upper bounds 2.42 and 3.42 (docs/orthoglide.md).
-WorkspaceSearch search_cube_with_encoder_offset(const OrthoglideGeometry& g, double p_min, double p_max,
-                                                double offset, int n = 101);
+WorkspaceSearch search_cube_with_encoder_offset(const OrthoglideGeometry& g, double p_min, double p_max, double offset,
+                                                int n = 101);
 
 // Numerical check of a design: search_joint_space (with its software limit), search_cube, and the cube
 // under each of `encoder_offsets` (m).
@@ -172,16 +171,17 @@ struct OrthoglideDesignCheck {
   WorkspaceSearch cube;
   std::vector<EncoderOffsetEffect> encoder_offsets;
 };
-OrthoglideDesignCheck check_design(const OrthoglideDesign& d, int n = 101, const std::vector<double>& encoder_offsets = {});
+OrthoglideDesignCheck check_design(const OrthoglideDesign& d, int n = 101,
+                                   const std::vector<double>& encoder_offsets = {});
 
 // The joint-bounded workspace sampled on a regular n x n x n joint grid (index i + n (j + n k) for
 // rho_x, rho_y, rho_z), mapped by the working-branch direct kinematics: for VTK output.
 struct JointWorkspaceSamples {
   int n = 0;
-  std::vector<Vec3> rho;                     // m
-  std::vector<Vec3> p;                       // m (zero where !valid)
+  std::vector<Vec3> rho;  // m
+  std::vector<Vec3> p;    // m (zero where !valid)
   std::vector<VelocityTransmission> factors;
-  std::vector<char> valid;                   // assembly exists, regular, and within the software limit
+  std::vector<char> valid;  // assembly exists, regular, and within the software limit
 };
 JointWorkspaceSamples sample_joint_workspace(const OrthoglideDesign& d, int n);
 

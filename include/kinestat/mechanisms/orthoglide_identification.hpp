@@ -44,7 +44,7 @@ struct ComplianceTarget {
 };
 
 struct OrthoglideIdentification {
-  OrthoglideStiffnessModel model;         // the start model with the identified inputs
+  OrthoglideStiffnessModel model;  // the start model with the identified inputs
   // Per input, in the order asked: the start and identified values, SI (the bar scale is relative to
   // the start model's section, so it starts at 1).
   std::vector<double> start_values, values;

@@ -65,10 +65,10 @@ StatusOr<double> inverse_jacobian_determinant(const Vec3& p, const Vec3& rho);
 // lambda(e) = ||J^-1 e||^-1 (section 4.3), so over all e it spans [1/sigma_max, 1/sigma_min].
 struct VelocityTransmission {
   Vec3 singular_values = Vec3::Zero();  // of J^-1, descending
-  double mu_min = 0.0;            // 1 / sigma_max
-  double mu_max = 0.0;            // 1 / sigma_min (+inf at a parallel singularity)
-  double manipulability = 0.0;    // w = sigma_1 sigma_2 sigma_3 = |det J^-1| (section 4.1)
-  double condition_number = 0.0;  // sigma_max / sigma_min (section 4.2; +inf when singular)
+  double mu_min = 0.0;                  // 1 / sigma_max
+  double mu_max = 0.0;                  // 1 / sigma_min (+inf at a parallel singularity)
+  double manipulability = 0.0;          // w = sigma_1 sigma_2 sigma_3 = |det J^-1| (section 4.1)
+  double condition_number = 0.0;        // sigma_max / sigma_min (section 4.2; +inf when singular)
 };
 VelocityTransmission velocity_transmission(const Mat3& inverse_jacobian);
 

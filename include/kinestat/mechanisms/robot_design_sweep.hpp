@@ -63,8 +63,8 @@ struct RobotDesignSweepOptions {
 
 // One design: its parameter values, whether its model and map were built, and its measures.
 struct RobotDesignResult {
-  std::vector<double> values;  // per parameter, in its units
-  Status status;               // Ok, or why the design has no map (the factory's or the map's message)
+  std::vector<double> values;      // per parameter, in its units
+  Status status;                   // Ok, or why the design has no map (the factory's or the map's message)
   double reachable_measure = 0.0;  // m^2 or m^3 (WorkspaceMap::reachable_measure)
   double stiff_measure = 0.0;      // m^2 or m^3: points with k_t_min >= min_stiffness (WorkspaceMap::stiff_measure)
   std::size_t reachable_points = 0, stiff_points = 0;

@@ -49,8 +49,8 @@ int coordinate_count(RobotJointType t);
 
 // A 6x6 spring at the chain's current point (eq. (1) of Pashkevich et al. 2009: a virtual spring).
 struct RobotSpring {
-  std::string label;        // names it in messages: "leg 2 link 1"
-  Mat6 stiffness;           // dofs ux uy uz rx ry rz along `axes`: N/m, N/rad, N m/m, N m/rad
+  std::string label;             // names it in messages: "leg 2 link 1"
+  Mat6 stiffness;                // dofs ux uy uz rx ry rz along `axes`: N/m, N/rad, N m/m, N m/rad
   Mat3 axes = Mat3::Identity();  // columns: the spring's x, y, z in base axes at home (orthonormal)
   // A link's `fea:` spring (docs/robots.md): the FEA of a mesh whose axes are `axes` and whose
   // reference point is the link's end; `stiffness` is NaN (refused by make_robot_model) until
@@ -63,7 +63,7 @@ struct RobotSpring {
 struct RobotJoint {
   std::string label;  // "leg 2 joint 3 (universal)"
   RobotJointType type = RobotJointType::kRevolute;
-  Vec3 at = Vec3::Zero();  // a point of its axes at home (m)
+  Vec3 at = Vec3::Zero();                                                 // a point of its axes at home (m)
   std::array<Vec3, 3> axes{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};  // unit, at home
   Vec3 to = Vec3::Zero();  // kParallelogram: the second hinge's point at home
   bool actuated = false;   // the first coordinate is driven by a motor
@@ -96,7 +96,7 @@ struct RobotLink {
 };
 
 struct RobotLeg {
-  std::string name;  // "leg 2"
+  std::string name;                                        // "leg 2"
   std::vector<std::variant<RobotJoint, RobotLink>> items;  // from the base to the platform
 };
 
@@ -152,8 +152,8 @@ struct RobotBlockFactors {
   int equations = 6, platform = 6, size = 0;
   Small S;
   Eigen::PartialPivLU<Small> lu;
-  bool regular = false;  // every R and S of non-zero pivots
-  double norm = 0.0;     // the matrix's 1-norm
+  bool regular = false;       // every R and S of non-zero pivots
+  double norm = 0.0;          // the matrix's 1-norm
   VecX x, v, sign, old_sign;  // scratch of the solves and the condition estimate
 };
 
@@ -162,9 +162,9 @@ struct RobotBlockFactors {
 struct RobotData {
   VecX residual, step;
   MatX jacobian;
-  std::vector<VecX> leg_q;                        // each leg's coordinates
+  std::vector<VecX> leg_q;                         // each leg's coordinates
   std::vector<vjm::ChainJacobians> leg_jacobians;  // each leg's kinematic chain at them
-  VecX no_theta;                                  // the kinematic chains have no springs
+  VecX no_theta;                                   // the kinematic chains have no springs
   // The length-scaled Jacobians (Newton's and robot_jacobians') and their factorizations.
   VecX row_scale, column_scale;
   std::vector<int> direct_columns;
@@ -178,9 +178,9 @@ RobotData make_robot_data(const RobotModel& model);
 
 enum class KinematicsStatus : std::uint8_t {
   kOk,
-  kUnreachable,   // no closure near the start on this branch (out of reach, or a joint limit)
-  kSingular,      // the closure equations lose rank (a Type 1 or Type 2 singularity)
-  kOtherBranch,   // closed, but on another working or assembly mode than home's
+  kUnreachable,  // no closure near the start on this branch (out of reach, or a joint limit)
+  kSingular,     // the closure equations lose rank (a Type 1 or Type 2 singularity)
+  kOtherBranch,  // closed, but on another working or assembly mode than home's
 };
 const char* to_string(KinematicsStatus s);
 

@@ -21,15 +21,15 @@ namespace kinestat::mechanisms {
 // A regular grid, x fastest: point i + nx (j + ny k) is origin + (i dx, j dy, k dz). An axis with
 // one point is a slice (a 2D map of a 3D robot, or the five-bar's plane z = 0).
 struct MapGrid {
-  Vec3 origin = Vec3::Zero();                // m (rad on an angular axis)
-  Vec3 spacing = Vec3::Ones();               // m (rad), positive
-  std::array<int, 3> dimensions{1, 1, 1};   // points per axis
+  Vec3 origin = Vec3::Zero();              // m (rad on an angular axis)
+  Vec3 spacing = Vec3::Ones();             // m (rad), positive
+  std::array<int, 3> dimensions{1, 1, 1};  // points per axis
   // What the axes are: lengths (m) by default; a robot's orientation map has angles (rad) named
   // rx, ry, rz. Writers label and scale each axis by axis_unit / axis_display (below).
   std::array<bool, 3> angular{false, false, false};
   std::array<const char*, 3> names{"x", "y", "z"};
   std::size_t num_points() const;
-  int num_varying_axes() const;              // axes with more than one point: 2 (a plane) or 3 (a box)
+  int num_varying_axes() const;  // axes with more than one point: 2 (a plane) or 3 (a box)
   Vec3 point(std::size_t index) const;
   // The grid index of the k-th point of the serpentine path through the grid: x rows alternately
   // forward and backward, the rows of a z layer alternately up and down, so that consecutive points
@@ -71,21 +71,21 @@ StatusOr<MapGrid> make_map_grid(const std::array<MapRange, 3>& ranges, double st
 // C_tt^-1 = K_tt - K_tr K_rr^-1 K_rt (and of C_rr^-1), not of the block K_tt, which is the
 // stiffness with the rotation blocked and overestimates (docs/maps.md). Symmetric parts throughout.
 enum class MapField : int {
-  kTranslationalMin,     // smallest eigenvalue of C_tt^-1: stiffness in the weakest direction (N/m)
-  kTranslationalMax,     // largest eigenvalue of C_tt^-1 (N/m)
-  kRotationalMin,        // smallest eigenvalue of C_rr^-1 (N m/rad)
-  kRotationalMax,        // largest eigenvalue of C_rr^-1 (N m/rad)
-  kTrace,                // tr K, eq. (8)
-  kNorm1,                // max column sum of |k_ij|, eq. (9)
-  kNorm2,                // spectral norm, eq. (10)
-  kNormFrobenius,        // eq. (11)
-  kNormInf,              // max row sum of |k_ij| (the paper's Chebyshev norm)
-  kConditionNumber,      // max|eig| / min|eig| of K, eq. (13)
-  kLog10Det,             // log10 det K, eq. (7) (det K in SI spans decades: 1e13 to 1e28 in the examples)
+  kTranslationalMin,       // smallest eigenvalue of C_tt^-1: stiffness in the weakest direction (N/m)
+  kTranslationalMax,       // largest eigenvalue of C_tt^-1 (N/m)
+  kRotationalMin,          // smallest eigenvalue of C_rr^-1 (N m/rad)
+  kRotationalMax,          // largest eigenvalue of C_rr^-1 (N m/rad)
+  kTrace,                  // tr K, eq. (8)
+  kNorm1,                  // max column sum of |k_ij|, eq. (9)
+  kNorm2,                  // spectral norm, eq. (10)
+  kNormFrobenius,          // eq. (11)
+  kNormInf,                // max row sum of |k_ij| (the paper's Chebyshev norm)
+  kConditionNumber,        // max|eig| / min|eig| of K, eq. (13)
+  kLog10Det,               // log10 det K, eq. (7) (det K in SI spans decades: 1e13 to 1e28 in the examples)
   kDeflectionTranslation,  // |C w| translational part under the load w (m)
   kDeflectionRotation,     // |C w| rotational part (rad)
-  kSingularityMeasure,   // the kernel's distance to a singularity (1), 0 at a singularity
-  kNewtonIterations,     // loaded mode: the equilibrium's Newton steps (PostureResult::newton_iterations)
+  kSingularityMeasure,     // the kernel's distance to a singularity (1), 0 at a singularity
+  kNewtonIterations,       // loaded mode: the equilibrium's Newton steps (PostureResult::newton_iterations)
 };
 inline constexpr int kNumMapFields = 15;
 
@@ -103,7 +103,7 @@ std::string field_names();
 std::array<double, kNumMapFields> point_fields(const PostureResult& r);
 
 struct FieldSummary {
-  std::size_t count = 0;      // points with a value
+  std::size_t count = 0;  // points with a value
   static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   double min = kNaN, max = kNaN, mean = kNaN;
   Vec3 argmin = Vec3::Constant(kNaN);  // where the minimum sits (m); the first such point in grid order
@@ -149,7 +149,7 @@ struct WorkspaceMap {
   std::string description;  // the kernel's (robot, mode, method)
   double near_singular_threshold = 0.0;
   std::optional<double> min_stiffness;  // N/m
-  std::vector<PostureStatus> status;   // per grid point
+  std::vector<PostureStatus> status;    // per grid point
   std::vector<FieldValues> fields;      // every MapField, the deflections only with a load
   std::array<std::size_t, kNumPostureStatuses> status_counts{};
   double reachable_measure = 0.0;  // m^2 or m^3: points not kUnreachable, times cell_measure()
@@ -160,7 +160,8 @@ struct WorkspaceMap {
 
 // Evaluates `kernel` at every grid point (in chunks, on options.threads threads, along a serpentine
 // path: PointOrder::kPath) and fills the fields and summary. Unreachable points have no value in any
-// field (NaN); singular and failed points keep only the singularity measure and the iterations. kInvalidInput when the grid is empty or above options.max_points.
+// field (NaN); singular and failed points keep only the singularity measure and the iterations. kInvalidInput when the
+// grid is empty or above options.max_points.
 StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const MapGrid& grid,
                                              const MapOptions& options = {});
 

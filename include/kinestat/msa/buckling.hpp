@@ -15,9 +15,9 @@
 namespace kinestat::msa {
 
 struct BucklingOptions {
-  SolveOptions solve;     // of the linear solve that gives the axial forces (and of K's factorization)
-  int load_case = 0;      // index into Structure::load_cases()
-  int count = 3;          // how many of the smallest positive load factors
+  SolveOptions solve;  // of the linear solve that gives the axial forces (and of K's factorization)
+  int load_case = 0;   // index into Structure::load_cases()
+  int count = 3;       // how many of the smallest positive load factors
   // Include the torsion (Wagner) term N Ip / (A L) of K_G (Ip: polar_moment, elements/section.hpp):
   // torsional buckling of open thin sections is outside a 12-dof beam anyway, but the term keeps a
   // compressed member's twist from being stiffer than it is.
@@ -25,16 +25,16 @@ struct BucklingOptions {
 };
 
 struct BucklingMode {
-  double load_factor = 0.0;     // lambda (-): critical loads = lambda x the load case's loads
-  std::vector<Vec6> shape;      // per node, global: translations and rotations, max |translation| = 1
-  double residual = 0.0;        // ||K phi + lambda K_G phi|| / ||K phi|| on the reduced dofs
+  double load_factor = 0.0;  // lambda (-): critical loads = lambda x the load case's loads
+  std::vector<Vec6> shape;   // per node, global: translations and rotations, max |translation| = 1
+  double residual = 0.0;     // ||K phi + lambda K_G phi|| / ||K phi|| on the reduced dofs
 };
 
 struct BucklingResult {
   // kInvalidInput (bad model, no compressed beam, a beam with end releases), kSingular (K singular:
   // see linear.singularity), kNotConverged (the eigensolver did not converge), kInternal.
   Status status;
-  Solution linear;                 // the static solve of every load case (its status: see `status`)
+  Solution linear;  // the static solve of every load case (its status: see `status`)
   int load_case = 0;
   std::string load_case_name;
   std::vector<double> axial_force;  // per beam, N (positive in tension): (N2 - N1) / 2 of its end forces

@@ -20,7 +20,7 @@ namespace kinestat::msa {
 // and solve_second_order, msa/buckling.hpp) is added to K. Tension raises the frequencies, compression
 // lowers them; at the case's critical load the first one reaches 0 (beyond it: kInvalidInput).
 struct ModalPrestress {
-  int load_case = 0;          // index into Structure::load_cases()
+  int load_case = 0;  // index into Structure::load_cases()
   // The axial forces of solve_second_order (every load case is solved so, as Frame3DD does with its
   // geometric stiffness flag 1) instead of the linear solve's.
   bool second_order = false;
@@ -29,10 +29,10 @@ struct ModalPrestress {
 };
 
 struct ModalOptions {
-  SolveOptions solve;         // of the factorization of K (and its singularity diagnosis)
-  int count = 6;              // how many of the lowest frequencies
-  bool lumped = false;        // lumped instead of consistent beam masses
-  bool rotary_inertia = true; // the cross-sections' rotary inertia in the consistent mass
+  SolveOptions solve;                       // of the factorization of K (and its singularity diagnosis)
+  int count = 6;                            // how many of the lowest frequencies
+  bool lumped = false;                      // lumped instead of consistent beam masses
+  bool rotary_inertia = true;               // the cross-sections' rotary inertia in the consistent mass
   std::optional<ModalPrestress> prestress;  // none: the unstressed structure
 };
 
@@ -45,12 +45,12 @@ struct ModalPrestressReport {
 };
 
 struct VibrationMode {
-  double omega = 0.0;         // rad/s
-  double frequency = 0.0;     // Hz, omega / (2 pi)
-  std::vector<Vec6> shape;    // per node, global; mass-normalized: phi' M phi = 1 (m/sqrt(kg), rad/sqrt(kg))
-  Vec3 participation = Vec3::Zero();    // Gamma_d = phi' M r_d, r_d: unit translation along global d (sqrt(kg))
-  Vec3 effective_mass = Vec3::Zero();   // Gamma_d^2 (kg)
-  double residual = 0.0;      // ||K q - omega^2 M q|| / ||K q|| on the reduced dofs
+  double omega = 0.0;                  // rad/s
+  double frequency = 0.0;              // Hz, omega / (2 pi)
+  std::vector<Vec6> shape;             // per node, global; mass-normalized: phi' M phi = 1 (m/sqrt(kg), rad/sqrt(kg))
+  Vec3 participation = Vec3::Zero();   // Gamma_d = phi' M r_d, r_d: unit translation along global d (sqrt(kg))
+  Vec3 effective_mass = Vec3::Zero();  // Gamma_d^2 (kg)
+  double residual = 0.0;               // ||K q - omega^2 M q|| / ||K q|| on the reduced dofs
 };
 
 struct ModalResult {
@@ -64,7 +64,7 @@ struct ModalResult {
   Solution linear;
   std::optional<ModalPrestressReport> prestress;  // set when ModalOptions::prestress is
   int num_free_dofs = 0;
-  Vec3 total_mass = Vec3::Zero();  // r_d' M r_d over every node (supported ones included), kg
+  Vec3 total_mass = Vec3::Zero();    // r_d' M r_d over every node (supported ones included), kg
   std::vector<VibrationMode> modes;  // ascending frequency
 };
 

@@ -22,10 +22,13 @@ struct FreeMotion {
 
 struct SingularityDiagnosis {
   bool singular = false;
-  struct WeakDof { int node; int dof; };  // dof in the node's support frame / global
-  std::vector<WeakDof> weak_dofs;          // where the pivot check failed
+  struct WeakDof {
+    int node;
+    int dof;
+  };                               // dof in the node's support frame / global
+  std::vector<WeakDof> weak_dofs;  // where the pivot check failed
   std::vector<FreeMotion> modes;
-  std::string message;                     // the whole diagnosis in words
+  std::string message;  // the whole diagnosis in words
 };
 
 // "node '5' translates along +y" / "rotates about (0.71, 0.71, 0)": one node's motion in words.

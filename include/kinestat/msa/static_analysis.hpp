@@ -49,23 +49,23 @@ struct SecondOrderOptions {
 struct SecondOrderReport {
   double tolerance = 0.0;
   int max_iterations = 0;
-  std::vector<int> iterations;          // per load case: solves of K + K_G(N) until converged
-  std::vector<double> relative_change;  // per load case: the last ||u_k - u_k-1|| / ||u_k||
+  std::vector<int> iterations;                   // per load case: solves of K + K_G(N) until converged
+  std::vector<double> relative_change;           // per load case: the last ||u_k - u_k-1|| / ||u_k||
   std::vector<std::vector<double>> axial_force;  // [case][beam], N, tension positive: the converged N
 };
 
 struct LoadCaseResult {
   std::string name;
-  std::vector<Vec6> displacement;    // per node, global: ux uy uz (m), rx ry rz (rad)
-  std::vector<Vec6> reaction;        // per node, global: forces (N) and moments (N m); zero off supports
+  std::vector<Vec6> displacement;  // per node, global: ux uy uz (m), rx ry rz (rad)
+  std::vector<Vec6> reaction;      // per node, global: forces (N) and moments (N m); zero off supports
   // per beam, local axes: N1 Vy1 Vz1 T1 My1 Mz1 N2 ... (force on the beam); second order: (k + k_G(N)) T u + FEF
   std::vector<Vec12> beam_end_forces;
-  std::vector<Vec6> joint_forces;    // per joint, joint frame: spring force/moment acting on node2
+  std::vector<Vec6> joint_forces;  // per joint, joint frame: spring force/moment acting on node2
   // Sum of loads and reactions (force, moment about origin): ~0. Second order: of loads, reactions and
   // the P-Delta forces -K_G u (their moment is that of the axial forces on the deflected members).
   Vec6 resultant = Vec6::Zero();
-  double equilibrium_error = 0.0;    // |resultant| / (|loads| + |reactions|), forces times the model size
-  double free_dof_residual = 0.0;    // ||C'(K u - f)|| / ||C' f||
+  double equilibrium_error = 0.0;  // |resultant| / (|loads| + |reactions|), forces times the model size
+  double free_dof_residual = 0.0;  // ||C'(K u - f)|| / ||C' f||
   double max_translation = 0.0;
   int max_translation_node = -1;
 };
@@ -77,18 +77,18 @@ struct SolvedStructure {
 };
 
 struct Solution {
-  Status status;                   // kSingular: see `singularity`; cases are empty unless regularized
+  Status status;  // kSingular: see `singularity`; cases are empty unless regularized
   bool regularized = false;
-  int num_dofs = 0;                // 6 per node
-  int num_free_dofs = 0;           // after supports and constraints
+  int num_dofs = 0;       // 6 per node
+  int num_free_dofs = 0;  // after supports and constraints
   solver::FactorizationReport factorization;
   double softest_mode_ratio = 0.0;  // lowest u'Ku/u'Du found by inverse iteration
   double mechanism_ratio = 0.0;     // the threshold it was judged by (SolveOptions::mechanism_ratio)
   std::string backend;
   SingularityDiagnosis singularity;
   std::vector<LoadCaseResult> cases;
-  std::optional<CartesianStiffness> cartesian;       // of the report node (point: its position, global axes)
-  std::optional<StiffnessIndices> global_indices;    // of the reduced global matrix
+  std::optional<CartesianStiffness> cartesian;     // of the report node (point: its position, global axes)
+  std::optional<StiffnessIndices> global_indices;  // of the reduced global matrix
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;
   std::optional<SolvedStructure> structure;  // set by solve(); unset in a Solution built by hand

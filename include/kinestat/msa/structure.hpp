@@ -38,7 +38,7 @@ struct Beam {
   int material = -1, section = -1;
   Vec3 orientation = Vec3::Zero();  // a vector in the local x-y plane; zero = default_orientation()
   BeamTheory theory = BeamTheory::kEulerBernoulli;
-  BeamReleases releases{};          // local dofs freed at the ends (pins, torsion releases)
+  BeamReleases releases{};  // local dofs freed at the ends (pins, torsion releases)
   std::string source{};
 };
 
@@ -88,8 +88,8 @@ struct PrescribedDisplacement {
 // about axes through the node parallel to global x, y, z.
 struct NodalMass {
   int node = -1;
-  double mass = 0.0;             // kg
-  Vec3 inertia = Vec3::Zero();   // Ixx Iyy Izz, kg m^2
+  double mass = 0.0;            // kg
+  Vec3 inertia = Vec3::Zero();  // Ixx Iyy Izz, kg m^2
   std::string source{};
 };
 
@@ -102,10 +102,10 @@ struct MemberLoad {
   int beam = -1;
   MemberLoadType type = MemberLoadType::kUniform;
   bool global_axes = false;
-  Vec3 w1 = Vec3::Zero();   // uniform: the load; trapezoidal: the load at a (N/m)
-  Vec3 w2 = Vec3::Zero();   // trapezoidal: the load at b (N/m)
-  double a = 0.0;           // trapezoidal: start; point: where the force acts (m)
-  double b = 0.0;           // trapezoidal: end, a < b <= L (m)
+  Vec3 w1 = Vec3::Zero();      // uniform: the load; trapezoidal: the load at a (N/m)
+  Vec3 w2 = Vec3::Zero();      // trapezoidal: the load at b (N/m)
+  double a = 0.0;              // trapezoidal: start; point: where the force acts (m)
+  double b = 0.0;              // trapezoidal: end, a < b <= L (m)
   Vec3 force = Vec3::Zero();   // point (N)
   Vec3 moment = Vec3::Zero();  // point (N m)
   ThermalLoad thermal{};       // temperature (local axes always)
@@ -143,7 +143,8 @@ class Structure {
   // Checks what the assembly relies on: valid indices, unique ids, every value finite and in its
   // physical range (core/input_checks.hpp), positive lengths and section properties, coincident joint
   // nodes, loads on existing nodes whose sum is finite, one prescribed value per dof, no node both
-  // supported and constrained, member loads on existing beams and inside their span. Messages start with the item's source, name the item and say what to fix.
+  // supported and constrained, member loads on existing beams and inside their span. Messages start with the item's
+  // source, name the item and say what to fix.
   Status validate() const;
 
   const std::string& title() const { return title_; }

@@ -20,8 +20,8 @@ namespace kinestat::solver {
 
 // The `count` largest mu (fewer when the system has fewer unknowns), descending, and their vectors
 // as columns, K-orthonormal (q' K q = 1). `chol` holds K's factorization. Only the lower triangles of
-// A and Kr are read (full symmetric matrices and the FEA's lower-triangle storage both work). kNotConverged when Lanczos
-// does not converge, kInternal when it fails.
+// A and Kr are read (full symmetric matrices and the FEA's lower-triangle storage both work). kNotConverged when
+// Lanczos does not converge, kInternal when it fails.
 StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
                                                                const SparseCholesky& chol, int count);
 

@@ -10,8 +10,8 @@
 namespace kinestat::solver {
 
 struct NullSpace {
-  MatX modes;    // n x k, columns D-normalized (D = diag A), ascending ratio
-  VecX ratios;   // Rayleigh ratios x'Ax / x'Dx: ~1e-16 for an exact mechanism, ~1 for a stiff mode
+  MatX modes;   // n x k, columns D-normalized (D = diag A), ascending ratio
+  VecX ratios;  // Rayleigh ratios x'Ax / x'Dx: ~1e-16 for an exact mechanism, ~1 for a stiff mode
 };
 
 // The `block` lowest generalized eigenpairs A x = lambda D x, by subspace iteration with a

@@ -56,21 +56,21 @@ struct SparseCholeskyOptions {
 // What a solve did, per right-hand side (iterative backends; a direct one reports 0 iterations and
 // the residual of its solution).
 struct SolveReport {
-  std::vector<int> iterations;             // per column of B
-  std::vector<double> relative_residual;   // ||b - A x|| / ||b|| per column
-  double relative_tolerance = 0.0;         // the stopping tolerance (0: direct solve)
+  std::vector<int> iterations;            // per column of B
+  std::vector<double> relative_residual;  // ||b - A x|| / ||b|| per column
+  double relative_tolerance = 0.0;        // the stopping tolerance (0: direct solve)
   double seconds = 0.0;
 };
 
 // What a factorization did and found; printed by the MSA/FEA summaries.
 struct FactorizationReport {
   int n = 0;
-  long nnz_matrix = 0;          // stored entries of the lower triangle
-  long nnz_factor = 0;          // entries of L
-  double flops = 0.0;           // floating-point operations of the numeric factorization
-  bool reused_symbolic = false; // the sparsity pattern matched the previous call: no new analysis
+  long nnz_matrix = 0;           // stored entries of the lower triangle
+  long nnz_factor = 0;           // entries of L
+  double flops = 0.0;            // floating-point operations of the numeric factorization
+  bool reused_symbolic = false;  // the sparsity pattern matched the previous call: no new analysis
   bool supernodal = false;
-  std::string ordering;         // "AMD", "METIS", "natural", ...
+  std::string ordering;  // "AMD", "METIS", "natural", ...
   double analyze_seconds = 0.0;
   double factor_seconds = 0.0;
   // Memory: the analysis's estimate for the numeric factorization (the factor with its supernodes'
@@ -81,9 +81,9 @@ struct FactorizationReport {
   double peak_bytes = 0.0;
   bool refused_for_memory() const { return factor_bytes > memory_available_bytes && memory_available_bytes > 0.0; }
   // Pivot check, in the user's (unpermuted) column numbering.
-  int failed_column = -1;       // first column whose pivot was not positive (factorization stopped)
+  int failed_column = -1;         // first column whose pivot was not positive (factorization stopped)
   std::vector<int> weak_columns;  // columns with pivot ratio below the tolerance (free motions)
-  double min_pivot_ratio = 0.0; // min over columns of d_j / A_jj
+  double min_pivot_ratio = 0.0;   // min over columns of d_j / A_jj
   int min_pivot_column = -1;
   bool singular() const { return failed_column >= 0 || !weak_columns.empty(); }
 };

@@ -25,7 +25,7 @@ struct EquilibriumOptions {
   // the prescribed displacement (same scaling), or at the pose's round-off floor 16 eps. Under a
   // prescribed wrench, the relative wrench residual below 100 times this, or stalled at its round-off
   // floor ~eps |K| (very stiff springs).
-  double tolerance = 1e-12;  // the round-off floor of the static residual is ~1e-14 for stiff chains
+  double tolerance = 1e-12;       // the round-off floor of the static residual is ~1e-14 for stiff chains
   double rank_tolerance = 1e-10;  // as StiffnessOptions::rank_tolerance
   int max_chain_coordinates = kDefaultMaxChainCoordinates;  // as StiffnessOptions::max_chain_coordinates
 };
