@@ -11,5 +11,7 @@ else
 fi
 jobs=$(nproc 2>/dev/null || echo 2)
 # KINESTAT_WERROR=1 (scripts/test.sh): a warning in kinestat's own code fails the build.
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DKINESTAT_WERROR="${KINESTAT_WERROR:-0}" >/dev/null
+# compile_commands.json: scripts/tidy.sh reads it.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DKINESTAT_WERROR="${KINESTAT_WERROR:-0}" \
+  -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null
 cmake --build build -j"$jobs" "$@"

@@ -28,6 +28,7 @@ PACKAGES=(
   libplplot-dev            # PNG maps (kinestat map/design --png) ...
   plplot-driver-cairo      # ... through PLplot's pngcairo device
   clang-16 libclang-rt-16-dev libfuzzer-16-dev  # scripts/sanitize.sh, scripts/fuzz.sh: ASan, UBSan, libFuzzer
+  clang-format-16 clang-tidy-16  # scripts/check_format.sh, scripts/tidy.sh: the formatting and lint gates
 )
 
 # Optional: the distributed backends petsc-mumps and petsc-cg (docs/fea.md, "Large meshes").

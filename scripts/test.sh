@@ -2,14 +2,27 @@
 # Installs what is missing, builds everything (Release), runs every test with ctest, then proves the
 # installed package with an outside project (scripts/check_install.sh); then the same tests under
 # AddressSanitizer and UndefinedBehaviorSanitizer (scripts/sanitize.sh, build-sanitize/) and each fuzz
-# harness for 30 s (scripts/fuzz.sh). docs/reliability.md describes both.
+# harness for 30 s (scripts/fuzz.sh); the formatting and clang-tidy gates (scripts/check_format.sh,
+# scripts/tidy.sh). docs/reliability.md describes them. Each step's wall time is printed when it ends
+# (CI must stay under 60 minutes on a 2-core machine).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+start=$SECONDS
+step() {  # step NAME COMMAND...: runs it and prints its wall time
+  local name=$1 t0=$SECONDS
+  shift
+  "$@"
+  printf 'test.sh: %-14s %4d s (total %4d s)\n' "$name" $((SECONDS - t0)) $((SECONDS - start))
+}
+step deps scripts/install-deps.sh --petsc
+# Formatting first: it needs no build and fails fast.
+step format scripts/check_format.sh
 # PETSc too, so that the distributed backends are built and tested on 1 and 2 MPI ranks; a warning
 # in kinestat's own code fails the build (-Werror).
-KINESTAT_PETSC=1 KINESTAT_WERROR=1 scripts/build.sh
+KINESTAT_PETSC=1 KINESTAT_WERROR=1 step build scripts/build.sh
 jobs=$(nproc 2>/dev/null || echo 2)
-(cd build && ctest --output-on-failure -j"$jobs" --timeout 600)
-scripts/check_install.sh
-scripts/sanitize.sh
-scripts/fuzz.sh 30
+step ctest bash -c "cd build && ctest --output-on-failure -j$jobs --timeout 600"
+step install scripts/check_install.sh
+step tidy scripts/tidy.sh
+step sanitize scripts/sanitize.sh
+step fuzz scripts/fuzz.sh 30
