@@ -9,7 +9,7 @@ if [ "${KINESTAT_PETSC:-0}" = 1 ]; then
 else
   "$(dirname "$0")/install-deps.sh"
 fi
-jobs=$(nproc 2>/dev/null || echo 2)
+jobs=$(scripts/cpus.sh)
 # KINESTAT_WERROR=1 (scripts/test.sh): a warning in kinestat's own code fails the build.
 # compile_commands.json: scripts/tidy.sh reads it.
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DKINESTAT_WERROR="${KINESTAT_WERROR:-0}" \

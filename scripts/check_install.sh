@@ -53,6 +53,6 @@ assert kinestat.mechanisms.compute_workspace_map and kinestat.fea.compute_link_s
 fi
 cmake -S "$root/tests/install/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-cmake --build "$work/consumer" -j"$(nproc 2>/dev/null || echo 2)" >/dev/null
+cmake --build "$work/consumer" -j"$(scripts/cpus.sh)" >/dev/null
 "$work/consumer/cantilever"
 echo "check_install: the installed package builds and runs an outside project"

@@ -2,7 +2,7 @@
 # Installs what is missing, builds everything (Release), runs every test with ctest, then proves the
 # installed package with an outside project (scripts/check_install.sh); then the same tests under
 # AddressSanitizer and UndefinedBehaviorSanitizer (scripts/sanitize.sh, build-sanitize/) and each fuzz
-# harness for 30 s (scripts/fuzz.sh); the formatting and clang-tidy gates (scripts/check_format.sh,
+# harness for 20 s (scripts/fuzz.sh); the formatting and clang-tidy gates (scripts/check_format.sh,
 # scripts/tidy.sh). docs/reliability.md describes them. Each step's wall time is printed when it ends
 # (CI must stay under 60 minutes on a 2-core machine).
 set -euo pipefail
@@ -20,9 +20,9 @@ step format scripts/check_format.sh
 # PETSc too, so that the distributed backends are built and tested on 1 and 2 MPI ranks; a warning
 # in kinestat's own code fails the build (-Werror).
 KINESTAT_PETSC=1 KINESTAT_WERROR=1 step build scripts/build.sh
-jobs=$(nproc 2>/dev/null || echo 2)
+jobs=$(scripts/cpus.sh)
 step ctest bash -c "cd build && ctest --output-on-failure -j$jobs --timeout 600"
 step install scripts/check_install.sh
 step tidy scripts/tidy.sh
 step sanitize scripts/sanitize.sh
-step fuzz scripts/fuzz.sh 30
+step fuzz scripts/fuzz.sh 20

@@ -9,6 +9,6 @@ if [ $# -gt 0 ]; then
 else
   mapfile -t files < <(git ls-files 'src/core/*.cpp' 'src/elements/*.cpp' 'src/solver/*.cpp')
 fi
-jobs=$(nproc 2>/dev/null || echo 2)
+jobs=$(scripts/cpus.sh)
 printf '%s\n' "${files[@]}" | xargs -P "$jobs" -n 1 clang-tidy-16 -p build --quiet 2>/dev/null
 echo "tidy: ${#files[@]} files clean"

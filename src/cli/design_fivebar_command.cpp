@@ -14,7 +14,6 @@
 #include <optional>
 #include <ostream>
 #include <string>
-#include <thread>
 #include <tuple>
 #include <vector>
 
@@ -25,6 +24,7 @@
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/threads.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/io/five_bar_design_output.hpp"
 #include "kinestat/io/results_json.hpp"
@@ -158,8 +158,7 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   out << fmt::format("  region {}, step {:.4g} mm: {} x {} = {} points per design\n", region_text, step / kMm,
                      region->dimensions[0], region->dimensions[1], region->num_points());
   out << fmt::format("  share: the region's points reached with {}\n", criteria);
-  const unsigned cores =
-      a.threads > 0 ? static_cast<unsigned>(a.threads) : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned cores = a.threads > 0 ? static_cast<unsigned>(a.threads) : static_cast<unsigned>(available_cpus());
   out << fmt::format("  {} postures in {:.2f} s: {:.3g} postures/s on {} thread{}\n", postures, seconds,
                      postures / seconds, cores, cores == 1 ? "" : "s");
   auto line = [&](const FiveBarDesignResult& r) {

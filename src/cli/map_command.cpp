@@ -9,7 +9,6 @@
 #include <optional>
 #include <ostream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -18,6 +17,7 @@
 #include "cli/command_output.hpp"
 #include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
+#include "kinestat/core/threads.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/io/map_json.hpp"
 #include "kinestat/io/map_vti.hpp"
@@ -318,7 +318,7 @@ int run_map(MapArgs& a, Context& ctx) {
   if (points > static_cast<double>(a.max_points)) {
     // The time it would take, at the sweep kernels' rates per thread (benchmarks/README.md: about
     // 2e5 postures/s unloaded, 1e4 loaded), so that the limit reads as a cost, not a rule.
-    const int threads = a.threads > 0 ? a.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int threads = a.threads > 0 ? a.threads : available_cpus();
     const double minutes = points / ((setup->with_load ? 1e4 : 2e5) * threads) / 60.0;
     return fail(
         Status::Invalid(fmt::format("{} {} over {} gives {:.3g} points (about {:.2g} min on {} "

@@ -7,6 +7,8 @@
 #include <thread>
 #include <vector>
 
+#include "kinestat/core/threads.hpp"
+
 namespace kinestat {
 namespace {
 
@@ -18,7 +20,7 @@ constexpr std::size_t kHugePage = std::size_t{2} << 20;
 // divided by their number, and the factorization that fills the block then runs without page
 // faults. The block is fresh (uninitialized), so writing zeros changes nothing it promises.
 void touch_in_parallel(char* p, std::size_t bytes) {
-  const std::size_t threads = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = static_cast<std::size_t>(available_cpus());
   const std::size_t chunk = (bytes / threads + kHugePage - 1) / kHugePage * kHugePage;
   auto touch = [p, bytes](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < std::min(end, bytes); k += 4096) p[k] = 0;

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/threads.hpp"
 
 namespace kinestat::mechanisms {
 namespace {
@@ -68,7 +68,7 @@ StatusOr<FiveBarDesignSweep> sweep_five_bar_designs(const FiveBarDesignSweepOpti
   // time is estimated at 2.5e5 region points per second and thread (benchmarks/README.md).
   const double designs = static_cast<double>(d.dimensions[0]) * d.dimensions[1];
   const double postures = designs * static_cast<double>(n_region);
-  const int threads = o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = o.threads > 0 ? o.threads : available_cpus();
   const double hours = postures / (2.5e5 * threads) / 3600.0;
   if (Status s = check_size(
           postures, o.max_postures, fmt::format("{:g} designs x {} region points", designs, n_region), "postures",

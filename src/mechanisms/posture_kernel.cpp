@@ -10,6 +10,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include "kinestat/core/threads.hpp"
+
 namespace kinestat::mechanisms {
 
 const char* to_string(PostureStatus s) {
@@ -63,12 +65,8 @@ void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& poi
     }
   };
   const tbb::blocked_range<std::size_t> range(0, chunks, 1);
-  if (threads > 0) {
-    tbb::task_arena arena(threads);
-    arena.execute([&] { tbb::parallel_for(range, body); });
-  } else {
-    tbb::parallel_for(range, body);
-  }
+  tbb::task_arena arena(threads > 0 ? threads : available_cpus());
+  arena.execute([&] { tbb::parallel_for(range, body); });
   if (progress) progress(total, total);
 }
 

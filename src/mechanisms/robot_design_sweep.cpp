@@ -6,11 +6,11 @@
 #include <memory>
 #include <optional>
 #include <set>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/threads.hpp"
 #include "kinestat/solver/parallel.hpp"
 
 namespace kinestat::mechanisms {
@@ -113,7 +113,7 @@ StatusOr<RobotDesignSweep> robot_design_sweep(const RobotDesignFactory& factory,
   out.ranks = group.size;
   // Counted before anything runs: a sweep of hours is a choice to make, not a typo to start.
   const double postures = designs * static_cast<double>(n_region);
-  const int threads = o.threads > 0 ? o.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = o.threads > 0 ? o.threads : available_cpus();
   const double rate =
       (loaded ? kRobotKernelLoadedPosturesPerSecond : kRobotKernelPosturesPerSecond) * threads * group.size;
   if (Status s = check_size(postures, o.max_postures, fmt::format("{:g} designs x {} region points", designs, n_region),

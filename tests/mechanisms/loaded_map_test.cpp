@@ -140,13 +140,15 @@ TEST(LoadedMap, NearTheBucklingLimitTheMapFailsWhereTheSolveFails) {
     o.model.actuator_stiffness = 4170.3e3;
     o.model.bar_section = tube_section(0.014873, 0.0014873);
     o.model.foot_length = 0.63275;
-    auto grid = make_map_grid({MapRange{-0.1, 0.1}, MapRange{-0.1, 0.1}, MapRange{-0.1, 0.1}}, 0.02, 10000);
+    // The +x, +y quarter of the 200 mm cube, where every failed and unstable point of the whole cube
+    // lies (11 x 11 x 11 points before: the same points found at 4.8x the cost; 28 s, 510 s under ASan).
+    auto grid = make_map_grid({MapRange{0.02, 0.1}, MapRange{0.02, 0.1}, MapRange{-0.1, 0.1}}, 0.02, 10000);
     ASSERT_TRUE(grid.ok());
     int failed = 0, unstable = 0;
     for (double force : {16000.0, 20000.0}) {
       o.wrench = (Vec6() << 0.0, 0.0, -force, 0.0, 0.0, 0.0).finished();
       const Comparison c = compare_with_scratch(o, *grid);
-      EXPECT_GT(c.compared, 1300);
+      EXPECT_GT(c.compared, 250);  // of 5 x 5 x 11
       failed += c.failed;
       unstable += c.unstable;
     }
