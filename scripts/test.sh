@@ -21,6 +21,8 @@ step format scripts/check_format.sh
 # in kinestat's own code fails the build (-Werror).
 KINESTAT_PETSC=1 KINESTAT_WERROR=1 step build scripts/build.sh
 jobs=$(scripts/cpus.sh)
+# OpenBLAS (under CHOLMOD) counts the host's CPUs, not a container's quota: no more threads than CPUs.
+export OPENBLAS_NUM_THREADS=$jobs OMP_NUM_THREADS=$jobs
 step ctest bash -c "cd build && ctest --output-on-failure -j$jobs --timeout 600"
 step install scripts/check_install.sh
 step tidy scripts/tidy.sh

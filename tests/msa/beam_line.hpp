@@ -1,6 +1,6 @@
-// Shared by the msa tests: steel with a density, and a straight line of n beams along x from 0 to L
-// (nodes "0".."n", beams "b0".., no supports), which the load, station, buckling and mode tests build
-// their cases on.
+// Shared by the msa tests: steel with a density, and a straight line of n beams along x (or `dir`)
+// from 0 to L (nodes "0".."n", beams "b0".., no supports), which the statics, load, station, buckling
+// and mode tests build their cases on.
 #pragma once
 
 #include <string>
@@ -14,11 +14,11 @@ namespace kinestat::msa {
 inline const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
 
 inline Structure straight(double L, int n, const Section& sec, BeamTheory th = BeamTheory::kEulerBernoulli,
-                          const Material& mat = kSteel) {
+                          const Material& mat = kSteel, const Vec3& dir = Vec3::UnitX()) {
   Structure s;
   const int m = s.add_material(mat);
   const int c = s.add_section(sec);
-  for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), Vec3(L * i / n, 0, 0));
+  for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), dir.normalized() * (L * i / n));
   for (int i = 0; i < n; ++i) {
     Beam b;
     b.id = fmt::format("b{}", i);

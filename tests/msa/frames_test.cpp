@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "beam_line.hpp"
 #include "kinestat/core/frame.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 #include "msa/assembly.hpp"
@@ -14,25 +15,10 @@
 namespace kinestat::msa {
 namespace {
 
-const Material kSteel{"steel", 2.1e11, 0.81e11};
-
 // A straight beam from the origin along `dir` in `n` elements, clamped at node "0".
 Structure cantilever(const Vec3& dir, double L, int n, const Section& sec,
                      BeamTheory th = BeamTheory::kEulerBernoulli) {
-  Structure s;
-  const int m = s.add_material(kSteel);
-  const int c = s.add_section(sec);
-  for (int i = 0; i <= n; ++i) s.add_node(std::to_string(i), dir.normalized() * (L * i / n));
-  for (int i = 0; i < n; ++i) {
-    Beam b;
-    b.id = fmt::format("b{}", i);
-    b.node1 = i;
-    b.node2 = i + 1;
-    b.material = m;
-    b.section = c;
-    b.theory = th;
-    s.add_beam(b);
-  }
+  Structure s = straight(L, n, sec, th, kSteel, dir);
   s.add_support({0, kAllDofs, Mat3::Identity()});
   return s;
 }
