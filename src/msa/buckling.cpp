@@ -43,7 +43,7 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   }
   const LoadCaseResult& r = res.linear.cases[opt.load_case];
   double max_abs = 0.0, max_compression = 0.0;
-  res.axial_force = beam_axial_forces(r.beam_end_forces);
+  res.axial_force = beam_axial_forces(s, r.beam_end_forces);
   for (double N : res.axial_force) {
     max_abs = std::max(max_abs, std::abs(N));
     max_compression = std::max(max_compression, -N);

@@ -339,7 +339,7 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     VecX u_prev(s.num_dofs());
     for (int n = 0; n < static_cast<int>(s.nodes().size()); ++n)
       u_prev.segment<6>(6 * n) = sol.cases[c].displacement[n];
-    std::vector<double> N = beam_axial_forces(sol.cases[c].beam_end_forces);
+    std::vector<double> N = beam_axial_forces(s, sol.cases[c].beam_end_forces);
     double change = 0.0;
     bool converged = false;
     int k = 0;
@@ -370,7 +370,7 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
       change = un > 0.0 ? as_lengths(u - u_prev).norm() / un : 0.0;
       if (!std::isfinite(change)) break;
       r = post_process(s, *sys, lc, u, loads->F, loads->U0, loads->fef, &g);
-      N = beam_axial_forces(r.beam_end_forces);
+      N = beam_axial_forces(s, r.beam_end_forces);
       u_prev = u;
       converged = change <= so.tolerance;
     }

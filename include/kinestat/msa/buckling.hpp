@@ -37,7 +37,8 @@ struct BucklingResult {
   Solution linear;  // the static solve of every load case (its status: see `status`)
   int load_case = 0;
   std::string load_case_name;
-  std::vector<double> axial_force;  // per beam, N (positive in tension): (N2 - N1) / 2 of its end forces
+  std::vector<double>
+      axial_force;  // per beam, N (positive in tension), the N of K_G: (N2 - N1) / 2, or -N1 (kFrame3dd)
   std::vector<BucklingMode> modes;  // ascending load factor; may be fewer than asked (see docs)
   int num_free_dofs = 0;
 };

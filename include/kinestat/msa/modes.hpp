@@ -41,7 +41,7 @@ struct ModalPrestressReport {
   int load_case = 0;
   std::string load_case_name;
   bool second_order = false;
-  std::vector<double> axial_force;  // per beam, N (tension positive): (N2 - N1) / 2, the N of K_G
+  std::vector<double> axial_force;  // per beam, N (tension positive), the N of K_G: (N2 - N1) / 2, or -N1 (kFrame3dd)
 };
 
 struct VibrationMode {
