@@ -86,19 +86,27 @@ StatusOr<ReleasePartition> partition_releases(const Mat12& K, const BeamReleases
 }  // namespace
 
 StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released) {
+  return condense_with_releases(K, released, K);
+}
+
+StatusOr<Mat12> condense_with_releases(const Mat12& K, const BeamReleases& released, const Mat12& X) {
   bool any = false;
   for (bool r : released) any = any || r;
-  if (!any) return K;
+  if (!any) return X;
   auto p = partition_releases(K, released);
   if (!p.ok()) return p.status();
-  const int na = static_cast<int>(p->a.size());
-  MatX Kaa(na, na);
-  for (int i = 0; i < na; ++i)
-    for (int j = 0; j < na; ++j) Kaa(i, j) = K(p->a[i], p->a[j]);
-  const MatX Kc = Kaa - p->Kra.transpose() * p->ldlt.solve(p->Kra);
+  const int na = static_cast<int>(p->a.size()), nr = static_cast<int>(p->r.size());
+  // T: unit retained dofs and the released ones' static answer -K_rr^-1 K_ra.
+  MatX T = MatX::Zero(12, na);
+  const MatX Tr = -p->ldlt.solve(p->Kra);
+  for (int j = 0; j < na; ++j) {
+    T(p->a[j], j) = 1.0;
+    for (int i = 0; i < nr; ++i) T(p->r[i], j) = Tr(i, j);
+  }
+  const MatX Xc = T.transpose() * X * T;
   Mat12 out = Mat12::Zero();
   for (int i = 0; i < na; ++i)
-    for (int j = 0; j < na; ++j) out(p->a[i], p->a[j]) = Kc(i, j);
+    for (int j = 0; j < na; ++j) out(p->a[i], p->a[j]) = 0.5 * (Xc(i, j) + Xc(j, i));
   return out;
 }
 

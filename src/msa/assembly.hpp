@@ -45,10 +45,6 @@ solver::SparseMatrix assemble_mass(const Structure& s, bool lumped, bool rotary_
 // uniform axial load or self-weight along the beam (kKinestat), or the first end's -N1 (kFrame3dd).
 std::vector<double> beam_axial_forces(const Structure& s, const std::vector<Vec12>& end_forces);
 
-// kInvalidInput naming the first beam with end releases: the geometric stiffness of released dofs
-// would need its own condensation, so `analysis` ("buckling", "second-order analysis") refuses them.
-Status check_no_end_releases(const Structure& s, const std::string& analysis);
-
 // Fixed-end forces of a load case's member loads and self-weight: one per beam, local axes, end
 // releases condensed (elements/member_loads.hpp). Empty when the case has neither.
 StatusOr<std::vector<Vec12>> fixed_end_forces(const Structure& s, const LoadCase& lc);

@@ -31,10 +31,6 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   }
   const LoadCase& lc = s.load_cases()[opt.load_case];
   res.load_case_name = lc.name;
-  if (Status st = check_no_end_releases(s, "buckling"); !st.ok()) {
-    res.status = st;
-    return res;
-  }
 
   res.linear = solve(s, opt.solve);
   if (!res.linear.status.ok()) {

@@ -33,14 +33,6 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
                                 b.id, s.materials()[b.material].id)));
       return res;
     }
-    // The mass of a released dof would have to be condensed with it (an approximation): refused.
-    if (std::any_of(b.releases.begin(), b.releases.end(), [](bool r) { return r; })) {
-      res.status = Status::Invalid(at_source(
-          b.source, fmt::format("beam '{}' has end releases, which modal analysis does not support (its mass is not "
-                                "condensed); model the hinge with a joint of zero stiffness in the released direction",
-                                b.id)));
-      return res;
-    }
   }
   if (s.beams().empty() && !nodal_masses) {
     res.status = Status::Invalid(at_source(s.source(),

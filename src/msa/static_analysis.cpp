@@ -309,7 +309,6 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     return fail(
         Status::Invalid(fmt::format("second-order iteration limit {}: give at least 1 (e.g. 50)", so.max_iterations)));
   if (Status st = s.validate(); !st.ok()) return fail(st);
-  if (Status st = check_no_end_releases(s, "a second-order analysis"); !st.ok()) return fail(st);
 
   // The linear solve: the first axial forces, the diagnosis of a singular K, the report node's
   // (elastic) Cartesian stiffness and the indices, all kept.

@@ -39,6 +39,13 @@ Mat12 beam_local_stiffness(const Material& m, const Section& s, double length, B
 // Fails when the released dofs leave the element itself free (e.g. torsion released at both ends).
 StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released);
 
+// The element's geometric stiffness or mass X condensed with the same static shapes: T' X T, T = [I;
+// -K_rr^-1 K_ra] (the released dofs follow the retained ones as the unloaded beam K makes them: the
+// condensed element's own shape functions), zero rows and columns at r. X = K gives condense_releases.
+// A Rayleigh-Ritz reduction: the released dofs carry no inertia or K_G of their own, which is what a
+// released end's zero force means for the static shapes; converges as the member is divided.
+StatusOr<Mat12> condense_with_releases(const Mat12& K, const BeamReleases& released, const Mat12& X);
+
 // The same condensation of a fixed-end force vector f (member_loads.hpp) of the unreleased element
 // K: f*_a = f_a - K_ar K_rr^-1 f_r, zero at r (the released dofs carry no force).
 StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& released, const Vec12& f);

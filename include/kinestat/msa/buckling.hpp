@@ -31,7 +31,7 @@ struct BucklingMode {
 };
 
 struct BucklingResult {
-  // kInvalidInput (bad model, no compressed beam, a beam with end releases), kSingular (K singular:
+  // kInvalidInput (bad model, no compressed beam), kSingular (K singular:
   // see linear.singularity), kNotConverged (the eigensolver did not converge), kInternal.
   Status status;
   Solution linear;  // the static solve of every load case (its status: see `status`)

@@ -54,8 +54,8 @@ struct VibrationMode {
 };
 
 struct ModalResult {
-  // kInvalidInput (bad model, a beam without density in a structure without nodal masses, a beam with
-  // end releases, a prestress at or beyond its case's critical load), kSingular (K singular: see
+  // kInvalidInput (bad model, a beam without density in a structure without nodal masses, a
+  // prestress at or beyond its case's critical load), kSingular (K singular: see
   // `linear.singularity`), kNotConverged (the eigensolver, or the second-order solve of a prestress:
   // its message says which), kInternal.
   Status status;
