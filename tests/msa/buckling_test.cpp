@@ -124,6 +124,19 @@ INSTANTIATE_TEST_SUITE_P(Buckling, EulerColumn,
                                            EulerCase{Ends::kFixedFixed, "fixed_fixed", 3.28e-5}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// An upper bound converging as the column is divided (n = 4, 8, 16): positive, each halving
+// dividing the error by ratio_lo..ratio_hi, and n = 16 within twice its measured error16.
+void expect_converging(int n, double err, double previous, double ratio_lo, double ratio_hi, double error16) {
+  EXPECT_GT(err, 0.0) << "n = " << n;
+  if (previous > 0.0) {
+    EXPECT_GT(previous / err, ratio_lo) << "n = " << n;
+    EXPECT_LT(previous / err, ratio_hi) << "n = " << n;
+  }
+  if (n == 16) {
+    EXPECT_LT(err, 2.0 * error16);
+  }
+}
+
 // A shear-flexible (Timoshenko) pinned-pinned column: its critical load is Engesser's
 // P_E / (1 + P_E / (G As)) (Timoshenko & Gere, Theory of Elastic Stability, sec. 2.16), here with
 // G As = 2 P_E (a lattice column's shear stiffness), P_cr = 2/3 P_E. The Timoshenko elements' K_G has
@@ -148,14 +161,7 @@ TEST(Buckling, ShearFlexibleColumnConvergesToEngesserLoad) {
     s.add_load_case(lc);
     const double err = (first_factor(s) - exact) / exact;
     std::printf("Timoshenko pinned column n = %d: lambda_1 relative error from Engesser's load %.3e\n", n, err);
-    EXPECT_GT(err, 0.0) << "n = " << n;
-    if (previous > 0.0) {
-      EXPECT_GT(previous / err, 3.0) << "n = " << n;
-      EXPECT_LT(previous / err, 5.0) << "n = " << n;
-    }
-    if (n == 16) {
-      EXPECT_LT(err, 2.0 * 7.145e-4);
-    }
+    expect_converging(n, err, previous, 3.0, 5.0, 7.145e-4);
     previous = err;
   }
 }
@@ -234,15 +240,8 @@ TEST(Buckling, PinnedByEndReleasesConvergesToEulerLoad) {
     const double err = (first_factor(s) - exact) / exact;
     const double pinned = (first_factor(column(Ends::kPinnedPinned, n, L, P)) - exact) / exact;
     std::printf("pinned by releases n = %d: lambda_1 relative error %.3e (pinned supports %.3e)\n", n, err, pinned);
-    EXPECT_GT(err, 0.0) << "n = " << n;
     EXPECT_GE(err, pinned - 1e-12) << "n = " << n;
-    if (previous > 0.0) {
-      EXPECT_GT(previous / err, 12.0) << "n = " << n;
-      EXPECT_LT(previous / err, 20.0) << "n = " << n;
-    }
-    if (n == 16) {
-      EXPECT_LT(err, 2.0 * 2.064e-6);
-    }
+    expect_converging(n, err, previous, 12.0, 20.0, 2.064e-6);
     previous = err;
   }
 }
