@@ -6,14 +6,19 @@
 
 namespace kinestat {
 
+BeamShearParameters beam_shear_parameters(const Material& m, const Section& s, double L, BeamTheory theory) {
+  // Shear-deformation parameters Phi = 12 E I / (G As L^2) (Przemieniecki, ch. 5).
+  BeamShearParameters p;  // phi_y: bending in x-y plane (uy, rz); phi_z: in x-z plane
+  if (theory == BeamTheory::kTimoshenko) {
+    if (s.Asy > 0) p.phi_y = 12.0 * m.E * s.Iz / (m.G * s.Asy * L * L);
+    if (s.Asz > 0) p.phi_z = 12.0 * m.E * s.Iy / (m.G * s.Asz * L * L);
+  }
+  return p;
+}
+
 Mat12 beam_local_stiffness(const Material& m, const Section& s, double L, BeamTheory theory) {
   const double E = m.E, G = m.G;
-  // Shear-deformation parameters Phi = 12 E I / (G As L^2) (Przemieniecki, ch. 5).
-  double phi_y = 0.0, phi_z = 0.0;  // phi_y: bending in x-y plane (uy, rz); phi_z: in x-z plane
-  if (theory == BeamTheory::kTimoshenko) {
-    if (s.Asy > 0) phi_y = 12.0 * E * s.Iz / (G * s.Asy * L * L);
-    if (s.Asz > 0) phi_z = 12.0 * E * s.Iy / (G * s.Asz * L * L);
-  }
+  const auto [phi_y, phi_z] = beam_shear_parameters(m, s, L, theory);
   Mat12 K = Mat12::Zero();
   const double ea = E * s.A / L, gj = G * s.J / L;
   K(0, 0) = K(6, 6) = ea;
@@ -81,19 +86,27 @@ StatusOr<ReleasePartition> partition_releases(const Mat12& K, const BeamReleases
 }  // namespace
 
 StatusOr<Mat12> condense_releases(const Mat12& K, const BeamReleases& released) {
+  return condense_with_releases(K, released, K);
+}
+
+StatusOr<Mat12> condense_with_releases(const Mat12& K, const BeamReleases& released, const Mat12& X) {
   bool any = false;
   for (bool r : released) any = any || r;
-  if (!any) return K;
+  if (!any) return X;
   auto p = partition_releases(K, released);
   if (!p.ok()) return p.status();
-  const int na = static_cast<int>(p->a.size());
-  MatX Kaa(na, na);
-  for (int i = 0; i < na; ++i)
-    for (int j = 0; j < na; ++j) Kaa(i, j) = K(p->a[i], p->a[j]);
-  const MatX Kc = Kaa - p->Kra.transpose() * p->ldlt.solve(p->Kra);
+  const int na = static_cast<int>(p->a.size()), nr = static_cast<int>(p->r.size());
+  // T: unit retained dofs and the released ones' static answer -K_rr^-1 K_ra.
+  MatX T = MatX::Zero(12, na);
+  const MatX Tr = -p->ldlt.solve(p->Kra);
+  for (int j = 0; j < na; ++j) {
+    T(p->a[j], j) = 1.0;
+    for (int i = 0; i < nr; ++i) T(p->r[i], j) = Tr(i, j);
+  }
+  const MatX Xc = T.transpose() * X * T;
   Mat12 out = Mat12::Zero();
   for (int i = 0; i < na; ++i)
-    for (int j = 0; j < na; ++j) out(p->a[i], p->a[j]) = Kc(i, j);
+    for (int j = 0; j < na; ++j) out(p->a[i], p->a[j]) = 0.5 * (Xc(i, j) + Xc(j, i));
   return out;
 }
 
@@ -113,25 +126,40 @@ StatusOr<Vec12> condense_fixed_end_forces(const Mat12& K, const BeamReleases& re
 }
 
 Mat12 beam_local_geometric_stiffness(double N, double L, double polar_radius2) {
+  return beam_local_geometric_stiffness(N, L, GeometricStiffnessTerms{polar_radius2, true, {}});
+}
+
+Mat12 beam_local_geometric_stiffness(double N, double L, const GeometricStiffnessTerms& terms) {
   Mat12 K = Mat12::Zero();
   const double c = N / L;
-  K(0, 0) = K(6, 6) = c;
-  K(0, 6) = K(6, 0) = -c;
-  const double t = c * polar_radius2;
+  if (terms.axial) {
+    K(0, 0) = K(6, 6) = c;
+    K(0, 6) = K(6, 0) = -c;
+  }
+  const double t = c * terms.polar_radius2;
   K(3, 3) = K(9, 9) = t;
   K(3, 9) = K(9, 3) = -t;
   // McGuire-Gallagher-Ziemian eq. (9.18): x-y plane (uy1, rz1, uy2, rz2); the x-z plane has the
-  // coupling signs flipped as in beam_local_stiffness (a positive ry bends towards -z).
-  const double k[4][4] = {{6.0 / 5, L / 10, -6.0 / 5, L / 10},
-                          {L / 10, 2 * L * L / 15, -L / 10, -L * L / 30},
-                          {-6.0 / 5, -L / 10, 6.0 / 5, -L / 10},
-                          {L / 10, -L * L / 30, -L / 10, 2 * L * L / 15}};
+  // coupling signs flipped as in beam_local_stiffness (a positive ry bends towards -z). With shear
+  // deformation (Phi > 0) the Timoshenko terms of GeometricStiffnessTerms::shear.
+  auto plane = [L](double phi, double(&k)[4][4]) {
+    const double d = (1 + phi) * (1 + phi);
+    const double a = (6.0 / 5 + 2 * phi + phi * phi) / d, b = L / 10 / d;
+    const double e = L * L * (2.0 / 15 + phi / 6 + phi * phi / 12) / d;
+    const double f = -L * L * (1.0 / 30 + phi / 6 + phi * phi / 12) / d;
+    const double m[4][4] = {{a, b, -a, b}, {b, e, -b, f}, {-a, -b, a, -b}, {b, f, -b, e}};
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) k[i][j] = m[i][j];
+  };
+  double ky[4][4], kz[4][4];
+  plane(terms.shear.phi_y, ky);
+  plane(terms.shear.phi_z, kz);
   const int dy[4] = {1, 5, 7, 11}, dz[4] = {2, 4, 8, 10};
   const double sz[4] = {1, -1, 1, -1};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
-      K(dy[i], dy[j]) = c * k[i][j];
-      K(dz[i], dz[j]) = c * sz[i] * sz[j] * k[i][j];
+      K(dy[i], dy[j]) = c * ky[i][j];
+      K(dz[i], dz[j]) = c * sz[i] * sz[j] * kz[i][j];
     }
   return K;
 }

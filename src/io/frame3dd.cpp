@@ -66,6 +66,9 @@ class Reader {
     split(text);
     s_.set_source(file_);
     s_.set_title(title_);
+    // Frame3DD's geometric stiffness: the first end's axial force and no axial term
+    // (msa::GeometricStiffnessConvention; docs/stability-and-modes.md).
+    s_.set_geometric_stiffness_convention(msa::GeometricStiffnessConvention::kFrame3dd);
     read_nodes();
     read_reactions();
     read_elements();

@@ -10,6 +10,14 @@
 
 namespace kinestat::msa {
 
+namespace {
+
+bool has_releases(const Beam& b) {
+  return std::any_of(b.releases.begin(), b.releases.end(), [](bool r) { return r; });
+}
+
+}  // namespace
+
 StatusOr<BeamMatrices> beam_matrices(const Structure& s, const Beam& b) {
   const double L = (s.nodes()[b.node2].position - s.nodes()[b.node1].position).norm();
   const Mat12 k = beam_local_stiffness(s.materials()[b.material], s.sections()[b.section], L, b.theory);
@@ -44,13 +52,26 @@ StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s) {
 GeometricStiffness assemble_geometric_stiffness(const Structure& s, const std::vector<double>& axial_force,
                                                 bool torsion_term) {
   GeometricStiffness g;
+  const bool frame3dd = s.geometric_stiffness_convention() == GeometricStiffnessConvention::kFrame3dd;
   std::vector<Eigen::Triplet<double>> trip;
   trip.reserve(144 * s.beams().size());
   for (size_t i = 0; i < s.beams().size(); ++i) {
     const Beam& b = s.beams()[i];
     const Section& sec = s.sections()[b.section];
-    const double r2 = torsion_term ? polar_moment(sec) / sec.A : 0.0;
-    g.local.push_back(beam_local_geometric_stiffness(axial_force[i], s.beam_length(b), r2));
+    const double L = s.beam_length(b);
+    GeometricStiffnessTerms terms;
+    terms.polar_radius2 = torsion_term ? polar_moment(sec) / sec.A : 0.0;
+    terms.axial = !frame3dd;
+    terms.shear = beam_shear_parameters(s.materials()[b.material], sec, L, b.theory);
+    Mat12 kl = beam_local_geometric_stiffness(axial_force[i], L, terms);
+    if (has_releases(b)) {
+      // With the static shapes of the released dofs, as the elastic matrix (condense_with_releases).
+      // assemble_stiffness has condensed the same releases before any K_G is built, so this succeeds.
+      auto c =
+          condense_with_releases(beam_local_stiffness(s.materials()[b.material], sec, L, b.theory), b.releases, kl);
+      if (c.ok()) kl = *c;
+    }
+    g.local.push_back(kl);
     const Mat12 T = beam_transformation(s.beam_axes(b));
     const Mat12 kg = T.transpose() * g.local.back() * T;
     const int base[2] = {6 * b.node1, 6 * b.node2};
@@ -64,25 +85,43 @@ GeometricStiffness assemble_geometric_stiffness(const Structure& s, const std::v
   return g;
 }
 
-std::vector<double> beam_axial_forces(const std::vector<Vec12>& end_forces) {
+solver::SparseMatrix assemble_mass(const Structure& s, bool lumped, bool rotary_inertia) {
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(144 * s.beams().size() + 6 * s.masses().size());
+  for (const Beam& b : s.beams()) {
+    const Mat12 T = beam_transformation(s.beam_axes(b));
+    const Material& mat = s.materials()[b.material];
+    const Section& sec = s.sections()[b.section];
+    const double L = s.beam_length(b);
+    Mat12 ml = beam_local_mass(mat, sec, L, lumped, rotary_inertia);
+    if (has_releases(b)) {  // as K_G above
+      auto c = condense_with_releases(beam_local_stiffness(mat, sec, L, b.theory), b.releases, ml);
+      if (c.ok()) ml = *c;
+    }
+    const Mat12 me = T.transpose() * ml * T;
+    const int base[2] = {6 * b.node1, 6 * b.node2};
+    for (int a = 0; a < 2; ++a)
+      for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 6; ++k)
+          for (int l = 0; l < 6; ++l) trip.emplace_back(base[a] + k, base[c] + l, me(6 * a + k, 6 * c + l));
+  }
+  for (const NodalMass& nm : s.masses())
+    for (int d = 0; d < 3; ++d) {
+      trip.emplace_back(6 * nm.node + d, 6 * nm.node + d, nm.mass);
+      trip.emplace_back(6 * nm.node + 3 + d, 6 * nm.node + 3 + d, nm.inertia(d));
+    }
+  solver::SparseMatrix M(s.num_dofs(), s.num_dofs());
+  M.setFromTriplets(trip.begin(), trip.end());
+  return M;
+}
+
+std::vector<double> beam_axial_forces(const Structure& s, const std::vector<Vec12>& end_forces) {
+  const bool first_end = s.geometric_stiffness_convention() == GeometricStiffnessConvention::kFrame3dd;
   std::vector<double> N;
   N.reserve(end_forces.size());
   // End forces act on the beam: tension is +N2 and -N1; their mean is the axial force at midspan.
-  for (const Vec12& f : end_forces) N.push_back(0.5 * (f(6) - f(0)));
+  for (const Vec12& f : end_forces) N.push_back(first_end ? -f(0) : 0.5 * (f(6) - f(0)));
   return N;
-}
-
-Status check_no_end_releases(const Structure& s, const std::string& analysis) {
-  // The released dofs of K_G would have to be condensed with the elastic K_rr (an approximation:
-  // K_G changes the released dofs' stiffness too); rather than give approximate numbers, refuse.
-  for (const Beam& b : s.beams())
-    if (std::any_of(b.releases.begin(), b.releases.end(), [](bool r) { return r; }))
-      return Status::Invalid(at_source(
-          b.source, fmt::format("beam '{}' has end releases, which {} does not support (its geometric stiffness "
-                                "is not condensed); model the hinge with a joint of zero stiffness in the released "
-                                "direction instead",
-                                b.id, analysis)));
-  return Status::Ok();
 }
 
 StatusOr<std::vector<Vec12>> fixed_end_forces(const Structure& s, const LoadCase& lc) {

@@ -26,6 +26,8 @@ StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s);
 // positive), and their sum rotated to global axes (6N x 6N, every beam's 12 x 12 blocks kept as
 // structural entries, so K + K_G has one sparsity pattern whatever the forces). `torsion_term`: the
 // Wagner term N Ip / (A L), Ip = polar_moment(section) (BucklingOptions::torsion_term says why).
+// The structure's GeometricStiffnessConvention says whether K_G has the axial term; Timoshenko
+// beams get the shear-deformation terms of their K_G (GeometricStiffnessTerms::shear).
 struct GeometricStiffness {
   std::vector<Mat12> local;     // per beam, local axes
   solver::SparseMatrix global;  // 6N x 6N, global axes, no supports applied
@@ -33,13 +35,15 @@ struct GeometricStiffness {
 GeometricStiffness assemble_geometric_stiffness(const Structure& s, const std::vector<double>& axial_force,
                                                 bool torsion_term);
 
-// Each beam's axial force (N, tension positive) from its end forces (forces on the beam): the mean
-// (N2 - N1) / 2, the force at midspan under a uniform axial load or self-weight along the beam.
-std::vector<double> beam_axial_forces(const std::vector<Vec12>& end_forces);
+// The global mass matrix (6N x 6N, no supports applied): the beams' masses (beam_local_mass, consistent
+// or `lumped`, with the cross-sections' `rotary_inertia` when consistent) rotated to global axes, and
+// the structure's nodal masses and rotary inertias on the diagonal (msa/modes.hpp).
+solver::SparseMatrix assemble_mass(const Structure& s, bool lumped, bool rotary_inertia);
 
-// kInvalidInput naming the first beam with end releases: the geometric stiffness of released dofs
-// would need its own condensation, so `analysis` ("buckling", "second-order analysis") refuses them.
-Status check_no_end_releases(const Structure& s, const std::string& analysis);
+// Each beam's axial force (N, tension positive) from its end forces (forces on the beam), as the
+// structure's GeometricStiffnessConvention says: the mean (N2 - N1) / 2, the force at midspan under a
+// uniform axial load or self-weight along the beam (kKinestat), or the first end's -N1 (kFrame3dd).
+std::vector<double> beam_axial_forces(const Structure& s, const std::vector<Vec12>& end_forces);
 
 // Fixed-end forces of a load case's member loads and self-weight: one per beam, local axes, end
 // releases condensed (elements/member_loads.hpp). Empty when the case has neither.

@@ -31,10 +31,6 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   }
   const LoadCase& lc = s.load_cases()[opt.load_case];
   res.load_case_name = lc.name;
-  if (Status st = check_no_end_releases(s, "buckling"); !st.ok()) {
-    res.status = st;
-    return res;
-  }
 
   res.linear = solve(s, opt.solve);
   if (!res.linear.status.ok()) {
@@ -43,7 +39,7 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
   }
   const LoadCaseResult& r = res.linear.cases[opt.load_case];
   double max_abs = 0.0, max_compression = 0.0;
-  res.axial_force = beam_axial_forces(r.beam_end_forces);
+  res.axial_force = beam_axial_forces(s, r.beam_end_forces);
   for (double N : res.axial_force) {
     max_abs = std::max(max_abs, std::abs(N));
     max_compression = std::max(max_compression, -N);

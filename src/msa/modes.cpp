@@ -33,14 +33,6 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
                                 b.id, s.materials()[b.material].id)));
       return res;
     }
-    // The mass of a released dof would have to be condensed with it (an approximation): refused.
-    if (std::any_of(b.releases.begin(), b.releases.end(), [](bool r) { return r; })) {
-      res.status = Status::Invalid(at_source(
-          b.source, fmt::format("beam '{}' has end releases, which modal analysis does not support (its mass is not "
-                                "condensed); model the hinge with a joint of zero stiffness in the released direction",
-                                b.id)));
-      return res;
-    }
   }
   if (s.beams().empty() && !nodal_masses) {
     res.status = Status::Invalid(at_source(s.source(),
@@ -88,31 +80,11 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     pre.second_order = second_order;
     pre.axial_force =
         second_order ? res.linear.second_order->axial_force[static_cast<std::size_t>(pre.load_case)]
-                     : beam_axial_forces(res.linear.cases[static_cast<std::size_t>(pre.load_case)].beam_end_forces);
+                     : beam_axial_forces(s, res.linear.cases[static_cast<std::size_t>(pre.load_case)].beam_end_forces);
     *K += assemble_geometric_stiffness(s, pre.axial_force, opt.prestress->second_order_options.torsion_term).global;
     res.prestress = std::move(pre);
   }
-  std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(144 * s.beams().size());
-  for (const Beam& b : s.beams()) {
-    const Mat12 T = beam_transformation(s.beam_axes(b));
-    const Mat12 me = T.transpose() *
-                     beam_local_mass(s.materials()[b.material], s.sections()[b.section], s.beam_length(b), opt.lumped,
-                                     opt.rotary_inertia) *
-                     T;
-    const int base[2] = {6 * b.node1, 6 * b.node2};
-    for (int a = 0; a < 2; ++a)
-      for (int c = 0; c < 2; ++c)
-        for (int k = 0; k < 6; ++k)
-          for (int l = 0; l < 6; ++l) trip.emplace_back(base[a] + k, base[c] + l, me(6 * a + k, 6 * c + l));
-  }
-  for (const NodalMass& nm : s.masses())
-    for (int d = 0; d < 3; ++d) {
-      trip.emplace_back(6 * nm.node + d, 6 * nm.node + d, nm.mass);
-      trip.emplace_back(6 * nm.node + 3 + d, 6 * nm.node + 3 + d, nm.inertia(d));
-    }
-  solver::SparseMatrix M(s.num_dofs(), s.num_dofs());
-  M.setFromTriplets(trip.begin(), trip.end());
+  const solver::SparseMatrix M = assemble_mass(s, opt.lumped, opt.rotary_inertia);
   const solver::SparseMatrix& C = map->C;
   const solver::SparseMatrix Kr = C.transpose() * *K * C;
   const solver::SparseMatrix Mr = C.transpose() * M * C;

@@ -309,7 +309,6 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     return fail(
         Status::Invalid(fmt::format("second-order iteration limit {}: give at least 1 (e.g. 50)", so.max_iterations)));
   if (Status st = s.validate(); !st.ok()) return fail(st);
-  if (Status st = check_no_end_releases(s, "a second-order analysis"); !st.ok()) return fail(st);
 
   // The linear solve: the first axial forces, the diagnosis of a singular K, the report node's
   // (elastic) Cartesian stiffness and the indices, all kept.
@@ -339,7 +338,7 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     VecX u_prev(s.num_dofs());
     for (int n = 0; n < static_cast<int>(s.nodes().size()); ++n)
       u_prev.segment<6>(6 * n) = sol.cases[c].displacement[n];
-    std::vector<double> N = beam_axial_forces(sol.cases[c].beam_end_forces);
+    std::vector<double> N = beam_axial_forces(s, sol.cases[c].beam_end_forces);
     double change = 0.0;
     bool converged = false;
     int k = 0;
@@ -370,7 +369,7 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
       change = un > 0.0 ? as_lengths(u - u_prev).norm() / un : 0.0;
       if (!std::isfinite(change)) break;
       r = post_process(s, *sys, lc, u, loads->F, loads->U0, loads->fef, &g);
-      N = beam_axial_forces(r.beam_end_forces);
+      N = beam_axial_forces(s, r.beam_end_forces);
       u_prev = u;
       converged = change <= so.tolerance;
     }

@@ -158,6 +158,13 @@ void bind_model(py::module_& m) {
       .def_readwrite("gravity", &LoadCase::gravity, "self-weight acceleration (m/s^2), global axes")
       .def_readwrite("member_loads", &LoadCase::member_loads, copy);
 
+  py::enum_<GeometricStiffnessConvention>(m, "GeometricStiffnessConvention",
+                                          "How K_G is formed (docs/stability-and-modes.md): KINESTAT (mean axial "
+                                          "force, axial term) or FRAME3DD (first end's force, no axial term; what "
+                                          "the .3dd reader sets)")
+      .value("KINESTAT", GeometricStiffnessConvention::kKinestat)
+      .value("FRAME3DD", GeometricStiffnessConvention::kFrame3dd);
+
   py::class_<Structure>(m, "Structure",
                         "The MSA model (SI units): nodes, materials, sections, beams, joints, rigid links, supports, "
                         "load cases. Each add_* returns the new item's index, used to refer to it. Build it, then "
@@ -189,6 +196,9 @@ void bind_model(py::module_& m) {
       .def_property_readonly("supports", &Structure::supports, copy)
       .def_property_readonly("load_cases", &Structure::load_cases, copy)
       .def_property_readonly("report_node", &Structure::report_node)
+      .def_property("geometric_stiffness_convention", &Structure::geometric_stiffness_convention,
+                    &Structure::set_geometric_stiffness_convention,
+                    "GeometricStiffnessConvention of buckling, the second-order solve and the modal prestress")
       .def("find_node", &Structure::find_node, py::arg("id"), "Index of the node with this id, or None.")
       .def("find_material", &Structure::find_material, py::arg("id"))
       .def("find_section", &Structure::find_section, py::arg("id"))

@@ -90,6 +90,36 @@ TEST(BeamElement, ReleaseOfEndMomentGivesProppedStiffness) {
   EXPECT_NE(bad.status().message().find("torsion"), std::string::npos);
 }
 
+// The released dofs' static shapes carry the other matrices too (condense_with_releases): a rigid
+// translation moves no released rotation, so the condensed mass keeps the beam's mass rho A L along
+// every axis, and the condensed K_G gives a rigid translation no force; the released rows are zero;
+// with X = K it is condense_releases' matrix.
+TEST(BeamElement, ReleasedShapesCondenseMassAndGeometricStiffness) {
+  const Material steel{"steel", 2.1e11, 0.81e11, 7850.0};
+  const Section s = circle_section(0.02);
+  const double L = 0.5;
+  BeamReleases rel{};
+  rel[4] = rel[5] = rel[11] = true;
+  const Mat12 K = beam_local_stiffness(steel, s, L, BeamTheory::kEulerBernoulli);
+  const auto m = condense_with_releases(K, rel, beam_local_mass(steel, s, L, false));
+  const auto g = condense_with_releases(K, rel, beam_local_geometric_stiffness(-800.0, L, 1e-4));
+  const auto k = condense_with_releases(K, rel, K);
+  const auto kc = condense_releases(K, rel);
+  ASSERT_TRUE(m.ok() && g.ok() && k.ok() && kc.ok());
+  for (int d = 0; d < 3; ++d) {
+    Vec12 r = Vec12::Zero();
+    r(d) = r(6 + d) = 1.0;
+    EXPECT_NEAR(r.dot(*m * r), steel.density * s.A * L, 1e-12 * steel.density * s.A * L) << "axis " << d;
+    EXPECT_LT((*g * r).norm(), 1e-12 * g->norm()) << "axis " << d;
+  }
+  for (int i : {4, 5, 11}) {
+    EXPECT_EQ(m->row(i).norm(), 0.0);
+    EXPECT_EQ(g->row(i).norm(), 0.0);
+  }
+  EXPECT_LT((*k - *kc).norm(), 1e-12 * kc->norm());
+  EXPECT_LT((*m - m->transpose()).norm(), 1e-15 * m->norm());
+}
+
 TEST(Section, RectangleTorsionConstantAgainstTables) {
   // Roark/Timoshenko table: J = beta a b^3 with beta(a/b=1) = 0.1406, beta(2) = 0.229, beta(10) = 0.312.
   EXPECT_NEAR(rectangle_torsion_constant(1, 1), 0.1406, 2e-4);

@@ -1,5 +1,6 @@
 // The beam's geometric stiffness (elements/beam_element.hpp): symmetry, rigid translations, the
-// closed-form entries of McGuire-Gallagher-Ziemian eq. (9.18), and the single-element Euler load.
+// closed-form entries of McGuire-Gallagher-Ziemian eq. (9.18), the single-element Euler load, and the
+// shear-deformable (Timoshenko) terms of Frame3DD's variant.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,6 +59,48 @@ TEST(GeometricStiffness, OneElementCantileverBuckling) {
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::Matrix2d> ges(K, G);
   const double P = ges.eigenvalues()(0);
   EXPECT_NEAR(P * L * L / EI, 2.4860, 1e-4);
+}
+
+// The shear-deformable terms (GeometricStiffnessTerms::shear, Frame3DD's geometric_K) are the
+// consistent K_G N * integral(w_i' w_j' dx) of the Timoshenko beam's cubic shape functions for the
+// transverse displacement (Friedman & Kosmatka, "An improved two-node Timoshenko beam finite
+// element", Computers & Structures 47 (1993) 473-481, eq. (21)): integrated here by 4-point Gauss
+// (exact for their degree-4 products), against the matrix for Phi = 0.3 and 0.05 in the two planes.
+TEST(GeometricStiffness, ShearTermsAreTheConsistentMatrixOfTimoshenkoShapeFunctions) {
+  const double N = -700.0, L = 1.3;
+  GeometricStiffnessTerms terms;
+  terms.shear = {0.3, 0.05};
+  terms.axial = false;
+  const Mat12 k = beam_local_geometric_stiffness(N, L, terms);
+  // d/dx of (w1, th1, w2, th2)'s shape functions at xi = x / L.
+  auto slopes = [L](double phi, double xi) {
+    const double c = 1.0 / (1.0 + phi);
+    return Eigen::Vector4d(c * (6 * xi * xi - 6 * xi - phi) / L, c * (3 * xi * xi - (4 + phi) * xi + 1 + phi / 2),
+                           c * (-6 * xi * xi + 6 * xi + phi) / L, c * (3 * xi * xi - (2 - phi) * xi - phi / 2));
+  };
+  const double g[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
+  const double w[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
+  for (int plane = 0; plane < 2; ++plane) {
+    const double phi = plane == 0 ? terms.shear.phi_y : terms.shear.phi_z;
+    Eigen::Matrix4d ref = Eigen::Matrix4d::Zero();
+    for (int q = 0; q < 4; ++q) {
+      const Eigen::Vector4d d = slopes(phi, 0.5 * (g[q] + 1));
+      ref += N * 0.5 * L * w[q] * d * d.transpose();
+    }
+    // x-y plane (uy, rz) as the functions are written; x-z plane (uz, ry) with ry = -w'.
+    const int dy[4] = {1, 5, 7, 11}, dz[4] = {2, 4, 8, 10};
+    const double sz[4] = {1, -1, 1, -1};
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const double mine = plane == 0 ? k(dy[i], dy[j]) : sz[i] * sz[j] * k(dz[i], dz[j]);
+        EXPECT_NEAR(mine, ref(i, j), 1e-12 * std::abs(N) * L) << "plane " << plane << " " << i << j;
+      }
+  }
+  EXPECT_EQ(k(0, 0), 0.0);  // no axial term asked
+  EXPECT_EQ(k(0, 6), 0.0);
+  // Phi = 0 and the axial term: the Euler-Bernoulli matrix.
+  EXPECT_TRUE(beam_local_geometric_stiffness(N, L, GeometricStiffnessTerms{2e-4, true, {}}) ==
+              beam_local_geometric_stiffness(N, L, 2e-4));
 }
 
 }  // namespace

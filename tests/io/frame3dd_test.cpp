@@ -10,11 +10,14 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include "frame3dd_example_b2015.hpp"
 #include "kinestat/core/units.hpp"
 #include "kinestat/io/frame3dd.hpp"
 #include "kinestat/msa/modes.hpp"
 #include "kinestat/msa/static_analysis.hpp"
+#include "msa/assembly.hpp"
 
 namespace kinestat::io {
 namespace {
@@ -462,29 +465,31 @@ constexpr std::array<std::array<double, 6>, 3> kExampleB2015Apex = {{
     {0.000249, -0.013374, -0.021714, 0.048696, -0.171587, -0.081501},
 }};
 
-// Frame3DD's second-order analysis is the same iteration on a slightly different element
-// (its src/frame3dd.c, geometric_K and assemble_K): the axial force of K_G is each element's force
-// at its first end, where kinestat takes the mean of both ends (they differ under self-weight along
-// the member: 113.5 and 110.8 N in member 1 of case 1), and its K_G has shear-deformation terms (here
-// ~2e-4 of it); its torsion term's J/A is kinestat's too for a .3dd file (the reader sets the section's
-// polar moment Ip = J). So the apex agrees to the size of that difference, not to the printed digits:
-// measured at most 7.55e-5 (case 3 rx: 0.0486205 against 0.048696; cases 1 and 2 within 2.8e-5; the
-// same with (Iy + Iz)/A in the torsion term), asserted within twice that, 1.5e-4 (mm and rad). With
-// Frame3DD's first-end axial force (and J/A) put into kinestat for a trial (not kept: the mean is the
-// better estimate of a member's axial force under self-weight), all 18 values agreed within 1.5e-6,
-// so it is what makes the difference. The linear solve misses 7 of the 18 by more than the tolerance
-// (case 3 ux: 0.000490 against 0.000249; ry by 7.7e-3): the comparison tells the second order apart.
-TEST(Frame3ddExampleB2015, SecondOrderApexAgreesWithPublishedOutputToTheFormulationDifference) {
+// Frame3DD's second-order analysis is the same iteration with its own geometric stiffness (its
+// src/frame3dd.c, assemble_K and geometric_K): each element's axial force at its first end, no axial
+// term, the shear terms of Timoshenko members, J/A in the torsion term. The .3dd reader gives the
+// structure that convention (msa::GeometricStiffnessConvention::kFrame3dd), and the apex agrees to
+// the printed digits: measured at most 4.5e-7 (mm, rad; half a printed digit is 5e-7), asserted
+// within one printed digit, 1e-6. kinestat's own convention (the mean of the end forces, which differ
+// under self-weight: 113.5 and 110.8 N in member 1 of case 1, and the axial term) gives up to 7.59e-5
+// (case 3 rx): asserted above 2e-5, so the comparison tells the conventions apart. The linear solve
+// misses 7 of the 18 by more than 1.5e-4 (case 3 ux: 0.000490 against 0.000249; ry by 7.7e-3).
+TEST(Frame3ddExampleB2015, SecondOrderApexAgreesWithPublishedOutputToThePrintedDigits) {
   Frame3ddAnalysis analysis;
   const StatusOr<msa::Structure> s = read_frame3dd_string(kExampleB2015, "exB.3dd", units("N-mm"), nullptr, &analysis);
   ASSERT_TRUE(s.ok()) << s.status().message();
   ASSERT_TRUE(analysis.geometric_stiffness);
+  EXPECT_EQ(s->geometric_stiffness_convention(), msa::GeometricStiffnessConvention::kFrame3dd);
+  msa::Structure mean = *s;
+  mean.set_geometric_stiffness_convention(msa::GeometricStiffnessConvention::kKinestat);
   const msa::Solution lin = msa::solve(*s);
   const msa::Solution sol = msa::solve_second_order(*s);
-  ASSERT_TRUE(sol.status.ok() && lin.status.ok()) << sol.status.message() << lin.status.message();
+  const msa::Solution own = msa::solve_second_order(mean);
+  ASSERT_TRUE(sol.status.ok() && lin.status.ok() && own.status.ok())
+      << sol.status.message() << lin.status.message() << own.status.message();
   ASSERT_EQ(sol.cases.size(), 3u);
-  constexpr double kTolerance = 1.5e-4;  // mm, rad
-  double worst = 0.0;
+  constexpr double kTolerance = 1e-6;  // mm, rad
+  double worst = 0.0, worst_own = 0.0;
   int linear_misses = 0;
   for (std::size_t c = 0; c < 3; ++c)
     for (int d = 0; d < 6; ++d) {
@@ -493,13 +498,111 @@ TEST(Frame3ddExampleB2015, SecondOrderApexAgreesWithPublishedOutputToTheFormulat
       const double ours = sol.cases[c].displacement[0][d] / scale, linear = lin.cases[c].displacement[0][d] / scale;
       EXPECT_NEAR(ours, printed, kTolerance) << "case " << c + 1 << " dof " << d;
       worst = std::max(worst, std::abs(ours - printed));
-      if (std::abs(linear - printed) > kTolerance) ++linear_misses;
+      worst_own = std::max(worst_own, std::abs(own.cases[c].displacement[0][d] / scale - printed));
+      if (std::abs(linear - printed) > 1.5e-4) ++linear_misses;
     }
   std::printf(
-      "Frame3DD example B (2015), second order: largest difference %.3g (mm, rad); the linear solve "
-      "misses %d of 18 values by more than %.1e\n",
-      worst, linear_misses, kTolerance);
+      "Frame3DD example B (2015), second order: largest difference %.3g (mm, rad); kinestat's convention "
+      "%.3g; the linear solve misses %d of 18 values by more than 1.5e-4\n",
+      worst, worst_own, linear_misses);
+  EXPECT_GT(worst_own, 2e-5);
   EXPECT_GE(linear_misses, 7);
+}
+
+// Frame3DD's modal analysis (its src/main.c of 2014-2015, after the static load cases) does not remove
+// the supported dofs: it sets each one's K[i][i] = 1e4 trace(K_free) and M[i][i] = trace(M_free), both
+// traces over the free dofs in the file's units, and zeroes "K[j][i]=K[i][j]=M[j][i]=M[i][j] = 0.0"
+// for j > i only, while its eigensolver (src/eig.c: subspace, ldl_dcmp, xAy1 "A in upper triangle
+// only") reads the upper triangle. So a support whose dof numbers come after a free dof's stays
+// coupled to it through K and M: a stiff spring (here 1.8e10, in N/mm and N mm/rad) with a heavy mass
+// (126.5, in t and t mm^2),
+// not a fixed dof. That is an artifact of Frame3DD's solver, not of the structure, and kinestat's
+// modes fix the supports exactly; on example B (node 1 free, nodes 2-5 supported) it lowers
+// Frame3DD's first three frequencies by 9.6e-6 (the apex rotations couple to the members' far ends)
+// and the next three by 1.5e-7. Reproduced here on kinestat's own matrices (K + K_G of case 3's
+// second-order axial forces, the consistent M) in Frame3DD's units (N, mm, t), it gives the printed
+// frequencies: measured modes 1, 3-6 within 3.0e-7 Hz (half a printed digit is 5e-7), mode 2
+// 7.8e-7 Hz (4.1e-8) below; asserted within one printed digit, 1e-6 Hz. Mode 2's rest is not the
+// single-precision input (Frame3DD's float density is 3.0e-8 low, on 2 % of the mass: 6e-10); most
+// likely Frame3DD's eigensolver, which stopped after 2 subspace iterations (exB.out: "MATRIX
+// ITERATIONS: 2") on the change of its 6th eigenvalue alone (eig.c), next to the close mode 1. The
+// same matrices with the supports fixed (as kinestat's modes fix them) give +9.6e-6 (modes 1-3) and
+// +1.5e-7 (4-6), kinestat modes' frequencies (tests/cli/frame3dd_command_test.cpp): the support
+// treatment is the whole difference.
+TEST(Frame3ddExampleB2015, FrequenciesWithFrame3ddsSupportTreatmentToThePrintedDigits) {
+  const StatusOr<msa::Structure> s = read_frame3dd_string(kExampleB2015, "exB.3dd", units("N-mm"));
+  ASSERT_TRUE(s.ok()) << s.status().message();
+  const msa::Solution sol = msa::solve_second_order(*s);
+  ASSERT_TRUE(sol.status.ok()) << sol.status.message();
+  const StatusOr<solver::SparseMatrix> Ks = msa::assemble_stiffness(*s);
+  ASSERT_TRUE(Ks.ok());
+  const int n = s->num_dofs();
+  // In N, mm, t: u_SI = S u_file (S: 1e-3 on translations), energies in N mm = 1e3 J.
+  VecX S = VecX::Ones(n);
+  for (int i = 0; i < n; ++i)
+    if (i % 6 < 3) S(i) = 1e-3;
+  const MatX K = 1e3 * S.asDiagonal() *
+                 MatX(*Ks + msa::assemble_geometric_stiffness(*s, sol.second_order->axial_force[2], true).global) *
+                 S.asDiagonal();
+  const MatX M = 1e3 * S.asDiagonal() * MatX(msa::assemble_mass(*s, false, true)) * S.asDiagonal();
+  std::vector<bool> fixed(static_cast<std::size_t>(n), false);
+  for (const msa::Support& sup : s->supports())
+    for (std::size_t d = 0; d < 6; ++d)
+      if (sup.fixed[d]) fixed[static_cast<std::size_t>(6 * sup.node) + d] = true;
+  double traceK = 0.0, traceM = 0.0;
+  std::vector<int> free;
+  for (int i = 0; i < n; ++i)
+    if (!fixed[static_cast<std::size_t>(i)]) {
+      traceK += K(i, i);
+      traceM += M(i, i);
+      free.push_back(i);
+    }
+  ASSERT_EQ(free.size(), 6u);
+  MatX Kf = K, Mf = M;  // Frame3DD's: the upper triangle's entry (i, j), i < j, is kept unless i is fixed
+  for (int i = 0; i < n; ++i)
+    for (int j = i; j < n; ++j) {
+      if (!fixed[static_cast<std::size_t>(i)]) continue;
+      Kf(i, j) = Kf(j, i) = i == j ? 1e4 * traceK : 0.0;
+      Mf(i, j) = Mf(j, i) = i == j ? traceM : 0.0;
+    }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> frame3dd(Kf, Mf, Eigen::EigenvaluesOnly);
+  MatX Kr(6, 6), Mr(6, 6);
+  for (int a = 0; a < 6; ++a)
+    for (int b = 0; b < 6; ++b) Kr(a, b) = K(free[a], free[b]), Mr(a, b) = M(free[a], free[b]);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<MatX> exact(Kr, Mr, Eigen::EigenvaluesOnly);
+  double worst = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    const double printed = kExampleB2015Frequencies[static_cast<std::size_t>(k)];
+    const double f = std::sqrt(frame3dd.eigenvalues()(k)) / (2 * std::numbers::pi);
+    const double f_exact = std::sqrt(exact.eigenvalues()(k)) / (2 * std::numbers::pi);
+    std::printf("exB mode %d: Frame3DD %.6f Hz; its supports %.7f (%+.2e Hz); fixed supports %.7f (%+.2e)\n", k + 1,
+                printed, f, f - printed, f_exact, f_exact / printed - 1.0);
+    EXPECT_NEAR(f, printed, 1e-6) << "mode " << k + 1;
+    worst = std::max(worst, std::abs(f - printed));
+  }
+  std::printf("Frame3DD example B (2015) with Frame3DD's support treatment: within %.2e Hz of the printed digits\n",
+              worst);
+  // kinestat modes on the structure, with the reader's convention and with kinestat's own (the mean
+  // axial force and the axial term N/L): the first gives the fixed-support frequencies above (to the
+  // eigensolvers' 1e-12), the second differs from the printed ones by more than the support treatment
+  // in modes 4-6 (the apex translations, which the axial term of the compressed members softens).
+  msa::ModalOptions opt;
+  opt.prestress = msa::ModalPrestress{.load_case = 2, .second_order = true, .second_order_options = {}};
+  msa::Structure mean = *s;
+  mean.set_geometric_stiffness_convention(msa::GeometricStiffnessConvention::kKinestat);
+  const msa::ModalResult frame3dd_kg = msa::modal_analysis(*s, opt), own = msa::modal_analysis(mean, opt);
+  ASSERT_TRUE(frame3dd_kg.status.ok() && own.status.ok()) << frame3dd_kg.status.message() << own.status.message();
+  ASSERT_TRUE(frame3dd_kg.modes.size() >= 6 && own.modes.size() >= 6);
+  for (std::size_t k = 0; k < 6; ++k) {
+    const double printed = kExampleB2015Frequencies[k];
+    const double f_exact = std::sqrt(exact.eigenvalues()(static_cast<int>(k))) / (2 * std::numbers::pi);
+    std::printf("exB mode %zu: kinestat modes %+.2e, with kinestat's K_G convention %+.2e\n", k + 1,
+                frame3dd_kg.modes[k].frequency / printed - 1.0, own.modes[k].frequency / printed - 1.0);
+    EXPECT_NEAR(frame3dd_kg.modes[k].frequency, f_exact, 1e-10 * f_exact) << "mode " << k + 1;
+    if (k >= 3) {
+      EXPECT_GT(std::abs(own.modes[k].frequency / printed - 1.0), 1e-6) << "mode " << k + 1;
+    }
+  }
 }
 
 // A cantilever with one load of each kind: what each record becomes (SI, local axes, one kinestat

@@ -13,8 +13,11 @@ namespace kinestat::msa {
 
 inline const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
 
+// released_ends: the first beam's bending rotations released at node 0 and the last one's at node n
+// (local ry, rz), so that clamped end nodes make a pinned-pinned line (pinned_by_releases).
 inline Structure straight(double L, int n, const Section& sec, BeamTheory th = BeamTheory::kEulerBernoulli,
-                          const Material& mat = kSteel, const Vec3& dir = Vec3::UnitX()) {
+                          const Material& mat = kSteel, bool released_ends = false,
+                          const Vec3& dir = Vec3::UnitX()) {
   Structure s;
   const int m = s.add_material(mat);
   const int c = s.add_section(sec);
@@ -27,27 +30,19 @@ inline Structure straight(double L, int n, const Section& sec, BeamTheory th = B
     b.material = m;
     b.section = c;
     b.theory = th;
+    if (released_ends && i == 0) b.releases[4] = b.releases[5] = true;
+    if (released_ends && i == n - 1) b.releases[10] = b.releases[11] = true;
     s.add_beam(b);
   }
   return s;
 }
 
-// One 1 m beam 'hinged' clamped at node 0, its second end released about local z, pushed by 1 kN
-// along its axis: the end releases that buckling and the second-order solve refuse.
-inline Structure hinged_beam(const Section& sec) {
-  Structure s;
-  Beam b;
-  b.id = "hinged";
-  b.material = s.add_material(kSteel);
-  b.section = s.add_section(sec);
-  b.node1 = s.add_node("a", Vec3(0, 0, 0));
-  b.node2 = s.add_node("b", Vec3(1, 0, 0));
-  b.releases[11] = true;
-  s.add_beam(b);
+// A pinned-pinned line made by end releases: straight(..., released_ends = true) with node 0 clamped
+// and node n clamped but free along x (the axis), so the end rotations are the beams' released dofs.
+inline Structure pinned_by_releases(double L, int n, const Section& sec, const Material& mat = kSteel) {
+  Structure s = straight(L, n, sec, BeamTheory::kEulerBernoulli, mat, true);
   s.add_support({0, kAllDofs, Mat3::Identity()});
-  LoadCase lc{.name = "axial"};
-  lc.loads.push_back({1, Vec6::Unit(0) * -1000.0});
-  s.add_load_case(lc);
+  s.add_support({n, {false, true, true, true, true, true}, Mat3::Identity()});
   return s;
 }
 

@@ -18,7 +18,7 @@ namespace {
 // A straight beam from the origin along `dir` in `n` elements, clamped at node "0".
 Structure cantilever(const Vec3& dir, double L, int n, const Section& sec,
                      BeamTheory th = BeamTheory::kEulerBernoulli) {
-  Structure s = straight(L, n, sec, th, kSteel, dir);
+  Structure s = straight(L, n, sec, th, kSteel, false, dir);
   s.add_support({0, kAllDofs, Mat3::Identity()});
   return s;
 }

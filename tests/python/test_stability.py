@@ -130,3 +130,17 @@ def test_errors_raise():
     with pytest.raises(ks.InputError) as e:
         ks.msa.modal_analysis(pulled)  # the material has no density and there are no nodal masses
     assert "density" in str(e.value)
+
+
+def test_geometric_stiffness_convention(source_dir):
+    # The structure's K_G convention (docs/stability-and-modes.md): KINESTAT by default, FRAME3DD as the
+    # .3dd reader sets it. On the straight column (no load along the members) the first end's axial
+    # force is the mean, and the axial term does not couple to the lateral buckling: the same lambda_1.
+    s = ks.io.read_structure_yaml(str(source_dir / "models/euler_column.yaml"))
+    assert s.geometric_stiffness_convention == ks.msa.GeometricStiffnessConvention.KINESTAT
+    ours = ks.msa.buckling(s).modes[0].load_factor
+    s.geometric_stiffness_convention = ks.msa.GeometricStiffnessConvention.FRAME3DD
+    assert s.geometric_stiffness_convention == ks.msa.GeometricStiffnessConvention.FRAME3DD
+    r = ks.msa.buckling(s)
+    assert r.modes[0].load_factor == pytest.approx(ours, rel=1e-12)
+    np.testing.assert_allclose(r.axial_force, -1000.0, rtol=1e-9)

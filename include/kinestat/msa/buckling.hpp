@@ -31,13 +31,14 @@ struct BucklingMode {
 };
 
 struct BucklingResult {
-  // kInvalidInput (bad model, no compressed beam, a beam with end releases), kSingular (K singular:
+  // kInvalidInput (bad model, no compressed beam), kSingular (K singular:
   // see linear.singularity), kNotConverged (the eigensolver did not converge), kInternal.
   Status status;
   Solution linear;  // the static solve of every load case (its status: see `status`)
   int load_case = 0;
   std::string load_case_name;
-  std::vector<double> axial_force;  // per beam, N (positive in tension): (N2 - N1) / 2 of its end forces
+  std::vector<double>
+      axial_force;  // per beam, N (positive in tension), the N of K_G: (N2 - N1) / 2, or -N1 (kFrame3dd)
   std::vector<BucklingMode> modes;  // ascending load factor; may be fewer than asked (see docs)
   int num_free_dofs = 0;
 };

@@ -41,7 +41,7 @@ struct ModalPrestressReport {
   int load_case = 0;
   std::string load_case_name;
   bool second_order = false;
-  std::vector<double> axial_force;  // per beam, N (tension positive): (N2 - N1) / 2, the N of K_G
+  std::vector<double> axial_force;  // per beam, N (tension positive), the N of K_G: (N2 - N1) / 2, or -N1 (kFrame3dd)
 };
 
 struct VibrationMode {
@@ -54,8 +54,8 @@ struct VibrationMode {
 };
 
 struct ModalResult {
-  // kInvalidInput (bad model, a beam without density in a structure without nodal masses, a beam with
-  // end releases, a prestress at or beyond its case's critical load), kSingular (K singular: see
+  // kInvalidInput (bad model, a beam without density in a structure without nodal masses, a
+  // prestress at or beyond its case's critical load), kSingular (K singular: see
   // `linear.singularity`), kNotConverged (the eigensolver, or the second-order solve of a prestress:
   // its message says which), kInternal.
   Status status;

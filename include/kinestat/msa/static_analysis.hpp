@@ -117,9 +117,8 @@ Solution solve(const Structure& s, const SolveOptions& options = {});
 // force N; then (K + K_G(N)) u = F is solved (K_G: elements/beam_element.hpp, as buckling uses it),
 // N recomputed from the new end forces, and so on until the displacements change by less than
 // options.tolerance. Joints and rigid links carry no K_G. Fails as solve() does (kInvalidInput,
-// kSingular with the diagnosis of the elastic K), and with kInvalidInput for beams with end
-// releases, and kNotConverged when a case's loads reach its critical (buckling) load (K + K_G not
-// positive definite: the iteration would find an unstable equilibrium) or after
+// kSingular with the diagnosis of the elastic K), and kNotConverged when a case's loads reach its critical (buckling)
+// load (K + K_G not positive definite: the iteration would find an unstable equilibrium) or after
 // options.max_iterations without convergence. Not with SolveOptions::regularize (kInvalidInput).
 Solution solve_second_order(const Structure& s, const SecondOrderOptions& options = {},
                             const SolveOptions& solve_options = {});

@@ -123,6 +123,14 @@ struct LoadCase {
   std::vector<MemberLoad> member_loads{};
 };
 
+// How the beams' geometric stiffness K_G is formed (buckling, the second-order solve and the prestress
+// of modal analysis; docs/stability-and-modes.md). kKinestat, the default: each beam's axial force is
+// the mean of its end forces, N = (N2 - N1) / 2, and K_G has the axial term (N/L) [1 -1; -1 1].
+// kFrame3dd, what Frame3DD does and what io::read_frame3dd sets: N is the force at the beam's first
+// end (-N1), and K_G has no axial term. Either way a Timoshenko beam's K_G has the shear-deformation
+// terms (elements/beam_element.hpp, GeometricStiffnessTerms).
+enum class GeometricStiffnessConvention { kKinestat, kFrame3dd };
+
 class Structure {
  public:
   // Building. Each add_* returns the new item's index. Names must be unique per kind.
@@ -139,6 +147,7 @@ class Structure {
   void set_title(std::string t) { title_ = std::move(t); }
   // Where the structure was read from (a file name): starts the messages about the whole structure.
   void set_source(std::string s) { source_ = std::move(s); }
+  void set_geometric_stiffness_convention(GeometricStiffnessConvention c) { kg_convention_ = c; }
 
   // Checks what the assembly relies on: valid indices, unique ids, every value finite and in its
   // physical range (core/input_checks.hpp), positive lengths and section properties, coincident joint
@@ -159,6 +168,7 @@ class Structure {
   const std::vector<NodalMass>& masses() const { return masses_; }
   const std::vector<LoadCase>& load_cases() const { return load_cases_; }
   std::optional<int> report_node() const { return report_node_; }
+  GeometricStiffnessConvention geometric_stiffness_convention() const { return kg_convention_; }
 
   std::optional<int> find_node(const std::string& id) const;
   std::optional<int> find_material(const std::string& id) const;
@@ -186,6 +196,7 @@ class Structure {
   std::vector<NodalMass> masses_;
   std::vector<LoadCase> load_cases_;
   std::optional<int> report_node_;
+  GeometricStiffnessConvention kg_convention_ = GeometricStiffnessConvention::kKinestat;
 };
 
 }  // namespace kinestat::msa
