@@ -16,8 +16,7 @@ inline const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
 // released_ends: the first beam's bending rotations released at node 0 and the last one's at node n
 // (local ry, rz), so that clamped end nodes make a pinned-pinned line (pinned_by_releases).
 inline Structure straight(double L, int n, const Section& sec, BeamTheory th = BeamTheory::kEulerBernoulli,
-                          const Material& mat = kSteel, bool released_ends = false,
-                          const Vec3& dir = Vec3::UnitX()) {
+                          const Material& mat = kSteel, bool released_ends = false, const Vec3& dir = Vec3::UnitX()) {
   Structure s;
   const int m = s.add_material(mat);
   const int c = s.add_section(sec);
