@@ -115,7 +115,9 @@ TEST(DesignRobotCommand, LoadedModeEqualsItsDirectMap) {
 }
 
 TEST(DesignRobotCommand, TableNamesTheBestAndTheUnits) {
-  const CliRun r = run_cli(delta_design({"arm=250:350"}, {"--steps", "2"}));
+  std::vector<std::string> args = delta_design({"arm=250:350"}, {"--steps", "2"});
+  std::erase(args, "--quiet");  // --quiet drops the report
+  const CliRun r = run_cli(args);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("parameters in the units of"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("lengths in mm"), std::string::npos) << r.out;
