@@ -3,7 +3,7 @@
 The Python API mirrors the C++ API (docs/python.md): the C++ namespaces are submodules
 
     kinestat            core and elements: Material, Section, stiffness_indices, ... and the exceptions
-    kinestat.solver     sparse Cholesky options and reports
+    kinestat.solver     linear-solver options and reports
     kinestat.msa        Structure -> solve() -> Solution, Workspace for posture sweeps
     kinestat.vjm        Chain, equilibrium, unloaded and loaded stiffness
     kinestat.fea        meshes and the FEA link stiffness (with the result cache)

@@ -1,2 +1,2 @@
-"""Sparse Cholesky options and factorization reports (C++ kinestat::solver)."""
+"""Linear-solver options and factorization reports (C++ kinestat::solver)."""
 from ._kinestat.solver import *  # noqa: F401,F403

@@ -8,9 +8,9 @@
 
 namespace kinestat::cli {
 
-void add_output_options(CLI::App& cmd, OutputOptions& o, const std::string& schema) {
+void add_output_options(CLI::App& cmd, OutputOptions& o, const std::string& schema, const std::string& doc) {
   cmd.add_option("--json", o.json,
-                 "write the results as JSON, SI units (schema: docs/results-json.md, " + schema +
+                 "write the results as JSON, SI units (schema: " + doc + ", " + schema +
                      ") to FILE, or to stdout with '-' (the report then goes to stderr)");
   cmd.add_flag("--quiet", o.quiet, "print no report and no progress (errors still go to stderr)");
 }

@@ -20,8 +20,9 @@ struct OutputOptions {
   bool quiet = false;  // no report and no progress (errors still go to stderr)
 };
 
-// Adds --json and --quiet; `schema` names the JSON's section of docs/results-json.md.
-void add_output_options(CLI::App& cmd, OutputOptions& o, const std::string& schema);
+// Adds --json and --quiet; `schema` names the JSON's section of `doc`.
+void add_output_options(CLI::App& cmd, OutputOptions& o, const std::string& schema,
+                        const std::string& doc = "docs/results-json.md");
 
 class Output {
  public:

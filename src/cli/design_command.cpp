@@ -38,18 +38,16 @@
 
 namespace kinestat::cli {
 
-Status write_sweep_json(nlohmann::json j, const std::string& path, double seconds, std::size_t postures, int threads,
-                        Context& ctx, std::vector<std::string>& written) {
+Status write_sweep_json(Output& out, const OutputOptions& options, const std::function<nlohmann::json()>& make,
+                        double seconds, std::size_t postures, int threads, std::vector<std::string>& written) {
+  if (!out.json_wanted()) return Status::Ok();
+  nlohmann::json j = make();
   j["timing"] = {{"seconds", seconds},
                  {"postures", postures},
                  {"postures_per_second", static_cast<double>(postures) / seconds},
                  {"threads", threads == 0 ? "all cores" : std::to_string(threads)}};
-  if (path == "-") {
-    ctx.out << j.dump() << "\n";
-    return Status::Ok();
-  }
-  if (Status s = io::write_json(path, j); !s.ok()) return s;
-  written.push_back(path);
+  if (Status s = out.write_json(j); !s.ok()) return s;
+  if (options.json != "-") written.push_back(options.json);
   return Status::Ok();
 }
 
@@ -69,8 +67,8 @@ struct RobotDesignArgs {
   double near_singular = mechanisms::MapOptions{}.near_singular_threshold;
   int threads = 0;
   double max_postures = mechanisms::kDefaultMaxRobotDesignPostures;
-  std::string json, vti;
-  bool quiet = false;
+  std::string vti;
+  OutputOptions out;  // --json FILE|-, --quiet
 };
 
 constexpr const char* kRobotDesignCommand = "design";
@@ -227,7 +225,7 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
     if (!group.ok()) return fail(group.status());
     if (!solver::parallel_running() && launcher_rank() != 0) return kExitOk;  // no MPI: rank 0 runs it all
     rank = group->rank;
-    if (rank != 0) a.json.clear(), a.vti.clear(), a.quiet = true;
+    if (rank != 0) a.out.json.clear(), a.vti.clear(), a.out.quiet = true;
     if (Status s = solver::same_on_every_rank("the command line", ctx.command_line); !s.ok()) return fail(s);
   }
   // A file one rank cannot read stops every rank (the others would wait for it in the sweep).
@@ -244,14 +242,14 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
   // The links' `fea:` springs are computed for the first design and reused (they take no parameters).
   std::map<int, Mat6> fea_springs;
   const RobotDesignFactory factory = [&](const std::vector<std::pair<std::string, double>>& values) {
-    return load_robot_model(ctx, "design", path, a.quiet, values, &fea_springs);
+    return load_robot_model(ctx, "design", path, a.out.quiet, values, &fea_springs);
   };
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   StatusOr<RobotDesignSweep> sweep = Status::Ok();
   {
     Progress progress(ctx.err, "kinestat design", "postures");
-    if (!a.quiet) o.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+    if (!a.out.quiet) o.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
     sweep = robot_design_sweep(factory, o);
   }
   if (!sweep.ok()) return fail(sweep.status());
@@ -265,15 +263,14 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
     if (Status st = io::write_robot_design_sweep_vti(a.vti, s, units); !st.ok()) return fail(st);
     written.push_back(a.vti);
   }
-  const bool json_to_stdout = a.json == "-";
-  if (!a.json.empty())
-    if (Status st = write_sweep_json(io::robot_design_sweep_to_json(s, a.target, units), a.json, seconds, postures,
-                                     a.threads, ctx, written);
-        !st.ok())
-      return fail(st);
-  if (json_to_stdout) return kExitOk;
+  Output output(ctx, a.out);
+  if (Status st = write_sweep_json(
+          output, a.out, [&] { return io::robot_design_sweep_to_json(s, a.target, units); }, seconds, postures,
+          a.threads, written);
+      !st.ok())
+    return fail(st);
 
-  auto& out = ctx.out;
+  std::ostream& out = output.report();
   const bool volume = s.volume();
   const char* unit = volume ? "mm^3" : "mm^2";
   std::string swept;
@@ -381,9 +378,8 @@ void register_design_command(CLI::App& app, Context& ctx) {
       ->add_option("--max-postures", robot->max_postures,
                    "refuse sweeps of more designs x region points than this (default 2e6, about 8 min on 2 cores)")
       ->check(CLI::PositiveNumber);
-  design->add_option("--json", robot->json, "write every design and the best as JSON ('-': to stdout, nothing else)");
   design->add_option("--vti", robot->vti, "write the design map (one to three parameters) as VTK ImageData (.vti)");
-  design->add_flag("--quiet", robot->quiet, "no progress on stderr");
+  add_output_options(*design, robot->out, "kinestat-robot-design-sweep", "docs/maps.md");
   design->callback([design, robot, &ctx] {
     if (!design->get_subcommands().empty()) return;  // fivebar or orthoglide ran
     ctx.exit_code = run_robot_design(*robot, ctx);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include "cli/command_output.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/units.hpp"
@@ -24,10 +26,10 @@ namespace kinestat::cli {
 void add_orthoglide_design(CLI::App* design, Context& ctx);
 void add_five_bar_design(CLI::App* design, Context& ctx);
 
-// A sweep's JSON with its timing: on stdout for "-" (nothing else goes there), else into `path`,
-// added to `written`.
-Status write_sweep_json(nlohmann::json j, const std::string& path, double seconds, std::size_t postures, int threads,
-                        Context& ctx, std::vector<std::string>& written);
+// A sweep's JSON and its timing, written through `out` (--json FILE or -); a file is added to
+// `written` for the report's "wrote" lines. Ok without --json (the JSON is not made then).
+Status write_sweep_json(Output& out, const OutputOptions& options, const std::function<nlohmann::json()>& make,
+                        double seconds, std::size_t postures, int threads, std::vector<std::string>& written);
 
 // The options every design sweep shares, checked, into its options `o`: --min-stiffness (N/mm, if
 // given), --near-singular, --threads, --max-postures.

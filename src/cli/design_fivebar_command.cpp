@@ -48,8 +48,8 @@ struct FiveBarDesignArgs {
   double near_singular = mechanisms::MapOptions{}.near_singular_threshold;
   int threads = 0;
   double max_postures = mechanisms::kDefaultMaxDesignPostures;
-  std::string vti, png, json;
-  bool quiet = false;
+  std::string vti, png;
+  OutputOptions out;  // --json FILE|-, --quiet
 };
 
 constexpr const char* kFiveBarCommand = "design fivebar";
@@ -116,7 +116,7 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
   StatusOr<FiveBarDesignSweep> sweep = Status::Ok();
   {
     Progress progress(ctx.err, "kinestat design fivebar", "postures");
-    if (!a.quiet) o.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+    if (!a.out.quiet) o.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
     sweep = sweep_five_bar_designs(o);
   }
   if (!sweep.ok()) return fail(sweep.status());
@@ -143,15 +143,13 @@ int run_five_bar_design(const FiveBarDesignArgs& a, Context& ctx) {
     if (Status s = io::write_design_sweep_png(a.png, *sweep); !s.ok()) return fail(s);
     written.push_back(a.png);
   }
-  const bool json_to_stdout = a.json == "-";
-  if (!a.json.empty())
-    if (Status s =
-            write_sweep_json(io::design_sweep_to_json(*sweep), a.json, seconds, postures, a.threads, ctx, written);
-        !s.ok())
-      return fail(s);
-  if (json_to_stdout) return kExitOk;
+  Output output(ctx, a.out);
+  if (Status s = write_sweep_json(
+          output, a.out, [&] { return io::design_sweep_to_json(*sweep); }, seconds, postures, a.threads, written);
+      !s.ok())
+    return fail(s);
 
-  auto& out = ctx.out;
+  std::ostream& out = output.report();
   const MapGrid& d = sweep->designs;
   out << fmt::format("{} design sweep: {} x {} designs, r1 {}, r2 {}, r3 = {:g} mm\n", sweep->description,
                      d.dimensions[0], d.dimensions[1], mm_range(o.r1), mm_range(o.r2), o.base.params.r3 / kMm);
@@ -215,8 +213,7 @@ void add_five_bar_design(CLI::App* design, Context& ctx) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--vti", a->vti, "write the design map (x = r1, y = r2 in m) as VTK ImageData (.vti)");
   cmd->add_option("--png", a->png, "write the design map as a PNG (share in %, r1 and r2 in mm)");
-  cmd->add_option("--json", a->json, "write every design's shares as JSON ('-': to stdout, nothing else on stdout)");
-  cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
+  add_output_options(*cmd, a->out, "kinestat-five-bar-design-sweep", "docs/maps.md");
   cmd->callback([a, &ctx] { ctx.exit_code = run_five_bar_design(*a, ctx); });
 }
 

@@ -61,8 +61,8 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     std::string reference_point, solver = "cholmod";
     std::optional<double> size_mm;  // absent: the default size; given: checked, never replaced
     double stiff_ratio = 1e4, max_elements = fea::MeshingOptions{}.max_elements;
-    double cg_rtol = solver::SparseCholeskyOptions{}.relative_tolerance;
-    int max_iterations = solver::SparseCholeskyOptions{}.max_iterations;
+    double cg_rtol = solver::LinearSolverOptions{}.relative_tolerance;
+    int max_iterations = solver::LinearSolverOptions{}.max_iterations;
     std::optional<int> modes;  // absent: none; given: 1 to kMaxLinkModes
     bool linear = false;
     bool convergence = false;
@@ -153,7 +153,7 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     const int modes = args->modes.value_or(0);
     if (args->modes && (modes < 1 || modes > fea::kMaxLinkModes))
       return fail(Status::Invalid(fmt::format("--modes {}: give a count from 1 to {}", modes, fea::kMaxLinkModes)));
-    if (modes > 0 && backend != solver::Backend::kCholmod)
+    if (modes > 0 && !solver::factors_on_one_process(backend))
       return fail(
           Status::Invalid(fmt::format("--modes with --solver {}: the natural frequencies need the direct solver "
                                       "on one process; use --solver cholmod",
@@ -194,9 +194,9 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       if (!p.ok()) return fail(p.status());
       options.reference_point = *p;
     }
-    options.cholesky.backend = backend;
-    options.cholesky.relative_tolerance = args->cg_rtol;
-    options.cholesky.max_iterations = args->max_iterations;
+    options.solver.backend = backend;
+    options.solver.relative_tolerance = args->cg_rtol;
+    options.solver.max_iterations = args->max_iterations;
     options.keep_fields = !args->vtk_dir.empty();
     options.modes = modes;
     options.progress = [&out](const std::string& stage) { out.progress() << "link-stiffness: " << stage << " ...\n"; };

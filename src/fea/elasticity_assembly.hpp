@@ -11,7 +11,7 @@
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/fea/tet_mesh.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/linear_solver.hpp"
 
 namespace kinestat::fea {
 

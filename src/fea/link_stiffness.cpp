@@ -111,7 +111,7 @@ Status check_modes_request(const Material& material, const LinkStiffnessOptions&
         fmt::format("link modes: material '{}' has no density (density = {:g} kg/m^3), so the link "
                     "has no mass and no natural frequencies; give the material a density in kg/m^3",
                     material.id, material.density));
-  if (options.cholesky.backend != solver::Backend::kCholmod)
+  if (!solver::factors_on_one_process(options.solver.backend))
     return Status::Invalid(
         "link modes: natural frequencies need the direct solver on one process (cholmod): the "
         "Lanczos iteration solves with K's factor; drop the PETSc solver for modes");
@@ -119,13 +119,13 @@ Status check_modes_request(const Material& material, const LinkStiffnessOptions&
 }
 
 // The modes of the clamped link: M q = mu K q for the largest mu = 1/omega^2 (solver/generalized_eigen.hpp)
-// with `cholesky` holding K's factor; M and K are lower triangles on the dof map `map`. `F` maps the
+// with `factor` prepared with K; M and K are lower triangles on the dof map `map`. `F` maps the
 // reference point's wrench to the dofs (its transpose gives the reference motion of a stiff body).
 Status solve_link_modes(const TetMesh& mesh, const DofMap& map, const solver::SparseMatrix& K,
-                        const solver::SparseMatrix& M, const solver::SparseCholesky& cholesky, const MatX& F,
+                        const solver::SparseMatrix& M, const solver::LinearSolver& factor, const MatX& F,
                         bool stiff_body, const Vec3& reference_point, int count, bool keep_shapes,
                         std::vector<LinkMode>* modes) {
-  auto eig = solver::largest_generalized_eigenpairs(M, K, cholesky, count);
+  auto eig = solver::largest_generalized_eigenpairs(M, K, factor, count);
   if (!eig.ok()) return Status(eig.status().code(), "link modes: " + eig.status().message());
   const auto& [mu, Q] = *eig;
   const MatX R = rigid_body_modes(mesh, map, reference_point).leftCols<3>();  // unit translations x, y, z
@@ -199,7 +199,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   auto progress = [&](const std::string& stage) {
     if (options.progress) options.progress(stage);
   };
-  if (Status s = solver::check_backend_built(options.cholesky.backend); !s.ok()) return s;
+  if (Status s = solver::check_backend_built(options.solver.backend); !s.ok()) return s;
   const auto t0 = std::chrono::steady_clock::now();
   LinkStiffness r;
   r.reference_model = options.reference_model;
@@ -273,9 +273,11 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
 
   const DofMap map = make_dof_map(mesh, clamped, stiff_body ? std::vector<int>{} : reference_nodes, reference_point);
   r.num_dofs = map.num_dofs;
-  solver::SparseCholeskyOptions cholesky_options = options.cholesky;
-  if (!cholesky_options.progress) cholesky_options.progress = options.progress;
-  auto cholesky = solver::make_sparse_cholesky(cholesky_options);
+  solver::LinearSolverOptions solver_options = options.solver;
+  if (!solver_options.progress) solver_options.progress = options.progress;
+  // The multigrid backend's near-null space: the link's rigid-body motions (made only if it asks).
+  solver_options.near_null_space = [&] { return rigid_body_modes(mesh, map, reference_point); };
+  auto linear_solver = solver::make_linear_solver(solver_options);
   // A distributed backend (PETSc on several MPI ranks): each rank assembles one slab of the link (an
   // equal range of the elements ordered along its longest axis), its summand of K, and the backend
   // adds the summands in its distributed matrix (entries of rows another rank owns are sent to it),
@@ -283,7 +285,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   // owning its lowest row would send fewer entries but, for 10-node elements on two ranks, give rank
   // 0 all of them: an element's lowest row is a vertex's, and the vertices, numbered before the
   // mid-edge nodes (to_quadratic), are far fewer than half.
-  const int ranks = cholesky->summing_ranks(), rank = ranks > 1 ? solver::process_group().rank : 0;
+  const int ranks = linear_solver->summing_ranks(), rank = ranks > 1 ? solver::process_group().rank : 0;
   for (int q = 0; q < ranks; ++q) {
     const auto [first, last] = element_range(mesh.num_elements(), q, ranks);
     r.elements_per_rank.push_back(last - first);
@@ -329,10 +331,8 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
 
   progress(fmt::format("analysing {} dofs ({} matrix entries{})", map.num_dofs, K.nonZeros(),
                        ranks == 1 ? "" : " on this rank"));
-  if (cholesky_options.backend == solver::Backend::kPetscCg)  // multigrid only: n x 6 numbers for nothing else
-    cholesky->SetNearNullSpace(rigid_body_modes(mesh, map, reference_point));
-  r.backend = cholesky->backend_description();
-  if (Status s = cholesky->FactorizeSum(std::span(&K, 1), &r.factorization); !s.ok()) {
+  r.backend = linear_solver->backend_description();
+  if (Status s = linear_solver->FactorizeSum(std::span(&K, 1), &r.factorization); !s.ok()) {
     if (r.factorization.refused_for_memory()) return memory_refusal(mesh, map.num_dofs, r.factorization);
     if (s.code() == StatusCode::kSingular)
       return Status::Singular("link stiffness: the clamped link still has a free motion (" + s.message() +
@@ -344,7 +344,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   progress("solving the six unit load cases");
   const auto t1 = std::chrono::steady_clock::now();
   MatX X;
-  if (Status s = cholesky->SolveAndReport(F, &X, &r.solve); !s.ok()) return s;
+  if (Status s = linear_solver->Solve(F, &X, &r.solve); !s.ok()) return s;
   set_compliance(r, stiff_body ? Mat6(F.transpose() * X) : Mat6(X.middleRows<6>(map.reference_dof)), reference_point);
   if (options.keep_fields) {
     for (int k = 0; k < 6; ++k) {
@@ -356,7 +356,7 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   if (options.modes > 0) {
     progress(fmt::format("the {} lowest natural frequencies (Lanczos on the factor of K)", options.modes));
     const auto t2 = std::chrono::steady_clock::now();
-    if (Status s = solve_link_modes(mesh, map, K, M, *cholesky, F, stiff_body, reference_point, options.modes,
+    if (Status s = solve_link_modes(mesh, map, K, M, *linear_solver, F, stiff_body, reference_point, options.modes,
                                     options.keep_fields, &r.modes);
         !s.ok())
       return s;

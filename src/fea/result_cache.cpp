@@ -18,6 +18,7 @@
 
 #include "fea/sha256.hpp"
 #include "kinestat/core/atomic_file.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace kinestat::fea {
 
@@ -210,11 +211,11 @@ std::string link_stiffness_cache_key(std::string_view mesh_identity, const Mater
       "{}|E {:.17g} G {:.17g}|clamp {}|reference {}|model {} ratio {:.17g}|point {} {:.17g} {:.17g} {:.17g}|"
       "ordering {} pivot {:.17g}",
       kHeader, m.E, m.G, region_text(o.clamp), region_text(o.reference), static_cast<int>(o.reference_model),
-      o.stiff_body_ratio, o.reference_point.has_value(), p.x(), p.y(), p.z(), static_cast<int>(o.cholesky.ordering),
-      o.cholesky.singular_pivot_ratio);
+      o.stiff_body_ratio, o.reference_point.has_value(), p.x(), p.y(), p.z(), static_cast<int>(o.solver.ordering),
+      o.solver.singular_pivot_ratio);
   // An iterative result is only as accurate as its tolerance: not interchangeable with a direct one.
-  if (o.cholesky.backend == solver::Backend::kPetscCg)
-    values += fmt::format("|cg rtol {:.17g}", o.cholesky.relative_tolerance);
+  if (const double tolerance = solver::solution_tolerance(o.solver); tolerance > 0.0)
+    values += fmt::format("|cg rtol {:.17g}", tolerance);
   // The identity's length first: no identity and values can be split differently to the same text.
   Sha256 h;
   h.update(fmt::format("{}\n", mesh_identity.size()));

@@ -136,9 +136,7 @@ class FiveBarMsaKernel final : public FiveBarKernelBase {
         }
     }
     r.status = PostureStatus::kOk;
-    r.stiffness = K;
-    r.compliance = C;
-    r.indices = cartesian_indices(K);
+    set_stiffness(r, K, C);
     r.deflection = C * o_.load;
     return r;
   }

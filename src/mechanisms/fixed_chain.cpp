@@ -553,9 +553,8 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
   const Vec6 sv = Eigen::JacobiSVD<Mat6>(Kt).singularValues();
   if (!(sv[5] > rank_tolerance * sv[0])) return;
   r.status = PostureStatus::kOk;
-  r.stiffness = K;
-  r.compliance = w.cwiseInverse().asDiagonal() * Eigen::FullPivLU<Mat6>(Kt).inverse() * w.cwiseInverse().asDiagonal();
-  r.indices = cartesian_indices(K);
+  set_stiffness(r, K,
+                w.cwiseInverse().asDiagonal() * Eigen::FullPivLU<Mat6>(Kt).inverse() * w.cwiseInverse().asDiagonal());
   r.deflection = d;
   solved_before_ = had_solved;
   if (had_solved) {

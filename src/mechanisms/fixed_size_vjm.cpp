@@ -34,9 +34,7 @@ void set_platform_result(const Mat6& K, const Vec6& w, const Vec6& load, Posture
   const Vec6 pivots = llt.matrixLLT().diagonal().cwiseAbs2();
   if (!(pivots.cwiseQuotient(Kt.diagonal()).minCoeff() >= kPivotRatioTolerance)) return;
   r.status = PostureStatus::kOk;
-  r.stiffness = K;
-  r.compliance = wi.asDiagonal() * spd_inverse<6>(llt) * wi.asDiagonal();
-  r.indices = cartesian_indices(K);
+  set_stiffness(r, K, wi.asDiagonal() * spd_inverse<6>(llt) * wi.asDiagonal());
   r.deflection = r.compliance * load;
 }
 

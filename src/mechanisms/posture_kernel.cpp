@@ -14,6 +14,12 @@
 
 namespace kinestat::mechanisms {
 
+void set_stiffness(PostureResult& r, const Mat6& K, const Mat6& C) {
+  r.stiffness = K;
+  r.compliance = C;
+  r.indices = cartesian_indices(K);
+}
+
 const char* to_string(PostureStatus s) {
   switch (s) {
     case PostureStatus::kOk:

@@ -21,9 +21,7 @@ namespace {
 
 // Fills stiffness, compliance and indices from a regular 6x6 compliance.
 void set_from_compliance(PostureResult& r, const Mat6& C, const Vec6& load) {
-  r.compliance = C;
-  r.stiffness = C.inverse();
-  r.indices = cartesian_indices(r.stiffness);
+  set_stiffness(r, C.inverse(), C);
   r.deflection = C * load;
   r.status = PostureStatus::kOk;
 }

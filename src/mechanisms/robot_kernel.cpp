@@ -147,9 +147,7 @@ class RobotKernel final : public PostureKernel {
     if (o_.method == StiffnessMethod::kVjm && !o_.wrench && !o_.displacement &&
         vjm::regular_platform_unloaded_stiffness(chains, regular_, regular_result_)) {
       // A regular posture (vjm/stiffness.hpp): platform_unloaded_stiffness's answer, found faster.
-      r.stiffness = regular_result_.stiffness;
-      r.compliance = regular_result_.compliance;
-      r.indices = cartesian_indices(r.stiffness);
+      set_stiffness(r, regular_result_.stiffness, regular_result_.compliance);
       r.status = PostureStatus::kOk;
       return r;
     }
@@ -181,9 +179,7 @@ class RobotKernel final : public PostureKernel {
       return r;
     }
     if (!K->compliance_defined) return r;  // a free direction; rigid ones are kept (header)
-    r.stiffness = K->stiffness;
-    r.compliance = K->compliance;
-    r.indices = cartesian_indices(r.stiffness);
+    set_stiffness(r, K->stiffness, K->compliance);
     r.status = PostureStatus::kOk;
     return r;
   }

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "kinestat/msa/structure.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/linear_solver.hpp"
 
 namespace kinestat::msa {
 

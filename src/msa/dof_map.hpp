@@ -7,7 +7,7 @@
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/msa/structure.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/linear_solver.hpp"
 
 namespace kinestat::msa {
 

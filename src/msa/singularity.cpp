@@ -100,7 +100,7 @@ std::string describe_node_motion(const Vec6& m, double L) {
 
 SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map, const solver::SparseMatrix& Kr,
                                           const solver::FactorizationReport& report, double tolerance,
-                                          const solver::SparseCholeskyOptions& options) {
+                                          const solver::LinearSolverOptions& options) {
   SingularityDiagnosis d;
   d.singular = true;
   std::vector<int> cols = report.weak_columns;

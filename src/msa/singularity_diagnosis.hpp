@@ -4,7 +4,7 @@
 
 #include "kinestat/msa/singularity.hpp"
 #include "kinestat/msa/structure.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/linear_solver.hpp"
 #include "msa/dof_map.hpp"
 
 namespace kinestat::msa {
@@ -17,6 +17,6 @@ namespace kinestat::msa {
 // caller's solver `options`.
 SingularityDiagnosis diagnose_singularity(const Structure& s, const DofMap& map, const solver::SparseMatrix& Kr,
                                           const solver::FactorizationReport& report, double tolerance,
-                                          const solver::SparseCholeskyOptions& options);
+                                          const solver::LinearSolverOptions& options);
 
 }  // namespace kinestat::msa

@@ -58,7 +58,7 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
   solver::SparseMatrix R = sys.Kr;
   const VecX D = solver::stiffness_scaling(R);
   for (int i = 0; i < R.rows(); ++i) R.coeffRef(i, i) += opt.regularization * D(i);
-  solver::SparseCholeskyOptions shifted = opt.cholesky;  // the caller's backend and ordering, no pivot check
+  solver::LinearSolverOptions shifted = opt.cholesky;  // the caller's backend and ordering, no pivot check
   shifted.singular_pivot_ratio = 0.0;
   regularized = solver::make_sparse_cholesky(shifted);
   if (Status r = regularized->Factorize(R, nullptr); !r.ok()) return r;
@@ -210,7 +210,7 @@ StatusOr<CartesianStiffness> node_stiffness(const Structure& s, const System& sy
 
 }  // namespace
 
-Workspace::Workspace(const solver::SparseCholeskyOptions& options) : cholesky_(solver::make_sparse_cholesky(options)) {}
+Workspace::Workspace(const solver::LinearSolverOptions& options) : cholesky_(solver::make_sparse_cholesky(options)) {}
 
 Solution solve(const Structure& s, const SolveOptions& options) {
   Workspace ws(options.cholesky);

@@ -170,7 +170,7 @@ void bind_link_stiffness(py::module_& m) {
       .def_readwrite("stiff_body_ratio", &LinkStiffnessOptions::stiff_body_ratio)
       .def_readwrite("reference_point", &LinkStiffnessOptions::reference_point, "m; None: the reference nodes' centre")
       .def_readwrite("keep_fields", &LinkStiffnessOptions::keep_fields, "keep displacement and von Mises fields")
-      .def_readwrite("cholesky", &LinkStiffnessOptions::cholesky)
+      .def_readwrite("solver", &LinkStiffnessOptions::solver)
       .def_readwrite("modes", &LinkStiffnessOptions::modes,
                      "how many of the lowest natural frequencies (count, 0: none, at most 100; needs the material's "
                      "density and the cholmod backend)")

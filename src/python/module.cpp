@@ -101,7 +101,7 @@ PYBIND11_MODULE(_kinestat, m) {
   kp::create_exceptions(m);
   kp::bind_core(m);
   kp::bind_elements(m);
-  auto solver = m.def_submodule("solver", "Sparse Cholesky options and factorization reports (C++ kinestat::solver).");
+  auto solver = m.def_submodule("solver", "Linear-solver options and factorization reports (C++ kinestat::solver).");
   kp::bind_solver(solver);
   auto msa =
       m.def_submodule("msa", "Matrix structural analysis: Structure -> solve() -> Solution (C++ kinestat::msa).");

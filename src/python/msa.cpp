@@ -335,7 +335,7 @@ void bind_solution(py::module_& m) {
   py::class_<Workspace>(m, "Workspace",
                         "Reused across solves of structures with the same topology (a posture sweep): the sparse "
                         "Cholesky object keeps its symbolic analysis. Not for two threads at once: one per thread.")
-      .def(py::init<const solver::SparseCholeskyOptions&>(), py::arg("options") = solver::SparseCholeskyOptions{})
+      .def(py::init<const solver::LinearSolverOptions&>(), py::arg("options") = solver::LinearSolverOptions{})
       .def_property_readonly("num_symbolic_analyses", &Workspace::num_symbolic_analyses);
 
   m.def(

@@ -1,15 +1,14 @@
-// kinestat.solver: the options and the report of the sparse Cholesky factorization
-// (solver/sparse_cholesky.hpp). The factorization itself is reached through msa.solve and
-// fea.link_stiffness; SciPy sparse matrices are not a dependency, so SparseCholesky and the
-// null-space routines are not bound.
-#include "kinestat/solver/sparse_cholesky.hpp"
+// kinestat.solver: the options and the report of the linear solvers (solver/linear_solver.hpp). The
+// solvers themselves are reached through msa.solve and fea.link_stiffness; SciPy sparse matrices are
+// not a dependency, so LinearSolver, SparseCholesky and the null-space routines are not bound.
+#include "kinestat/solver/linear_solver.hpp"
 #include "python/bindings.hpp"
 
 namespace kinestat::python {
 
 void bind_solver(py::module_& m) {
   using solver::FactorizationReport;
-  using solver::SparseCholeskyOptions;
+  using solver::LinearSolverOptions;
   py::enum_<solver::Ordering>(m, "Ordering")
       .value("AUTO", solver::Ordering::kAuto)
       .value("AMD", solver::Ordering::kAmd)
@@ -21,14 +20,14 @@ void bind_solver(py::module_& m) {
       .value("PETSC_MUMPS", solver::Backend::kPetscMumps)
       .value("PETSC_CG", solver::Backend::kPetscCg);
 
-  py::class_<SparseCholeskyOptions>(m, "SparseCholeskyOptions")
+  py::class_<LinearSolverOptions>(m, "LinearSolverOptions")
       .def(py::init<>())
-      .def_readwrite("backend", &SparseCholeskyOptions::backend)
-      .def_readwrite("relative_tolerance", &SparseCholeskyOptions::relative_tolerance,
+      .def_readwrite("backend", &LinearSolverOptions::backend)
+      .def_readwrite("relative_tolerance", &LinearSolverOptions::relative_tolerance,
                      "PETSC_CG: stop at ||b - Ax|| <= tol ||b|| per right-hand side (default 1e-10)")
-      .def_readwrite("max_iterations", &SparseCholeskyOptions::max_iterations)
-      .def_readwrite("ordering", &SparseCholeskyOptions::ordering)
-      .def_readwrite("singular_pivot_ratio", &SparseCholeskyOptions::singular_pivot_ratio,
+      .def_readwrite("max_iterations", &LinearSolverOptions::max_iterations)
+      .def_readwrite("ordering", &LinearSolverOptions::ordering)
+      .def_readwrite("singular_pivot_ratio", &LinearSolverOptions::singular_pivot_ratio,
                      "a pivot below this fraction of its diagonal entry is a free motion (default 1e-12)");
 
   py::class_<FactorizationReport>(m, "FactorizationReport",

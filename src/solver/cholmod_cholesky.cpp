@@ -186,7 +186,7 @@ std::vector<int> grouped_metis_ordering(cholmod_sparse* lower, cholmod_common* c
 
 class CholmodCholesky final : public SparseCholesky {
  public:
-  explicit CholmodCholesky(const SparseCholeskyOptions& options) : options_(options) {
+  explicit CholmodCholesky(const LinearSolverOptions& options) : options_(options) {
     use_huge_pages_for_cholmod();
     cholmod_start(&common_);
     common_.print = 0;  // failures are reported through FactorizationReport
@@ -313,7 +313,20 @@ class CholmodCholesky final : public SparseCholesky {
     return Status::Ok();
   }
 
-  Status Solve(const MatX& B, MatX* X) const override {
+  int num_symbolic_analyses() const override { return analyses_; }
+
+  std::string backend_description() const override {
+    const LibraryVersions v = library_versions();
+    return fmt::format("{}, BLAS: {}", v.cholmod, v.blas);
+  }
+
+ private:
+  // Exact to round-off: no iterations, no residual measured.
+  Status DoSolve(const MatX& B, MatX* X, SolveReport* report) const override {
+    if (report) {
+      *report = SolveReport{};
+      report->iterations.assign(B.cols(), 0);
+    }
     if (!factor_ok_) return Status::Internal("sparse Cholesky: no valid factorization to solve with");
     if (B.rows() != static_cast<long>(factor_->n)) return Status::Internal("sparse Cholesky: right-hand side size");
     MatX Bc = B;  // CHOLMOD wants a mutable pointer; it does not write to B
@@ -332,14 +345,6 @@ class CholmodCholesky final : public SparseCholesky {
     return Status::Ok();
   }
 
-  int num_symbolic_analyses() const override { return analyses_; }
-
-  std::string backend_description() const override {
-    const LibraryVersions v = library_versions();
-    return fmt::format("{}, BLAS: {}", v.cholmod, v.blas);
-  }
-
- private:
   void set_single_ordering(int ordering) {
     common_.nmethods = 1;
     common_.method[0].ordering = ordering;
@@ -416,7 +421,7 @@ class CholmodCholesky final : public SparseCholesky {
     }
   }
 
-  SparseCholeskyOptions options_;
+  LinearSolverOptions options_;
   mutable cholmod_common common_{};
   cholmod_factor* factor_ = nullptr;
   std::vector<int> pattern_outer_, pattern_inner_;
@@ -428,7 +433,7 @@ class CholmodCholesky final : public SparseCholesky {
 
 }  // namespace
 
-std::unique_ptr<SparseCholesky> make_cholmod_cholesky(const SparseCholeskyOptions& options) {
+std::unique_ptr<SparseCholesky> make_cholmod_cholesky(const LinearSolverOptions& options) {
   return std::make_unique<CholmodCholesky>(options);
 }
 

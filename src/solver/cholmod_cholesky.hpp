@@ -7,6 +7,6 @@
 
 namespace kinestat::solver {
 
-std::unique_ptr<SparseCholesky> make_cholmod_cholesky(const SparseCholeskyOptions& options);
+std::unique_ptr<SparseCholesky> make_cholmod_cholesky(const LinearSolverOptions& options);
 
 }  // namespace kinestat::solver

@@ -29,7 +29,7 @@ struct Product {
 struct StiffnessInverse {
   using Scalar = double;
   const SparseMatrix& K;
-  const SparseCholesky& chol;
+  const LinearSolver& chol;
   Eigen::Index rows() const { return K.rows(); }
   Eigen::Index cols() const { return K.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
@@ -51,7 +51,7 @@ constexpr int kDenseBelow = 24;
 }  // namespace
 
 StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
-                                                               const SparseCholesky& chol, int count) {
+                                                               const LinearSolver& chol, int count) {
   const int n = static_cast<int>(Kr.rows());
   if (n < kDenseBelow) {
     const MatX Ad = MatX(SparseMatrix(A.selfadjointView<Eigen::Lower>()));

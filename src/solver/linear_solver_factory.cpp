@@ -1,24 +1,62 @@
 #include "kinestat/solver/linear_solver_factory.hpp"
 
+#include <string>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "solver/cholmod_cholesky.hpp"
 #include "solver/petsc_solver.hpp"
 
 namespace kinestat::solver {
+namespace {
 
-std::unique_ptr<SparseCholesky> make_sparse_cholesky(const SparseCholeskyOptions& options) {
+// What the factory gives for a backend it cannot make (not built in, or not of the kind asked
+// for): Factorize and Solve say why, so that the caller fails at its first solver call.
+class RefusedSolver final : public SparseCholesky {
+ public:
+  RefusedSolver(Backend backend, Status why) : backend_(backend), why_(std::move(why)) {}
+  Status Factorize(const SparseMatrix&, FactorizationReport*) override { return why_; }
+  int num_symbolic_analyses() const override { return 0; }
+  std::string backend_description() const override { return std::string(backend_name(backend_)) + " (refused)"; }
+
+ private:
+  Status DoSolve(const MatX&, MatX*, SolveReport*) const override { return why_; }
+  Backend backend_;
+  Status why_;
+};
+
+}  // namespace
+
+std::unique_ptr<SparseCholesky> make_sparse_cholesky(const LinearSolverOptions& options) {
+  if (Status s = check_backend_built(options.backend); !s.ok())
+    return std::make_unique<RefusedSolver>(options.backend, s);
   switch (options.backend) {
     case Backend::kCholmod:
       return make_cholmod_cholesky(options);
     case Backend::kPetscMumps:
+      return make_petsc_mumps(options);
     case Backend::kPetscCg:
-      return make_petsc_solver(options);
+      break;
   }
-  return nullptr;  // unreachable: every enumerator has a case (-Wswitch checks it)
+  return std::make_unique<RefusedSolver>(
+      options.backend, Status::Invalid(fmt::format("solver {} is iterative, not a Cholesky factorization; use "
+                                                   "cholmod or petsc-mumps",
+                                                   backend_name(options.backend))));
+}
+
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options) {
+  if (options.backend == Backend::kPetscCg && backend_built(options.backend)) return make_petsc_cg(options);
+  return make_sparse_cholesky(options);  // the direct backends, and the refusals
 }
 
 bool backend_built(Backend backend) { return backend == Backend::kCholmod || petsc_built(); }
+
+bool factors_on_one_process(Backend backend) { return backend == Backend::kCholmod; }
+
+double solution_tolerance(const LinearSolverOptions& options) {
+  return options.backend == Backend::kPetscCg ? options.relative_tolerance : 0.0;
+}
 
 std::vector<Backend> available_backends() {
   std::vector<Backend> built;
@@ -52,16 +90,7 @@ Status check_backend_built(Backend backend) {
                          "libpetsc-real-dev (scripts/install-deps.sh --petsc) and rebuild, or use --solver cholmod");
 }
 
-Status SparseCholesky::SolveAndReport(const MatX& B, MatX* X, SolveReport* report) const {
-  Status s = Solve(B, X);
-  if (s.ok() && report) {
-    *report = SolveReport{};
-    report->iterations.assign(B.cols(), 0);
-  }
-  return s;
-}
-
-Status SparseCholesky::FactorizeSum(std::span<const SparseMatrix> summands, FactorizationReport* report) {
+Status LinearSolver::FactorizeSum(std::span<const SparseMatrix> summands, FactorizationReport* report) {
   if (summands.empty()) return Status::Invalid("FactorizeSum: no summand given");
   if (summands.size() == 1) return Factorize(summands[0], report);
   SparseMatrix A = summands[0];

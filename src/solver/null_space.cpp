@@ -39,12 +39,12 @@ StatusOr<NullSpace> lowest_modes(const SparseMatrix& A, const SparseCholesky& fa
 }
 
 StatusOr<NullSpace> near_null_space(const SparseMatrix& A, int block, double threshold,
-                                    const SparseCholeskyOptions& options) {
+                                    const LinearSolverOptions& options) {
   const VecX D = stiffness_scaling(A);
   // The shift sits between round-off (~1e-16 relative) and real soft modes (>~1e-12), so
   // mechanisms converge much faster than real soft modes. If round-off still makes A + sigma D
   // indefinite, grow the shift.
-  SparseCholeskyOptions shifted = options;
+  LinearSolverOptions shifted = options;
   shifted.singular_pivot_ratio = 0.0;
   auto chol = make_sparse_cholesky(shifted);
   Status st = Status::Internal("unreachable");

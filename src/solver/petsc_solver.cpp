@@ -1,16 +1,20 @@
-// The PETSc backends (docs/fea.md, "Large meshes"). Factorize takes the whole matrix on every rank
-// and gives PETSc only this rank's block of rows; FactorizeSum takes each rank's summand (the
-// elements it assembled) and lets PETSc add them, sending entries of other ranks' rows to their
-// owners, so that no rank holds the whole matrix. PETSc distributes the factor (MUMPS) or the
-// multigrid hierarchy (GAMG); the solution is gathered back to every rank, so every rank computes
-// the same 6x6. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) the backends exist but say they
-// are not built in, and the collective helpers do nothing.
+// The PETSc backends (docs/fea.md, "Large meshes"): MUMPS's Cholesky (a SparseCholesky) and CG +
+// GAMG (an iterative LinearSolver), each a KSP over the same distributed matrix. Factorize takes the
+// whole matrix on every rank and gives PETSc only this rank's block of rows; FactorizeSum takes each
+// rank's summand (the elements it assembled) and lets PETSc add them, sending entries of other
+// ranks' rows to their owners, so that no rank holds the whole matrix. PETSc distributes the factor
+// (MUMPS) or the multigrid hierarchy (GAMG); the solution is gathered back to every rank, so every
+// rank computes the same 6x6. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) petsc_built() is
+// false and the factory makes neither.
 #include "solver/petsc_solver.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -69,12 +73,16 @@ int owner_of(const std::vector<int>& offsets, int row) {
   return static_cast<int>(std::upper_bound(offsets.begin(), offsets.end(), row) - offsets.begin()) - 1;
 }
 
-class PetscSolver final : public SparseCholesky {
+// What the two PETSc backends share: the distributed matrix, the KSP, and the solves with the true
+// residual. `Interface` is the kind (SparseCholesky for MUMPS, LinearSolver for CG); the derived
+// class configures the KSP (ConfigureKsp) and checks what its setup found (CheckSetup).
+template <class Interface>
+class PetscKspSolver : public Interface {
  public:
-  explicit PetscSolver(const SparseCholeskyOptions& options) : options_(options) {}
-  ~PetscSolver() override { Release(); }
-
-  void SetNearNullSpace(const MatX& modes) override { near_null_ = modes; }
+  explicit PetscKspSolver(const LinearSolverOptions& options) : options_(options) {}
+  ~PetscKspSolver() override { Release(); }
+  PetscKspSolver(const PetscKspSolver&) = delete;
+  PetscKspSolver& operator=(const PetscKspSolver&) = delete;
 
   Status Factorize(const SparseMatrix& A, FactorizationReport* report) override {
     return FactorizeParts(std::span(&A, 1), /*summed=*/false, report);
@@ -89,9 +97,46 @@ class PetscSolver final : public SparseCholesky {
     return group.ok() ? group->size : 1;  // PETSc failed to start: FactorizeSum will say so
   }
 
-  Status Solve(const MatX& B, MatX* X) const override { return SolveAndReport(B, X, nullptr); }
+  int num_symbolic_analyses() const override { return analyses_; }
 
-  Status SolveAndReport(const MatX& B, MatX* X, SolveReport* report) const override {
+ protected:
+  // An iterative solver: a stopping tolerance, iterations counted, CG restarted (DoSolve).
+  virtual bool iterative() const = 0;
+  // The options only this kind reads, checked before any collective work.
+  virtual Status CheckOptions() const { return Status::Ok(); }
+  // Once A_ is assembled: what the kind tells PETSc about it; then the KSP's type and preconditioner.
+  virtual Status PrepareMatrix() { return Status::Ok(); }
+  virtual Status ConfigureKsp(KSP ksp, PC pc, FactorizationReport* r) = 0;
+  // After KSPSetUp succeeded: what the setup found (MUMPS's pivots).
+  virtual Status CheckSetup(PC /*pc*/, FactorizationReport* /*r*/) { return Status::Ok(); }
+  virtual std::string setup_stage() const = 0;  // for options_.progress
+  // Solves the current right-hand side again from its last solution: updates the converged reason
+  // and the true relative residual that Refine is given (by reference), adds the iterations.
+  using SolveAgain = std::function<PetscErrorCode()>;
+  // After a right-hand side's first solve: nothing for a direct solver; CG's restarts (PetscCgSolver).
+  virtual PetscErrorCode Refine(KSP /*ksp*/, const SolveAgain& /*again*/, const KSPConvergedReason& /*reason*/,
+                                const double& /*relative*/) const {
+    return 0;
+  }
+
+  std::string ranks_description() const {
+    const ProcessGroup group = process_group();
+    return fmt::format("{} MPI rank{}", group.size, group.size == 1 ? "" : "s");
+  }
+
+  std::vector<PetscInt> owned_rows() const {
+    std::vector<PetscInt> rows(rend_ - rstart_);
+    for (PetscInt i = rstart_; i < rend_; ++i) rows[i - rstart_] = i;
+    return rows;
+  }
+
+  LinearSolverOptions options_;
+  Mat A_ = nullptr;
+  int n_ = 0;
+  PetscInt rstart_ = 0, rend_ = 0;
+
+ private:
+  Status DoSolve(const MatX& B, MatX* X, SolveReport* report) const override {
     if (!ksp_) return Status::Internal("PETSc solver: Solve called without a successful Factorize");
     if (B.rows() != n_) return Status::Invalid(fmt::format("PETSc solver: B has {} rows, A has {}", B.rows(), n_));
     const auto t0 = std::chrono::steady_clock::now();
@@ -127,28 +172,20 @@ class PetscSolver final : public SparseCholesky {
                         std::chrono::steady_clock::now()};
         KINESTAT_PETSC(KSPMonitorCancel(ksp_));
         if (options_.progress) KINESTAT_PETSC(KSPMonitorSet(ksp_, &Monitor::call, &monitor, nullptr));
-        KINESTAT_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_FALSE));
-        KSPConvergedReason reason;
-        PetscInt iterations = 0, more = 0;
+        KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+        PetscInt iterations = 0;
         double relative = 0.0;
-        KINESTAT_PETSC(KSPSolve(ksp_, b, x));
-        KINESTAT_PETSC(KSPGetConvergedReason(ksp_, &reason));
-        KINESTAT_PETSC(KSPGetIterationNumber(ksp_, &iterations));
-        KINESTAT_PETSC(true_residual(&relative));
-        // CG updates its residual by recurrence, which drifts from the true one near 1e-10 (2.9M dofs:
-        // CG stopped at 1e-10 with true residuals up to 1.6e-9): restart from x while the true
-        // residual is above the tolerance and a restart still halves it. Round-off bounds what any
-        // restart reaches (~1e-10 on the 41k-dof bar for the moment cases); what was reached is reported.
-        KINESTAT_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_TRUE));
-        for (double before = std::numeric_limits<double>::infinity();
-             iterative() && reason > 0 && relative > options_.relative_tolerance && relative < 0.5 * before;) {
-          before = relative;
-          KINESTAT_PETSC(KSPSolve(ksp_, b, x));
-          KINESTAT_PETSC(KSPGetConvergedReason(ksp_, &reason));
-          KINESTAT_PETSC(KSPGetIterationNumber(ksp_, &more));
+        const SolveAgain solve = [&]() -> PetscErrorCode {  // from x, adding up the iterations
+          PetscInt more = 0;
+          PetscCall(KSPSolve(ksp_, b, x));
+          PetscCall(KSPGetConvergedReason(ksp_, &reason));
+          PetscCall(KSPGetIterationNumber(ksp_, &more));
           iterations += more;
-          KINESTAT_PETSC(true_residual(&relative));
-        }
+          return true_residual(&relative);
+        };
+        KINESTAT_PETSC(KSPSetInitialGuessNonzero(ksp_, PETSC_FALSE));
+        KINESTAT_PETSC(solve());
+        KINESTAT_PETSC(Refine(ksp_, solve, reason, relative));
         if (reason < 0)
           return Status::Singular(fmt::format(
               "PETSc {} stopped on right-hand side {} after {} iterations ({}), relative residual {:.3e} > {:g}; "
@@ -172,23 +209,9 @@ class PetscSolver final : public SparseCholesky {
     return s;
   }
 
-  int num_symbolic_analyses() const override { return analyses_; }
-
-  std::string backend_description() const override {
-    const ProcessGroup group = process_group();
-    const std::string ranks = fmt::format("{} MPI rank{}", group.size, group.size == 1 ? "" : "s");
-    if (iterative())
-      return fmt::format("{} CG + GAMG (rigid-body near-null space), relative tolerance {:g}, on {}", petsc_version(),
-                         options_.relative_tolerance, ranks);
-    return fmt::format("{} MUMPS Cholesky on {}", petsc_version(), ranks);
-  }
-
- private:
-  bool iterative() const { return options_.backend == Backend::kPetscCg; }
-
   // CG's progress on stderr (through options_.progress) at most every 10 s: a 3M-dof solve takes minutes.
   struct Monitor {
-    const PetscSolver* solver;
+    const PetscKspSolver* solver;
     int column, columns;
     double norm_b;
     std::chrono::steady_clock::time_point last;
@@ -202,12 +225,6 @@ class PetscSolver final : public SparseCholesky {
       return 0;
     }
   };
-
-  std::vector<PetscInt> owned_rows() const {
-    std::vector<PetscInt> rows(rend_ - rstart_);
-    for (PetscInt i = rstart_; i < rend_; ++i) rows[i - rstart_] = i;
-    return rows;
-  }
 
   void Release() {
     if (!parallel_running()) return;  // PETSc already finished: its objects went with it
@@ -330,20 +347,13 @@ class PetscSolver final : public SparseCholesky {
 
   Status FactorizeImpl(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* r) {
     if (StatusOr<ProcessGroup> g = start_parallel(); !g.ok()) return g.status();
-    if (iterative() && !(options_.relative_tolerance > 0.0 && options_.relative_tolerance < 1.0))
-      return Status::Invalid(
-          fmt::format("PETSc CG: relative tolerance {:g} must lie in (0, 1)", options_.relative_tolerance));
-    if (iterative() && options_.max_iterations < 1)
-      return Status::Invalid(fmt::format("PETSc CG: at most {} iterations; need at least 1", options_.max_iterations));
+    if (Status s = CheckOptions(); !s.ok()) return s;
     Release();
     ++analyses_;
     const auto t0 = std::chrono::steady_clock::now();
     if (Status s = AssembleMatrix(parts, summed, r); !s.ok()) return s;
     KINESTAT_PETSC(MatSetOption(A_, MAT_SYMMETRIC, PETSC_TRUE));
-    // SPD only for CG: MUMPS then runs its symmetric-indefinite LDL^T (SYM=2), the one mode with
-    // null-pivot detection and a count of negative pivots, which check positive definiteness below.
-    if (iterative()) KINESTAT_PETSC(MatSetOption(A_, MAT_SPD, PETSC_TRUE));
-    if (iterative() && near_null_.rows() == n_ && near_null_.cols() > 0) KINESTAT_PETSC(AttachNearNullSpace());
+    if (Status s = PrepareMatrix(); !s.ok()) return s;
     r->analyze_seconds = seconds_since(t0);
 
     const auto t1 = std::chrono::steady_clock::now();
@@ -351,33 +361,10 @@ class PetscSolver final : public SparseCholesky {
     KINESTAT_PETSC(KSPSetOperators(ksp_, A_, A_));
     PC pc;
     KINESTAT_PETSC(KSPGetPC(ksp_, &pc));
-    if (iterative()) {
-      KINESTAT_PETSC(KSPSetType(ksp_, KSPCG));
-      KINESTAT_PETSC(PCSetType(pc, PCGAMG));
-      // The true residual ||b - A x|| / ||b|| is what the tolerance bounds (not the preconditioned one).
-      KINESTAT_PETSC(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED));
-      KINESTAT_PETSC(KSPSetTolerances(ksp_, options_.relative_tolerance, 0.0, PETSC_DEFAULT, options_.max_iterations));
-      r->ordering = "none (algebraic multigrid)";
-    } else {
-      KINESTAT_PETSC(KSPSetType(ksp_, KSPPREONLY));
-      KINESTAT_PETSC(PCSetType(pc, PCCHOLESKY));
-      KINESTAT_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-      // Null-pivot detection (MUMPS ICNTL(24)): a free motion must stop here, not give numbers. A
-      // pivot below CNTL(3) * ||A|| (of MUMPS's scaled matrix) is null: the mechanism's pivot is
-      // round-off, which MUMPS's default threshold (1e-5 eps ||A||) lets pass; the same ratio as
-      // CHOLMOD's pivot check.
-      KINESTAT_PETSC(PCFactorSetUpMatSolverType(pc));
-      Mat factor;
-      KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
-      KINESTAT_PETSC(MatMumpsSetIcntl(factor, 24, 1));
-      KINESTAT_PETSC(MatMumpsSetCntl(factor, 3, options_.singular_pivot_ratio));
-      r->ordering = "MUMPS automatic";
-    }
+    if (Status s = ConfigureKsp(ksp_, pc, r); !s.ok()) return s;
     // PETSC_OPTIONS (e.g. "-ksp_monitor -pc_gamg_threshold 0.01") may tune the solver further.
     KINESTAT_PETSC(KSPSetFromOptions(ksp_));
-    if (options_.progress)
-      options_.progress(iterative() ? fmt::format("setting up the multigrid preconditioner (GAMG) for {} dofs", n_)
-                                    : fmt::format("factorizing {} dofs with MUMPS", n_));
+    if (options_.progress) options_.progress(setup_stage());
     KINESTAT_PETSC(KSPSetUp(ksp_));
     PCFailedReason failed = PC_NOERROR;
     KINESTAT_PETSC(PCGetFailedReason(pc, &failed));
@@ -386,34 +373,132 @@ class PetscSolver final : public SparseCholesky {
       return Status::Singular(fmt::format("{} found the matrix singular or not positive definite ({})",
                                           iterative() ? "GAMG" : "MUMPS", PCFailedReasons[failed]));
     }
-    if (!iterative()) {
-      Mat factor;
-      PetscInt entries = 0, null_pivots = 0, negative_pivots = 0;
-      PetscReal flops = 0.0;
-      KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
-      KINESTAT_PETSC(MatMumpsGetInfog(factor, 28, &null_pivots));
-      KINESTAT_PETSC(MatMumpsGetInfog(factor, 12, &negative_pivots));
-      if (null_pivots > 0 || negative_pivots > 0) {
-        r->failed_column = 0;  // MUMPS does not say which
-        return Status::Singular(
-            fmt::format("MUMPS found {} null and {} negative pivots: the matrix is singular (a "
-                        "free motion) or not positive definite",
-                        null_pivots, negative_pivots));
-      }
-      KINESTAT_PETSC(MatMumpsGetInfog(factor, 29, &entries));  // entries of the factor (< 0: millions)
-      KINESTAT_PETSC(MatMumpsGetRinfog(factor, 3, &flops));    // flops of the elimination (estimated)
-      r->nnz_factor = entries >= 0 ? static_cast<long>(entries) : -1000000L * static_cast<long>(entries);
-      r->flops = flops;
-      r->supernodal = true;  // multifrontal
-    }
+    if (Status s = CheckSetup(pc, r); !s.ok()) return s;
     r->factor_seconds = seconds_since(t1);
+    return Status::Ok();
+  }
+
+  KSP ksp_ = nullptr;
+  int analyses_ = 0;
+};
+
+// MUMPS's Cholesky (KSPPREONLY + PCCHOLESKY): a direct factorization distributed over the ranks.
+class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
+ public:
+  using PetscKspSolver<SparseCholesky>::PetscKspSolver;
+
+  std::string backend_description() const override {
+    return fmt::format("{} MUMPS Cholesky on {}", petsc_version(), ranks_description());
+  }
+
+ private:
+  bool iterative() const override { return false; }
+  std::string setup_stage() const override { return fmt::format("factorizing {} dofs with MUMPS", n_); }
+
+  Status ConfigureKsp(KSP ksp, PC pc, FactorizationReport* r) override {
+    KINESTAT_PETSC(KSPSetType(ksp, KSPPREONLY));
+    KINESTAT_PETSC(PCSetType(pc, PCCHOLESKY));
+    KINESTAT_PETSC(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    // Null-pivot detection (MUMPS ICNTL(24)): a free motion must stop here, not give numbers. A
+    // pivot below CNTL(3) * ||A|| (of MUMPS's scaled matrix) is null: the mechanism's pivot is
+    // round-off, which MUMPS's default threshold (1e-5 eps ||A||) lets pass; the same ratio as
+    // CHOLMOD's pivot check. A_ is not marked SPD: MUMPS then runs its symmetric-indefinite LDL^T
+    // (SYM=2), the one mode with null-pivot detection and a count of negative pivots (CheckSetup).
+    KINESTAT_PETSC(PCFactorSetUpMatSolverType(pc));
+    Mat factor;
+    KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
+    KINESTAT_PETSC(MatMumpsSetIcntl(factor, 24, 1));
+    KINESTAT_PETSC(MatMumpsSetCntl(factor, 3, options_.singular_pivot_ratio));
+    r->ordering = "MUMPS automatic";
+    return Status::Ok();
+  }
+
+  Status CheckSetup(PC pc, FactorizationReport* r) override {
+    Mat factor;
+    PetscInt entries = 0, null_pivots = 0, negative_pivots = 0;
+    PetscReal flops = 0.0;
+    KINESTAT_PETSC(PCFactorGetMatrix(pc, &factor));
+    KINESTAT_PETSC(MatMumpsGetInfog(factor, 28, &null_pivots));
+    KINESTAT_PETSC(MatMumpsGetInfog(factor, 12, &negative_pivots));
+    if (null_pivots > 0 || negative_pivots > 0) {
+      r->failed_column = 0;  // MUMPS does not say which
+      return Status::Singular(
+          fmt::format("MUMPS found {} null and {} negative pivots: the matrix is singular (a "
+                      "free motion) or not positive definite",
+                      null_pivots, negative_pivots));
+    }
+    KINESTAT_PETSC(MatMumpsGetInfog(factor, 29, &entries));  // entries of the factor (< 0: millions)
+    KINESTAT_PETSC(MatMumpsGetRinfog(factor, 3, &flops));    // flops of the elimination (estimated)
+    r->nnz_factor = entries >= 0 ? static_cast<long>(entries) : -1000000L * static_cast<long>(entries);
+    r->flops = flops;
+    r->supernodal = true;  // multifrontal
+    return Status::Ok();
+  }
+};
+
+// Conjugate gradients preconditioned by smoothed-aggregation multigrid (GAMG), whose coarse spaces
+// start from the near-null space the caller gives (LinearSolverOptions::near_null_space).
+class PetscCgSolver final : public PetscKspSolver<LinearSolver> {
+ public:
+  using PetscKspSolver<LinearSolver>::PetscKspSolver;
+
+  std::string backend_description() const override {
+    return fmt::format("{} CG + GAMG (rigid-body near-null space), relative tolerance {:g}, on {}", petsc_version(),
+                       options_.relative_tolerance, ranks_description());
+  }
+
+ private:
+  bool iterative() const override { return true; }
+  std::string setup_stage() const override {
+    return fmt::format("setting up the multigrid preconditioner (GAMG) for {} dofs", n_);
+  }
+
+  // CG updates its residual by recurrence, which drifts from the true one near 1e-10 (2.9M dofs: CG
+  // stopped at 1e-10 with true residuals up to 1.6e-9): restart from x while the true residual is
+  // above the tolerance and a restart still halves it. Round-off bounds what any restart reaches
+  // (~1e-10 on the 41k-dof bar for the moment cases); what was reached is reported.
+  PetscErrorCode Refine(KSP ksp, const SolveAgain& again, const KSPConvergedReason& reason,
+                        const double& relative) const override {
+    PetscCall(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE));
+    for (double before = std::numeric_limits<double>::infinity();
+         reason > 0 && relative > options_.relative_tolerance && relative < 0.5 * before;) {
+      before = relative;
+      PetscCall(again());
+    }
+    return 0;
+  }
+
+  Status CheckOptions() const override {
+    if (!(options_.relative_tolerance > 0.0 && options_.relative_tolerance < 1.0))
+      return Status::Invalid(
+          fmt::format("PETSc CG: relative tolerance {:g} must lie in (0, 1)", options_.relative_tolerance));
+    if (options_.max_iterations < 1)
+      return Status::Invalid(fmt::format("PETSc CG: at most {} iterations; need at least 1", options_.max_iterations));
+    return Status::Ok();
+  }
+
+  Status PrepareMatrix() override {
+    KINESTAT_PETSC(MatSetOption(A_, MAT_SPD, PETSC_TRUE));
+    if (!options_.near_null_space) return Status::Ok();
+    const MatX modes = options_.near_null_space();
+    if (modes.rows() == n_ && modes.cols() > 0) KINESTAT_PETSC(AttachNearNullSpace(modes));
+    return Status::Ok();
+  }
+
+  Status ConfigureKsp(KSP ksp, PC pc, FactorizationReport* r) override {
+    KINESTAT_PETSC(KSPSetType(ksp, KSPCG));
+    KINESTAT_PETSC(PCSetType(pc, PCGAMG));
+    // The true residual ||b - A x|| / ||b|| is what the tolerance bounds (not the preconditioned one).
+    KINESTAT_PETSC(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED));
+    KINESTAT_PETSC(KSPSetTolerances(ksp, options_.relative_tolerance, 0.0, PETSC_DEFAULT, options_.max_iterations));
+    r->ordering = "none (algebraic multigrid)";
     return Status::Ok();
   }
 
   // The rigid-body modes, orthonormalized (MatNullSpaceCreate wants an orthonormal basis), each
   // rank setting its own rows.
-  PetscErrorCode AttachNearNullSpace() {
-    const MatX Q = Eigen::HouseholderQR<MatX>(near_null_).householderQ() * MatX::Identity(n_, near_null_.cols());
+  PetscErrorCode AttachNearNullSpace(const MatX& modes) {
+    const MatX Q = Eigen::HouseholderQR<MatX>(modes).householderQ() * MatX::Identity(n_, modes.cols());
     std::vector<Vec> vectors(Q.cols(), nullptr);
     const std::vector<PetscInt> rows = owned_rows();
     for (Eigen::Index k = 0; k < Q.cols(); ++k) {
@@ -430,47 +515,26 @@ class PetscSolver final : public SparseCholesky {
     for (Vec& v : vectors) PetscCall(VecDestroy(&v));
     return 0;
   }
-
-  SparseCholeskyOptions options_;
-  MatX near_null_;
-  Mat A_ = nullptr;
-  KSP ksp_ = nullptr;
-  int n_ = 0;
-  PetscInt rstart_ = 0, rend_ = 0;
-  int analyses_ = 0;
 };
 
 }  // namespace
 
 bool petsc_built() { return true; }
 
-std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& options) {
-  return std::make_unique<PetscSolver>(options);
+std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions& options) {
+  return std::make_unique<PetscMumpsCholesky>(options);
+}
+
+std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions& options) {
+  return std::make_unique<PetscCgSolver>(options);
 }
 
 #else  // PETSc not built in
 
-namespace {
-
-class UnavailableSolver final : public SparseCholesky {
- public:
-  explicit UnavailableSolver(Backend backend) : backend_(backend) {}
-  Status Factorize(const SparseMatrix&, FactorizationReport*) override { return check_backend_built(backend_); }
-  Status Solve(const MatX&, MatX*) const override { return check_backend_built(backend_); }
-  int num_symbolic_analyses() const override { return 0; }
-  std::string backend_description() const override { return std::string(backend_name(backend_)) + " (not built in)"; }
-
- private:
-  Backend backend_;
-};
-
-}  // namespace
-
 bool petsc_built() { return false; }
 
-std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& options) {
-  return std::make_unique<UnavailableSolver>(options.backend);
-}
+std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions&) { return nullptr; }
+std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions&) { return nullptr; }
 
 #endif
 

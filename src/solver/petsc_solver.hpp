@@ -1,15 +1,18 @@
-// The PETSc backends of SparseCholesky (internal: made through solver/linear_solver_factory.hpp):
-// MUMPS's distributed Cholesky, and CG preconditioned by GAMG with the rigid-body near-null space.
+// The PETSc backends (internal: made through solver/linear_solver_factory.hpp): MUMPS's distributed
+// Cholesky (a SparseCholesky), and CG preconditioned by GAMG with the rigid-body near-null space (a
+// LinearSolver of the iterative kind). Both assemble and solve through one PETSc KSP.
 #pragma once
 
 #include <memory>
 
+#include "kinestat/solver/linear_solver.hpp"
 #include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::solver {
 
 bool petsc_built();
-// Without PETSc: an object whose Factorize and Solve fail with check_backend_built's message.
-std::unique_ptr<SparseCholesky> make_petsc_solver(const SparseCholeskyOptions& options);
+// Only with petsc_built() (the factory checks it; without PETSc they return nullptr).
+std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions& options);
+std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions& options);
 
 }  // namespace kinestat::solver

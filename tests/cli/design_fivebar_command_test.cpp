@@ -99,10 +99,22 @@ TEST(DesignFiveBarCommand, JsonToStdoutNamesTheDesignWithTheLargestShare) {
   EXPECT_EQ(j["timing"]["postures"], 4 * 42);
 }
 
+// As every command's Output: with --json - and no --quiet the report goes to stderr, stdout stays JSON.
+TEST(DesignFiveBarCommand, JsonToStdoutSendsTheReportToStderr) {
+  std::vector<std::string> args = small_run({{"--json", "-"}});
+  std::erase(args, "--quiet");
+  const CliRun r = run_cli(args);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["schema"], "kinestat-five-bar-design-sweep");
+  EXPECT_NE(r.err.find("best design: r1 = "), std::string::npos) << r.err;
+}
+
 TEST(DesignFiveBarCommand, PngOfTheDesignMapHasTheStatedSize) {
   const std::string png = ::testing::TempDir() + "kinestat_design_map.png";
   fs::remove(png);
-  const CliRun r = run_cli(small_run({{"--png", png}}));
+  std::vector<std::string> args = small_run({{"--png", png}});
+  std::erase(args, "--quiet");  // --quiet drops the report
+  const CliRun r = run_cli(args);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("best design: r1 = "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("wrote " + png), std::string::npos) << r.out;

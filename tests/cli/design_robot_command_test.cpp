@@ -115,7 +115,9 @@ TEST(DesignRobotCommand, LoadedModeEqualsItsDirectMap) {
 }
 
 TEST(DesignRobotCommand, TableNamesTheBestAndTheUnits) {
-  const CliRun r = run_cli(delta_design({"arm=250:350"}, {"--steps", "2"}));
+  std::vector<std::string> args = delta_design({"arm=250:350"}, {"--steps", "2"});
+  std::erase(args, "--quiet");  // --quiet drops the report
+  const CliRun r = run_cli(args);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("parameters in the units of"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("lengths in mm"), std::string::npos) << r.out;
@@ -162,7 +164,9 @@ TEST(DesignRobotCommand, ABadDesignIsReportedNotFatal) {
   EXPECT_NE(table[1]["message"].get<std::string>().find("height"), std::string::npos) << table[1];
   EXPECT_EQ(table[0]["status"], "ok");
   EXPECT_NE(j["best"]["index"], 1);
-  const CliRun text = run_cli(delta_design({"arm=250:600", "forearm=500:800"}, {"--steps", "2"}));
+  std::vector<std::string> args = delta_design({"arm=250:600", "forearm=500:800"}, {"--steps", "2"});
+  std::erase(args, "--quiet");  // --quiet drops the report
+  const CliRun text = run_cli(args);
   EXPECT_NE(text.out.find("failed: "), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("1 design failed"), std::string::npos) << text.out;
 }

@@ -1,6 +1,6 @@
 // The distributed assembly (docs/fea.md, "Large meshes") on one process: element ranges that cover
 // the mesh once, and a link stiffness assembled as two element halves whose sum the backend forms
-// (SparseCholesky::FactorizeSum) giving the 6x6 of the whole stiffness factorized at once.
+// (LinearSolver::FactorizeSum) giving the 6x6 of the whole stiffness factorized at once.
 // tests/mpi/ runs the same path on two MPI ranks.
 #include <gtest/gtest.h>
 
@@ -40,7 +40,7 @@ double element_centre_x(const TetMesh& mesh, int e) {
 // The 6x6 compliance of the reference dofs of `map` from the summands of its reduced stiffness.
 Mat6 compliance(solver::Backend backend, const std::vector<solver::SparseMatrix>& summands, const DofMap& map,
                 solver::FactorizationReport* report) {
-  auto solver = solver::make_sparse_cholesky({.backend = backend});
+  auto solver = solver::make_linear_solver({.backend = backend});
   const Status s = solver->FactorizeSum(summands, report);
   EXPECT_TRUE(s.ok()) << s.message();
   MatX F = MatX::Zero(map.num_dofs, 6), X;

@@ -37,7 +37,7 @@ TEST(LinkStiffnessMemory, EstimateCoversTheFactorOfASmallMesh) {
 
 TEST(LinkStiffnessMemory, RefusedWithTheEstimateTheMemoryAMeshSizeAndTheDistributedBackend) {
   LinkStiffnessOptions o = bar_options();
-  o.cholesky.memory_limit_bytes = 1e6;  // injected: 1 MB available
+  o.solver.memory_limit_bytes = 1e6;  // injected: 1 MB available
   auto r = link_stiffness(bar(), kSteel, o);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), StatusCode::kInvalidInput);

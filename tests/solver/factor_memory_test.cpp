@@ -50,7 +50,7 @@ TEST(FactorMemory, RefusedBeforeTheNumericFactorizationWhenItDoesNotFit) {
   FactorizationReport fits;
   ASSERT_TRUE(make_sparse_cholesky()->Factorize(A, &fits).ok());
 
-  SparseCholeskyOptions o;
+  LinearSolverOptions o;
   o.memory_limit_bytes = 0.5 * fits.factor_bytes;  // injected: the estimate does not fit
   std::vector<std::string> stages;
   o.progress = [&stages](const std::string& s) { stages.push_back(s); };

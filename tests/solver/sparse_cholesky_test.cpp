@@ -113,6 +113,29 @@ TEST(LinearSolverFactory, MakesTheNamedBackendWithTheCallersOptions) {
   EXPECT_EQ(rep.ordering, "natural");  // the caller's ordering reached the backend
 }
 
+// CG + multigrid is a LinearSolver, not a Cholesky: make_sparse_cholesky refuses it at Factorize
+// (after saying it is not built in, without PETSc); the direct solve reports no iterations; the
+// factory's answers for the methods (no backend branch there) follow the kind.
+TEST(LinearSolverFactory, TheIterativeBackendIsNoCholesky) {
+  FactorizationReport rep;
+  const Status s = make_sparse_cholesky({.backend = Backend::kPetscCg})->Factorize(spring_chain(5, 1.0, 1.0), &rep);
+  EXPECT_EQ(s.code(), StatusCode::kInvalidInput);
+  EXPECT_NE(s.message().find(backend_built(Backend::kPetscCg) ? "not a Cholesky" : "not built"), std::string::npos)
+      << s.message();
+  auto direct = make_linear_solver();
+  ASSERT_TRUE(direct->Factorize(spring_chain(5, 1.0, 1.0), &rep).ok());
+  MatX X;
+  SolveReport solve;
+  ASSERT_TRUE(direct->Solve(MatX::Ones(6, 2), &X, &solve).ok());
+  EXPECT_EQ(solve.iterations, std::vector<int>({0, 0}));
+  EXPECT_EQ(solve.relative_tolerance, 0.0);
+  EXPECT_TRUE(factors_on_one_process(Backend::kCholmod));
+  EXPECT_FALSE(factors_on_one_process(Backend::kPetscMumps));
+  EXPECT_FALSE(factors_on_one_process(Backend::kPetscCg));
+  EXPECT_EQ(solution_tolerance({.backend = Backend::kCholmod, .relative_tolerance = 1e-6}), 0.0);
+  EXPECT_EQ(solution_tolerance({.backend = Backend::kPetscCg, .relative_tolerance = 1e-6}), 1e-6);
+}
+
 TEST(NullSpace, FindsTheRigidTranslationOfAFreeChain) {
   auto ns = near_null_space(spring_chain(20, 1e3, 0.0), 3, 1e-13, {.ordering = Ordering::kNatural});
   ASSERT_TRUE(ns.ok());

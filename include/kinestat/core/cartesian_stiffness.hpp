@@ -17,17 +17,22 @@
 
 namespace kinestat {
 
-struct CartesianStiffness {
+// The two 6x6 matrices of a point, fixed size (no heap): the part of a CartesianStiffness that a
+// posture sweep keeps per point (mechanisms::PostureResult derives from it too).
+struct CartesianMatrices {
   static constexpr const char* kStiffnessUnits = "N/m, N/rad (rows ux uy uz); N, N m/rad (rows rx ry rz)";
   static constexpr const char* kComplianceUnits = "m/N, m/(N m) (rows ux uy uz); rad/N, rad/(N m) (rows rx ry rz)";
 
+  Mat6 stiffness = Mat6::Zero();
+  Mat6 compliance = Mat6::Zero();
+};
+
+struct CartesianStiffness : CartesianMatrices {
   Vec3 point = Vec3::Zero();          // m, in `frame`: the tool, node or reference point
   std::string frame = "global axes";  // the axes of the dofs, in words
 
   // `stiffness` is the finite part: zero along rigid directions. `compliance` is zero along rigid
   // directions and is valid only when compliance_defined.
-  Mat6 stiffness = Mat6::Zero();
-  Mat6 compliance = Mat6::Zero();
   bool stiffness_defined = false;  // no rigid direction: `stiffness` is the whole stiffness
   bool compliance_defined =
       false;  // no free direction: `compliance` is the whole compliance, K C = I off rigid directions

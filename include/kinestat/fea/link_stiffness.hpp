@@ -30,7 +30,7 @@
 #include "kinestat/elements/material.hpp"
 #include "kinestat/fea/region.hpp"
 #include "kinestat/fea/tet_mesh.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/linear_solver.hpp"
 
 namespace kinestat::fea {
 
@@ -47,7 +47,7 @@ struct LinkStiffnessOptions {
   // Displacement and von Mises fields of the six load cases (for VTK output): 6 x (3 per node + 1
   // per element) numbers, so off unless asked for.
   bool keep_fields = false;
-  solver::SparseCholeskyOptions cholesky;
+  solver::LinearSolverOptions solver;  // the backend (direct or iterative) and its options
   // How many of the lowest natural frequencies and their modes (count, 0: none, at most kMaxLinkModes).
   // Needs material.density > 0 (kg/m^3) and the cholmod backend (the Lanczos iteration solves with
   // the factor of K on one process; the distributed backends are refused).

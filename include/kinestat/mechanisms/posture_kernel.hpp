@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "kinestat/core/cartesian_stiffness.hpp"
 #include "kinestat/core/stiffness_indices.hpp"
 #include "kinestat/core/types.hpp"
 
@@ -37,11 +38,11 @@ inline bool has_values(PostureStatus s) { return s == PostureStatus::kOk || s ==
 enum class StiffnessMethod { kMsa, kVjm };
 const char* to_string(StiffnessMethod m);  // "MSA", "VJM"
 
-struct PostureResult {
+// The tool point's stiffness and compliance (global axes, SI: CartesianMatrices, the fixed-size part
+// of CartesianStiffness: a sweep keeps one per point), set when kOk, and what a posture adds.
+struct PostureResult : CartesianMatrices {
   PostureStatus status = PostureStatus::kUnreachable;
-  Mat6 stiffness = Mat6::Zero();   // tool point, global axes: N/m, N/rad, N m/m, N m/rad
-  Mat6 compliance = Mat6::Zero();  // its inverse: m/N, m/(N m), rad/N, rad/(N m)
-  CartesianIndices indices;        // of `stiffness` when kOk
+  CartesianIndices indices;  // of `stiffness` when kOk (fixed size: no eigenvectors)
   // Distance to a singularity, dimensionless in [0, 1], 0 at a singularity; each kernel documents
   // its measure (the five-bar: the smaller of its parallel and serial measures). Set whenever the
   // point is reachable, also when singular.
@@ -51,6 +52,9 @@ struct PostureResult {
   // start's included), also when it failed; 0 for a kernel without an iteration or an unreachable point.
   int newton_iterations = 0;
 };
+
+// Sets the stiffness K, its compliance C and K's indices (the status is the caller's).
+void set_stiffness(PostureResult& r, const Mat6& K, const Mat6& C);
 
 class PostureKernel {
  public:

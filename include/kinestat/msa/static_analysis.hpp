@@ -19,7 +19,7 @@
 namespace kinestat::msa {
 
 struct SolveOptions {
-  solver::SparseCholeskyOptions cholesky;
+  solver::LinearSolverOptions cholesky;
   // For a singular structure, solve K + eps D instead (D = diag K, eps = regularization) and mark
   // the result as regularized. Off by default: a singular structure gets a diagnosis, no numbers.
   bool regularize = false;
@@ -101,7 +101,7 @@ struct Solution {
 // it keeps the sparse Cholesky object, so the symbolic analysis is done once.
 class Workspace {
  public:
-  explicit Workspace(const solver::SparseCholeskyOptions& options = {});
+  explicit Workspace(const solver::LinearSolverOptions& options = {});
   solver::SparseCholesky& cholesky() { return *cholesky_; }
   int num_symbolic_analyses() const { return cholesky_->num_symbolic_analyses(); }
 

@@ -14,15 +14,16 @@
 
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/types.hpp"
-#include "kinestat/solver/sparse_cholesky.hpp"
+#include "kinestat/solver/linear_solver.hpp"
 
 namespace kinestat::solver {
 
 // The `count` largest mu (fewer when the system has fewer unknowns), descending, and their vectors
-// as columns, K-orthonormal (q' K q = 1). `chol` holds K's factorization. Only the lower triangles of
+// as columns, K-orthonormal (q' K q = 1). `chol` was prepared with K (Factorize);
+// Lanczos assumes its solves exact to round-off: a direct one (factors_on_one_process). Only the lower triangles of
 // A and Kr are read (full symmetric matrices and the FEA's lower-triangle storage both work). kNotConverged when
 // Lanczos does not converge, kInternal when it fails.
 StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
-                                                               const SparseCholesky& chol, int count);
+                                                               const LinearSolver& chol, int count);
 
 }  // namespace kinestat::solver

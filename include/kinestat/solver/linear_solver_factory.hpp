@@ -1,8 +1,8 @@
 // The one place that turns a backend choice into a solver object (as Ceres' LinearSolver::Create).
-// Every factorization in kinestat is made here, from the caller's SparseCholeskyOptions.
-// A new backend is one implementation file pair in src/solver/, one enumerator of solver::Backend
-// and one entry in this factory; the methods (MSA, FEA) do not change. The PETSc backends
-// (src/solver/petsc_solver.cpp) are the second implementation, built when PETSc is found.
+// Every solver object in kinestat is made here, from the caller's LinearSolverOptions. A new backend
+// is one implementation file pair in src/solver/ (a SparseCholesky, or a LinearSolver of another
+// kind), one enumerator of solver::Backend and its entries in this factory; the methods (MSA, FEA)
+// do not change. The PETSc backends (src/solver/petsc_solver.cpp) are built when PETSc is found.
 #pragma once
 
 #include <memory>
@@ -11,13 +11,19 @@
 #include <vector>
 
 #include "kinestat/core/status.hpp"
+#include "kinestat/solver/linear_solver.hpp"
 #include "kinestat/solver/sparse_cholesky.hpp"
 
 namespace kinestat::solver {
 
-// A solver object for options.backend, configured by `options` (ordering, pivot tolerance). A backend
-// that is not built in gives an object whose Factorize fails with kInvalidInput saying so.
-std::unique_ptr<SparseCholesky> make_sparse_cholesky(const SparseCholeskyOptions& options = {});
+// A solver of any kind for options.backend, configured by `options`. A backend that is not built in
+// gives an object whose Factorize fails with kInvalidInput saying so (check_backend_built's message).
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options = {});
+
+// A direct factorization for options.backend (cholmod, petsc-mumps): for callers that solve with
+// one factor exactly and repeatedly. An iterative backend gives an object whose Factorize fails with
+// kInvalidInput saying it is not a factorization; one not built in, with check_backend_built's.
+std::unique_ptr<SparseCholesky> make_sparse_cholesky(const LinearSolverOptions& options = {});
 
 // The backends built into this library, and their names for options and reports ("cholmod",
 // "petsc-mumps", "petsc-cg"). backend_from_name knows every backend, built or not.
@@ -27,5 +33,12 @@ const char* backend_name(Backend backend);
 std::optional<Backend> backend_from_name(std::string_view name);
 // Ok, or kInvalidInput naming the backend and why it is not built in (how to get it).
 Status check_backend_built(Backend backend);
+
+// Whether `backend` holds a Cholesky factor on this process alone (cholmod): what an eigensolver
+// iterating on the factor (solver/generalized_eigen.hpp) needs.
+bool factors_on_one_process(Backend backend);
+// The relative residual the solutions of `options` are accurate to: 0 for a direct backend, the
+// stopping tolerance for an iterative one (results of different tolerances are not interchangeable).
+double solution_tolerance(const LinearSolverOptions& options);
 
 }  // namespace kinestat::solver

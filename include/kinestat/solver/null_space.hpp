@@ -23,7 +23,7 @@ StatusOr<NullSpace> lowest_modes(const SparseMatrix& A, const SparseCholesky& fa
 // The shifted matrix is factorized with the caller's `options` (backend, ordering); its pivot
 // check is off (the shift, not the check, makes the matrix regular).
 StatusOr<NullSpace> near_null_space(const SparseMatrix& A, int block, double threshold,
-                                    const SparseCholeskyOptions& options);
+                                    const LinearSolverOptions& options);
 
 // D = diag(A), floored at 1e-12 max|diag| so that dofs with no stiffness at all still count.
 VecX stiffness_scaling(const SparseMatrix& A);
