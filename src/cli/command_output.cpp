@@ -29,10 +29,10 @@ int Output::finish(const std::string& command, const Status& result) {
   return exit_code_for(result);
 }
 
-Status Output::write_json(const nlohmann::json& j) {
+Status Output::write_json(const nlohmann::json& j, int indent) {
   if (options_.json.empty()) return Status::Ok();
   if (options_.json == "-") {
-    io::write_json(ctx_.out, j);
+    io::write_json(ctx_.out, j, indent);
     if (!ctx_.out.flush())
       return Status::Invalid("stdout: writing the JSON failed (a full disk or a closed pipe?); give --json FILE");
     return Status::Ok();
@@ -40,7 +40,7 @@ Status Output::write_json(const nlohmann::json& j) {
   std::error_code ec;  // the folder may not exist yet; write_json names what still fails
   if (const auto parent = std::filesystem::path(options_.json).parent_path(); !parent.empty())
     std::filesystem::create_directories(parent, ec);
-  return io::write_json(options_.json, j);
+  return io::write_json(options_.json, j, indent);
 }
 
 StatusOr<mechanisms::RobotModel> load_robot_model(Context& ctx, const std::string& command, const std::string& path,

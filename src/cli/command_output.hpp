@@ -33,9 +33,10 @@ class Output {
   std::ostream& report();    // stdout; stderr when the JSON goes to stdout; nowhere with --quiet
   std::ostream& progress();  // stderr; nowhere with --quiet
   bool json_wanted() const { return !options_.json.empty(); }
-  // To the --json file (its folder created) or to stdout; Ok without --json. kInvalidInput naming
-  // the file when it cannot be written.
-  Status write_json(const nlohmann::json& j);
+  // To the --json file (its folder created; written atomically, io::write_json) or to stdout,
+  // indented by `indent` spaces (-1: compact); Ok without --json. kInvalidInput naming the file
+  // when it cannot be written.
+  Status write_json(const nlohmann::json& j, int indent = 2);
   // The exit status of a computed result (0, or 3 for a singular one). A result that is not ok is
   // explained in the report; with --quiet, which drops the report, through report_failure instead.
   int finish(const std::string& command, const Status& result);

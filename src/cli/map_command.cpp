@@ -21,7 +21,6 @@
 #include "kinestat/core/units.hpp"
 #include "kinestat/io/map_json.hpp"
 #include "kinestat/io/map_vti.hpp"
-#include "kinestat/io/results_json.hpp"
 #include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 #include "kinestat/io/workspace_map_png.hpp"
@@ -52,8 +51,8 @@ struct MapArgs {
   double near_singular = MapOptions{}.near_singular_threshold;
   std::size_t max_points = MapOptions{}.max_points;
   int threads = 0;
-  std::string vti, json, png, field = "k_t_min";
-  bool quiet = false;
+  std::string vti, png, field = "k_t_min";
+  OutputOptions out;  // --json, --quiet
   // Options given on the command line, to refuse those that do not apply to the target.
   CLI::Option *mode_opt = nullptr, *assembly_opt = nullptr, *method_opt = nullptr, *region_opt = nullptr,
               *box_opt = nullptr, *wrench_opt = nullptr, *orientation_opt = nullptr, *angles_opt = nullptr,
@@ -169,7 +168,7 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
     o.method = a.method == "msa" ? StiffnessMethod::kMsa : StiffnessMethod::kVjm;
   }
   if (Status st = parse_load_options(a.load, a.wrench, o.displacement, o.wrench); !st.ok()) return st;
-  auto model = load_robot_model(ctx, "map", a.target, a.quiet);
+  auto model = load_robot_model(ctx, "map", a.target, a.out.quiet);
   if (!model.ok()) return model.status();
   auto shared = std::make_shared<const RobotModel>(std::move(*model));
   const RobotDescription& d = shared->description();
@@ -345,7 +344,7 @@ int run_map(MapArgs& a, Context& ctx) {
   StatusOr<WorkspaceMap> map = Status::Ok();
   {
     Progress progress(ctx.err, "kinestat map", "points");
-    if (!a.quiet) options.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
+    if (!a.out.quiet) options.progress = [&progress](std::size_t done, std::size_t total) { progress(done, total); };
     map = compute_workspace_map(*setup->kernel, *grid, options);
   }
   if (!map.ok()) return fail(map.status());
@@ -377,21 +376,15 @@ int run_map(MapArgs& a, Context& ctx) {
     if (Status s = io::write_workspace_map_png(a.png, *map, *field); !s.ok()) return fail(s);
     written.push_back(a.png);
   }
-  const bool json_to_stdout = a.json == "-";
-  if (!a.json.empty()) {
-    const nlohmann::json j = io::workspace_map_to_json(*map);
-    if (json_to_stdout) {
-      ctx.out << j.dump() << "\n";
-    } else {
-      // Compact: a map holds ~15 numbers per point.
-      if (Status s = io::write_json(a.json, j, -1); !s.ok()) return fail(s);
-      written.push_back(a.json);
-    }
+  Output output(ctx, a.out);
+  if (output.json_wanted()) {
+    // Compact: a map holds ~15 numbers per point.
+    if (Status s = output.write_json(io::workspace_map_to_json(*map), -1); !s.ok()) return fail(s);
+    if (a.out.json != "-") written.push_back(a.out.json);
   }
-  if (!a.quiet && !json_to_stdout) {
-    ctx.out << summary_text(*map, step_text);
-    for (const std::string& w : written) ctx.out << "  wrote " << w << "\n";
-  }
+  std::ostream& out = output.report();
+  out << summary_text(*map, step_text);
+  for (const std::string& w : written) out << "  wrote " << w << "\n";
   return kExitOk;
 }
 
@@ -449,10 +442,9 @@ void register_map_command(CLI::App& app, Context& ctx) {
       ->check(CLI::PositiveNumber);  // a size_t would take -1 as 2^64 - 1
   cmd->add_option("--threads", a->threads, "threads (default 0: all cores)");
   cmd->add_option("--vti", a->vti, "write the map as VTK ImageData (.vti) for ParaView");
-  cmd->add_option("--json", a->json, "write the map as JSON ('-': to stdout, nothing else on stdout)");
   cmd->add_option("--png", a->png, "write a PNG of --field (a box: a sheet of z slices)");
   cmd->add_option("--field", a->field, "field of the PNG (default k_t_min; docs/maps.md lists them)");
-  cmd->add_flag("--quiet", a->quiet, "no progress on stderr, no summary on stdout (errors still go to stderr)");
+  add_output_options(*cmd, a->out, "kinestat-workspace-map", "docs/maps.md");
   cmd->callback([a, &ctx] { ctx.exit_code = run_map(*a, ctx); });
 }
 

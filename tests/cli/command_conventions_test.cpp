@@ -101,6 +101,7 @@ TEST(CommandConventions, JsonToStdoutForEveryCommand) {
       {{"identify", kModels + "orthoglide_puu.yaml", kModels + "orthoglide_paper_targets.yaml"},
        "kinestat-identification"},
       {with(kBarLink, {"--size", "20"}), "kinestat-link-stiffness"},
+      {{"map", "fivebar", "--step", "25"}, "kinestat-workspace-map"},
   };
   for (const auto& [args, schema] : commands) {
     const CliRun r = run_cli(with(args, {"--json", "-"}));
