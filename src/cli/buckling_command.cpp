@@ -15,9 +15,6 @@
 namespace kinestat::cli {
 namespace {
 
-// Mode shapes are printed in full up to this many nodes; larger models: --json or --vtk.
-constexpr std::size_t kMaxPrintedNodes = 50;
-
 std::string report(const msa::Structure& s, const msa::BucklingResult& r) {
   std::string t = fmt::format("Linear buckling of load case '{}' (K phi = -lambda K_G phi, {} free dofs)\n",
                               r.load_case_name, r.num_free_dofs);
@@ -35,17 +32,7 @@ std::string report(const msa::Structure& s, const msa::BucklingResult& r) {
   t += "Mode shapes (scaled to a largest translation of 1 m; translations m, rotations rad at that scale):\n";
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     t += fmt::format("  mode {} (lambda = {:.8g})\n", k + 1, r.modes[k].load_factor);
-    if (s.nodes().size() > kMaxPrintedNodes) {
-      t += fmt::format("    ({} nodes: see --json or --vtk)\n", s.nodes().size());
-      continue;
-    }
-    t += fmt::format("    {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "node", "ux", "uy", "uz", "rx", "ry",
-                     "rz");
-    for (std::size_t n = 0; n < s.nodes().size(); ++n) {
-      const Vec6& v = r.modes[k].shape[n];
-      t += fmt::format("    {:>10} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f} {:>10.4f}\n", s.nodes()[n].id,
-                       v(0), v(1), v(2), v(3), v(4), v(5));
-    }
+    t += mode_shape_table(s, r.modes[k].shape, false);
   }
   return t;
 }
@@ -83,19 +70,12 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
     opt.count = args->count;
     opt.load_case = std::max(args->case_index, 0);
     if (!args->case_name.empty()) {
-      const auto& cases = s->load_cases();
-      auto it =
-          std::find_if(cases.begin(), cases.end(), [&](const msa::LoadCase& c) { return c.name == args->case_name; });
-      if (it == cases.end()) {
-        std::string names;
-        for (const auto& c : cases) names += (names.empty() ? "'" : ", '") + c.name + "'";
-        ctx.exit_code = report_failure(
-            ctx, "buckling",
-            Status::Invalid(fmt::format("{}: no load case named '{}' (it has {}); give one of them to --case",
-                                        args->file, args->case_name, names.empty() ? "none" : names)));
+      const StatusOr<int> k = load_case_index(*s, args->file, args->case_name, "--case");
+      if (!k.ok()) {
+        ctx.exit_code = report_failure(ctx, "buckling", k.status());
         return;
       }
-      opt.load_case = static_cast<int>(it - cases.begin());
+      opt.load_case = *k;
     }
     const msa::BucklingResult r = msa::buckling(*s, opt);
     if (!r.status.ok()) {

@@ -18,8 +18,6 @@
 namespace kinestat::cli {
 namespace {
 
-constexpr std::size_t kMaxPrintedNodes = 50;  // larger models: --json or --vtk
-
 std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lumped) {
   std::string t;
   if (r.prestress)
@@ -47,17 +45,7 @@ std::string report(const msa::Structure& s, const msa::ModalResult& r, bool lump
   t += "Mode shapes (mass-normalized, phi' M phi = 1: translations m/sqrt(kg), rotations rad/sqrt(kg)):\n";
   for (std::size_t k = 0; k < r.modes.size(); ++k) {
     t += fmt::format("  mode {} (f = {:.8g} Hz)\n", k + 1, r.modes[k].frequency);
-    if (s.nodes().size() > kMaxPrintedNodes) {
-      t += fmt::format("    ({} nodes: see --json or --vtk)\n", s.nodes().size());
-      continue;
-    }
-    t += fmt::format("    {:>10} {:>11} {:>11} {:>11} {:>11} {:>11} {:>11}\n", "node", "ux", "uy", "uz", "rx", "ry",
-                     "rz");
-    for (std::size_t n = 0; n < s.nodes().size(); ++n) {
-      const Vec6& v = r.modes[k].shape[n];
-      t += fmt::format("    {:>10} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e} {:>11.4e}\n", s.nodes()[n].id,
-                       v(0), v(1), v(2), v(3), v(4), v(5));
-    }
+    t += mode_shape_table(s, r.modes[k].shape, true);
   }
   return t;
 }
@@ -76,10 +64,7 @@ void register_modes_command(CLI::App& app, Context& ctx) {
       "modes",
       "natural frequencies and mode shapes of a YAML structure file or a Frame3DD .3dd file (with --units; "
       "docs/stability-and-modes.md; materials need a density); report, JSON and VTK in SI units");
-  cmd->add_option("file", args->file, "structure file (.yaml) or Frame3DD input file (.3dd)")->required();
-  cmd->add_option("--units", args->units,
-                  "FORCE-LENGTH of a .3dd file, which states none (required there, refused for YAML): force N, kN, "
-                  "lbf or kip, length m, mm, cm, in or ft, e.g. kip-in or N-mm");
+  add_structure_file_options(*cmd, args->file, args->units);
   cmd->add_option("--count", args->count,
                   "how many of the lowest frequencies (1 to 100, default 6, or a .3dd file's number of modes)")
       ->check(CLI::Range(1, 100));
@@ -120,17 +105,9 @@ void register_modes_command(CLI::App& app, Context& ctx) {
                                         nc == 0 ? " (none to prestress it)" : "", nc - 1)));
       prestress = args->prestress_index;
     } else if (!args->prestress.empty() && !asked_none) {
-      auto it =
-          std::find_if(cases.begin(), cases.end(), [&](const msa::LoadCase& c) { return c.name == args->prestress; });
-      if (it == cases.end()) {
-        std::string names;
-        for (const auto& c : cases) names += (names.empty() ? "'" : ", '") + c.name + "'";
-        return fail(
-            Status::Invalid(fmt::format("{}: no load case named '{}' (it has {}); give one of them to "
-                                        "--prestress, or 'none'",
-                                        args->file, args->prestress, names.empty() ? "none" : names)));
-      }
-      prestress = static_cast<int>(it - cases.begin());
+      const StatusOr<int> k = load_case_index(*s, args->file, args->prestress, "--prestress, or 'none'");
+      if (!k.ok()) return fail(k.status());
+      prestress = *k;
     }
     bool second_order = args->second_order;
     if (io::is_frame3dd_file(args->file)) {

@@ -1,7 +1,9 @@
 #include "cli/msa_output.hpp"
 
+#include <algorithm>
 #include <ostream>
 
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include "kinestat/io/results_json.hpp"
@@ -26,6 +28,13 @@ StatusOr<msa::Structure> read_structure_file(const std::string& file, const std:
   const StatusOr<io::FileUnits> u = io::units_from_name(units, "--units");
   if (!u.ok()) return u.status();
   return io::read_frame3dd(file, *u, &notes, &analysis);
+}
+
+void add_structure_file_options(CLI::App& cmd, std::string& file, std::string& units) {
+  cmd.add_option("file", file, "structure file (.yaml) or Frame3DD input file (.3dd)")->required();
+  cmd.add_option("--units", units,
+                 "FORCE-LENGTH of a .3dd file, which states none (required there, refused for YAML): force N, kN, "
+                 "lbf or kip, length m, mm, cm, in or ft, e.g. kip-in or N-mm");
 }
 
 void add_msa_output_options(CLI::App& cmd, MsaOutputOptions& o) {
@@ -66,6 +75,33 @@ int finish_msa_run(const std::string& command, const msa::Structure& s, const ms
     for (const auto& f : written) out.report() << "ParaView file: " << f << "\n";
   }
   return out.finish(command, sol.status);
+}
+
+StatusOr<int> load_case_index(const msa::Structure& s, const std::string& file, const std::string& name,
+                              const std::string& option) {
+  const auto& cases = s.load_cases();
+  const auto it = std::find_if(cases.begin(), cases.end(), [&](const msa::LoadCase& c) { return c.name == name; });
+  if (it != cases.end()) return static_cast<int>(it - cases.begin());
+  std::string names;
+  for (const auto& c : cases) names += (names.empty() ? "'" : ", '") + c.name + "'";
+  return Status::Invalid(fmt::format("{}: no load case named '{}' (it has {}); give one of them to {}", file, name,
+                                     names.empty() ? "none" : names, option));
+}
+
+std::string mode_shape_table(const msa::Structure& s, const std::vector<Vec6>& shape, bool scientific) {
+  constexpr std::size_t kMaxPrintedNodes = 50;  // larger models: --json or --vtk
+  if (s.nodes().size() > kMaxPrintedNodes)
+    return fmt::format("    ({} nodes: see --json or --vtk)\n", s.nodes().size());
+  const int w = scientific ? 11 : 10;  // "-1.2345e-03" is one wider than the fixed "-123.4567"
+  std::string t = fmt::format("    {:>10} {:>{}} {:>{}} {:>{}} {:>{}} {:>{}} {:>{}}\n", "node", "ux", w, "uy", w, "uz",
+                              w, "rx", w, "ry", w, "rz", w);
+  for (std::size_t n = 0; n < s.nodes().size(); ++n) {
+    t += fmt::format("    {:>10}", s.nodes()[n].id);
+    for (int d = 0; d < 6; ++d)
+      t += scientific ? fmt::format(" {:>11.4e}", shape[n](d)) : fmt::format(" {:>10.4f}", shape[n](d));
+    t += "\n";
+  }
+  return t;
 }
 
 int finish_mode_run(const std::string& command, const msa::Structure& s, const std::string& report,

@@ -1,6 +1,7 @@
 // What every MSA-based command does after solving: print the report, write JSON and VTK, and
 // turn the solution's status into the exit code. Shared by `solve` and `fivebar`; the end of the
-// eigenvalue commands (`buckling`, `modes`) too.
+// eigenvalue commands (`buckling`, `modes`) too, with their load-case lookup and mode-shape tables,
+// and the structure file that `solve` and `modes` read.
 #pragma once
 
 #include <functional>
@@ -21,6 +22,8 @@ namespace kinestat::cli {
 // or a YAML structure file, which states its own units (`units` refused).
 StatusOr<msa::Structure> read_structure_file(const std::string& file, const std::string& units,
                                              std::vector<std::string>& notes, io::Frame3ddAnalysis& analysis);
+// Adds the `file` argument and --units that read_structure_file takes.
+void add_structure_file_options(CLI::App& cmd, std::string& file, std::string& units);
 
 struct MsaOutputOptions {
   OutputOptions out;     // --json, --quiet
@@ -37,6 +40,16 @@ void add_msa_output_options(CLI::App& cmd, MsaOutputOptions& o);
 // `extra` holds fields added to the JSON document (the five-bar's posture).
 int finish_msa_run(const std::string& command, const msa::Structure& s, const msa::Solution& sol,
                    const MsaOutputOptions& o, Context& ctx, const nlohmann::json& extra = nlohmann::json::object());
+
+// The index of the load case of `s` named `name`; kInvalidInput "FILE: no load case named 'X' (it
+// has 'a', 'b'); give one of them to <option>" otherwise.
+StatusOr<int> load_case_index(const msa::Structure& s, const std::string& file, const std::string& name,
+                              const std::string& option);
+
+// One mode shape in the report of `buckling` or `modes`: a line per node (ux uy uz rx ry rz), in
+// fixed notation or, with `scientific`, in scientific notation; a model of more than 50 nodes gets
+// a pointer to --json and --vtk instead.
+std::string mode_shape_table(const msa::Structure& s, const std::vector<Vec6>& shape, bool scientific);
 
 // The end of `buckling` and `modes`: the report, the JSON (`make_json` is called only when JSON is
 // wanted) and, with `vtk_dir`, one .vtu per mode shape and a .pvd named BASENAME (the shapes in

@@ -27,10 +27,7 @@ void register_solve_command(CLI::App& app, Context& ctx) {
       app.add_subcommand("solve",
                          "solve a YAML structure file (format: docs/structure-format.md; its numbers are in the file's "
                          "'units:') or a Frame3DD .3dd file (with --units); the report, JSON and VTK are in SI units");
-  cmd->add_option("file", args->file, "structure file (.yaml) or Frame3DD input file (.3dd)")->required();
-  cmd->add_option("--units", args->units,
-                  "FORCE-LENGTH of a .3dd file, which states none (required there, refused for YAML): force N, kN, "
-                  "lbf or kip, length m, mm, cm, in or ft, e.g. kip-in or N-mm");
+  add_structure_file_options(*cmd, args->file, args->units);
   cmd->add_flag("--regularize", args->regularize,
                 "for a singular structure, also print a REGULARIZED answer (K + 1e-10 diag K), clearly marked");
   cmd->add_flag("--second-order", args->second_order,
