@@ -170,6 +170,16 @@ class Reader {
     return {n, l.number};
   }
 
+  // A list with one line per node: `seen` (node -> line) holds the nodes read so far, and a node
+  // read again fails: "node N is <twice> (also at line L); give one line per node<advice>".
+  void once_per_node(std::map<int, int>& seen, int node, const Line& l, const std::string& item, const char* twice,
+                     const char* advice = "") {
+    if (const auto it = seen.find(node); it != seen.end())
+      fail(l.number, item,
+           fmt::format("node {} is {} (also at line {}); give one line per node{}", node, twice, it->second, advice));
+    seen[node] = l.number;
+  }
+
   // A node or element number 1..n.
   int index(const std::string& t, int line, const std::string& item, int n, const char* kind) const {
     const int i = integer(t, line, item);
@@ -225,10 +235,7 @@ class Reader {
       const Line& l = next("reaction record", 7, "node and six flags x y z xx yy zz, 1 = fixed", block);
       const int node = index(l.tokens[0], l.number, "reaction record", nodes_, "node");
       const std::string item = fmt::format("reactions of node {}", node);
-      if (const auto it = seen.find(node); it != seen.end())
-        fail(l.number, item,
-             fmt::format("node {} is listed twice (also at line {}); give one line per node", node, it->second));
-      seen[node] = l.number;
+      once_per_node(seen, node, l, item, "listed twice");
       msa::DofMask fixed{};
       bool any = false;
       for (int d = 0; d < 6; ++d) {
@@ -425,6 +432,27 @@ class Reader {
     return index(l.tokens[0], l.number, item, static_cast<int>(elements_.size()), "element");
   }
 
+  // One kind of element load of load case `cs`: the count of the `listed` loads after `block` (which
+  // becomes theirs), then per load its first line of `n` fields, the first the element;
+  // `read(line, element, item)` reads the rest, `item` naming the load ("load case 1: uniform load
+  // on element 3").
+  template <class Read>
+  void read_element_loads(const std::string& cs, const std::string& listed, const std::string& load, std::size_t n,
+                          const std::string& fields, Block& block, Read&& read) {
+    const auto [count_n, line] = count(fmt::format("{}: number of {}s", cs, listed), block);
+    block = {listed + "s", line};
+    for (int i = 0; i < count_n; ++i) {
+      const Line& l = next(cs + " " + load, n, fields, block);
+      const int e = element(l, cs + " " + load);
+      read(l, e, fmt::format("{}: {} on element {}", cs, load, e));
+    }
+  }
+
+  // A load on element `e` (numbered from 1) read from line `l`.
+  msa::MemberLoad member_load(int e, msa::MemberLoadType type, const Line& l) const {
+    return {.beam = e - 1, .type = type, .source = source(l.number)};
+  }
+
   // A distance from an element's first node, within its length.
   double distance(const std::string& t, int line, const std::string& item, int e) const {
     const double x = value(t, line, item, Quantity::kLength);
@@ -458,12 +486,7 @@ class Reader {
       const Line& l = next(cs + " nodal load", 7, "n Fx Fy Fz Mxx Myy Mzz", block);
       const int node = index(l.tokens[0], l.number, cs + " nodal load", nodes_, "node");
       const std::string item = fmt::format("{}: load on node {}", cs, node);
-      if (const auto it = seen.find(node); it != seen.end())
-        fail(l.number, item,
-             fmt::format("node {} is loaded twice in this case (also at line {}); give one line per "
-                         "node with the sum",
-                         node, it->second));
-      seen[node] = l.number;
+      once_per_node(seen, node, l, item, "loaded twice in this case", " with the sum");
       msa::NodalLoad load;
       load.node = node - 1;
       load.source = source(l.number);
@@ -476,30 +499,18 @@ class Reader {
     }
 
     // Uniform loads: e Ux Uy Uz, local axes, force per length.
-    std::tie(n, line) = count(cs + ": number of uniform loads", block);
-    block = {"uniform loads", line};
-    for (int i = 0; i < n; ++i) {
-      const Line& l = next(cs + " uniform load", 4, "e Ux Uy Uz", block);
-      const int e = element(l, cs + " uniform load");
-      const std::string item = fmt::format("{}: uniform load on element {}", cs, e);
-      msa::MemberLoad ml;
-      ml.beam = e - 1;
-      ml.type = msa::MemberLoadType::kUniform;
-      ml.source = source(l.number);
+    auto uniform = [&](const Line& l, int e, const std::string& item) {
+      msa::MemberLoad ml = member_load(e, msa::MemberLoadType::kUniform, l);
       for (int c = 0; c < 3; ++c)
         ml.w1[c] = value(l.tokens[static_cast<std::size_t>(1 + c)], l.number, fmt::format("{} U{}", item, "xyz"[c]),
                          Quantity::kForcePerLength);
       lc.member_loads.push_back(ml);
-    }
+    };
+    read_element_loads(cs, "uniform load", "uniform load", 4, "e Ux Uy Uz", block, uniform);
 
     // Trapezoidal loads: e, then x1 x2 w1 w2 for local x, y and z on three lines; one kinestat load
     // per direction with a loaded stretch (x1 = x2 loads nothing, as in Frame3DD).
-    std::tie(n, line) = count(cs + ": number of trapezoidal loads", block);
-    block = {"trapezoidal loads", line};
-    for (int i = 0; i < n; ++i) {
-      const Line& first = next(cs + " trapezoidal load", 5, "e x1 x2 w1 w2 (local x)", block);
-      const int e = element(first, cs + " trapezoidal load");
-      const std::string item = fmt::format("{}: trapezoidal load on element {}", cs, e);
+    auto trapezoidal = [&](const Line& first, int e, const std::string& item) {
       for (int c = 0; c < 3; ++c) {
         const Line& l = c == 0 ? first : next(item, 4, fmt::format("x1 x2 w1 w2 (local {})", "xyz"[c]), block);
         const std::size_t o = c == 0 ? 1 : 0;
@@ -510,48 +521,31 @@ class Reader {
         const double w2 = value(l.tokens[o + 3], l.number, key + " w2", Quantity::kForcePerLength);
         if (x1 > x2) fail(l.number, key, "x1 > x2: the loaded stretch is reversed; give x1 <= x2");
         if (x1 == x2) continue;
-        msa::MemberLoad ml;
-        ml.beam = e - 1;
-        ml.type = msa::MemberLoadType::kTrapezoidal;
-        ml.source = source(l.number);
+        msa::MemberLoad ml = member_load(e, msa::MemberLoadType::kTrapezoidal, l);
         ml.a = x1;
         ml.b = x2;
         ml.w1[c] = w1;
         ml.w2[c] = w2;
         lc.member_loads.push_back(ml);
       }
-    }
+    };
+    read_element_loads(cs, "trapezoidal load", "trapezoidal load", 5, "e x1 x2 w1 w2 (local x)", block, trapezoidal);
 
     // Internal concentrated loads: e Px Py Pz x, local axes, x from the first node.
-    std::tie(n, line) = count(cs + ": number of internal concentrated loads", block);
-    block = {"internal concentrated loads", line};
-    for (int i = 0; i < n; ++i) {
-      const Line& l = next(cs + " concentrated load", 5, "e Px Py Pz x", block);
-      const int e = element(l, cs + " concentrated load");
-      const std::string item = fmt::format("{}: concentrated load on element {}", cs, e);
-      msa::MemberLoad ml;
-      ml.beam = e - 1;
-      ml.type = msa::MemberLoadType::kPoint;
-      ml.source = source(l.number);
+    auto concentrated = [&](const Line& l, int e, const std::string& item) {
+      msa::MemberLoad ml = member_load(e, msa::MemberLoadType::kPoint, l);
       for (int c = 0; c < 3; ++c)
         ml.force[c] = value(l.tokens[static_cast<std::size_t>(1 + c)], l.number, fmt::format("{} P{}", item, "xyz"[c]),
                             Quantity::kForce);
       ml.a = distance(l.tokens[4], l.number, item + " x", e);
       lc.member_loads.push_back(ml);
-    }
+    };
+    read_element_loads(cs, "internal concentrated load", "concentrated load", 5, "e Px Py Pz x", block, concentrated);
 
     // Temperature loads: e alpha hy hz Ty+ Ty- Tz+ Tz-. alpha and the temperatures share the file's
     // degree (F or C): only their products enter, so they are taken as written (1/K and K).
-    std::tie(n, line) = count(cs + ": number of temperature loads", block);
-    block = {"temperature loads", line};
-    for (int i = 0; i < n; ++i) {
-      const Line& l = next(cs + " temperature load", 8, "e alpha hy hz Ty+ Ty- Tz+ Tz-", block);
-      const int e = element(l, cs + " temperature load");
-      const std::string item = fmt::format("{}: temperature load on element {}", cs, e);
-      msa::MemberLoad ml;
-      ml.beam = e - 1;
-      ml.type = msa::MemberLoadType::kTemperature;
-      ml.source = source(l.number);
+    auto temperature = [&](const Line& l, int e, const std::string& item) {
+      msa::MemberLoad ml = member_load(e, msa::MemberLoadType::kTemperature, l);
       ThermalLoad& t = ml.thermal;
       t.alpha = value(l.tokens[1], l.number, item + " alpha", Quantity::kThermalExpansion, Sign::kPositive,
                       UnitOfInput{1.0, "1/deg"});
@@ -573,7 +567,9 @@ class Reader {
       t.dTy = face[0] - face[1];
       t.dTz = face[2] - face[3];
       lc.member_loads.push_back(ml);
-    }
+    };
+    read_element_loads(cs, "temperature load", "temperature load", 8, "e alpha hy hz Ty+ Ty- Tz+ Tz-", block,
+                       temperature);
 
     // Prescribed displacements: n Dx Dy Dz Dxx Dyy Dzz (length and rad). A non-zero value must be on
     // a fixed dof (Frame3DD requires it too); zeros on fixed dofs are the supports themselves.
@@ -584,12 +580,7 @@ class Reader {
       const Line& l = next(cs + " prescribed displacement", 7, "n Dx Dy Dz Dxx Dyy Dzz", block);
       const int node = index(l.tokens[0], l.number, cs + " prescribed displacement", nodes_, "node");
       const std::string item = fmt::format("{}: prescribed displacement of node {}", cs, node);
-      if (const auto it = seen.find(node); it != seen.end())
-        fail(l.number, item,
-             fmt::format("node {} is listed twice in this case (also at line {}); give one line per "
-                         "node",
-                         node, it->second));
-      seen[node] = l.number;
+      once_per_node(seen, node, l, item, "listed twice in this case");
       static constexpr std::array<const char*, 6> kKeys = {"Dx", "Dy", "Dz", "Dxx", "Dyy", "Dzz"};
       for (int d = 0; d < 6; ++d) {
         const std::string key = fmt::format("{} {}", item, kKeys[static_cast<std::size_t>(d)]);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -106,6 +107,18 @@ class Parser : public YamlFields {
     if (!ids.insert(id).second)
       fail(n["id"], fmt::format("{} '{}'", kind, id), "this id is already used; give each a unique id");
     return id;
+  }
+
+  // An entry that belongs to a node (`kind`: support, mass): its keys checked, its node and source
+  // set in `entry`; returns its name for messages, "support at node 'A'".
+  template <class Entry>
+  std::string node_entry(const YAML::Node& n, const char* kind, int index, std::initializer_list<const char*> allowed,
+                         Entry& entry) {
+    const std::string fallback = fmt::format("{} #{}", kind, index + 1);
+    check_map(n, fallback, allowed);
+    entry.source = source(n);
+    entry.node = node_ref(require(n, fallback, "node"), fallback, "node");
+    return fmt::format("{} at node '{}'", kind, s_.nodes()[entry.node].id);
   }
 
   // --- blocks ----------------------------------------------------------------------------------
@@ -302,24 +315,16 @@ class Parser : public YamlFields {
   }
 
   void parse_support(const YAML::Node& n, int i) {
-    const std::string fallback = fmt::format("support #{}", i + 1);
-    check_map(n, fallback, {"node", "fixed", "frame"});
     msa::Support sup;
-    sup.source = source(n);
-    sup.node = node_ref(require(n, fallback, "node"), fallback, "node");
-    const std::string item = fmt::format("support at node '{}'", s_.nodes()[sup.node].id);
+    const std::string item = node_entry(n, "support", i, {"node", "fixed", "frame"}, sup);
     sup.fixed = dof_mask(require(n, item, "fixed"), item);
     if (const YAML::Node f = n["frame"]; f.IsDefined()) sup.frame = frame(f, item);
     s_.add_support(sup);
   }
 
   void parse_mass(const YAML::Node& n, int i) {
-    const std::string fallback = fmt::format("mass #{}", i + 1);
-    check_map(n, fallback, {"node", "mass", "inertia"});
     msa::NodalMass m;
-    m.source = source(n);
-    m.node = node_ref(require(n, fallback, "node"), fallback, "node");
-    const std::string item = fmt::format("mass at node '{}'", s_.nodes()[m.node].id);
+    const std::string item = node_entry(n, "mass", i, {"node", "mass", "inertia"}, m);
     const YAML::Node mass = n["mass"], inertia = n["inertia"];
     if (!mass.IsDefined() && !inertia.IsDefined())
       fail(n, item, "a nodal mass needs 'mass: M' and/or 'inertia: [Ixx, Iyy, Izz]'");
