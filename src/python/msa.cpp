@@ -112,18 +112,7 @@ void bind_model(py::module_& m) {
                          "Vectors in the beam's local axes, or global when global_axes.")
       .def(py::init([](int beam, MemberLoadType type, bool global_axes, const Vec3& w1, const Vec3& w2, double a,
                        double b, const Vec3& force, const Vec3& moment, const ThermalLoad& thermal) {
-             MemberLoad ml;
-             ml.beam = beam;
-             ml.type = type;
-             ml.global_axes = global_axes;
-             ml.w1 = w1;
-             ml.w2 = w2;
-             ml.a = a;
-             ml.b = b;
-             ml.force = force;
-             ml.moment = moment;
-             ml.thermal = thermal;
-             return ml;
+             return MemberLoad{beam, type, global_axes, w1, w2, a, b, force, moment, thermal};
            }),
            py::arg("beam"), py::arg("type"), py::arg("global_axes") = false, py::arg("w1") = Vec3(Vec3::Zero()),
            py::arg("w2") = Vec3(Vec3::Zero()), py::arg("a") = 0.0, py::arg("b") = 0.0,
