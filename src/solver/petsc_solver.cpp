@@ -467,9 +467,9 @@ class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
       KINESTAT_SLEPC(EPSGetIterationNumber(eps, &restarts));
       if (converged < nev)
         return Status::NotConverged(
-            fmt::format("the Krylov-Schur eigensolver (SLEPc) converged to {} of {} eigenvalues in {} restarts; "
-                        "ask for fewer modes",
-                        converged, nev, restarts));
+            fmt::format("the Krylov-Schur eigensolver (SLEPc) converged to {} of {} eigenvalues after {} "
+                        "restart{}; ask for fewer modes",
+                        converged, nev, restarts, restarts == 1 ? "" : "s"));
       // Every rank gets all the eigenvalues and the whole vectors, K-normalized (q' K q = 1) as
       // the Spectra route gives them: the callers then work on one process's data.
       VecX mu(nev);
