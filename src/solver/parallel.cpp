@@ -191,17 +191,6 @@ Status broadcast_from_root(std::vector<double>&) { return Status::Ok(); }
 Status broadcast_from_root(std::vector<int>&) { return Status::Ok(); }
 Status gather_to_root(std::vector<double>&) { return Status::Ok(); }
 Status gather_to_root(std::vector<char>&) { return Status::Ok(); }
-Status sum_over_ranks(std::span<double> values) {
-  if (process_group().size == 1) return Status::Ok();
-  constexpr std::size_t kPiece = std::size_t{1} << 30;  // MPI's int counts
-  for (std::size_t first = 0; first < values.size(); first += kPiece) {
-    const int piece = static_cast<int>(std::min(kPiece, values.size() - first));
-    if (MPI_Allreduce(MPI_IN_PLACE, values.data() + first, piece, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD) != MPI_SUCCESS)
-      return Status::Internal("MPI_Allreduce of the ranks' sums failed");
-  }
-  return Status::Ok();
-}
-
 Status sum_over_ranks(std::span<double>) { return Status::Ok(); }
 Status agree_on_status(const Status& mine) { return mine; }
 Status same_on_every_rank(const std::string&, const std::string&) { return Status::Ok(); }

@@ -4,8 +4,10 @@
 // rank's summand (the elements it assembled) and lets PETSc add them, sending entries of other
 // ranks' rows to their owners, so that no rank holds the whole matrix. PETSc distributes the factor
 // (MUMPS) or the multigrid hierarchy (GAMG); the solution is gathered back to every rank, so every
-// rank computes the same 6x6. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) petsc_built() is
-// false and the factory makes neither.
+// rank computes the same 6x6. On the MUMPS backend SLEPc solves the generalized eigenproblem of
+// solver/generalized_eigen.hpp with the same factor (petsc_generalized_eigenpairs), the pencil's
+// other matrix assembled as K was. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) petsc_built()
+// is false and the factory makes neither.
 #include "solver/petsc_solver.hpp"
 
 #include <algorithm>
