@@ -35,6 +35,7 @@ PACKAGES=(
 # Installed with --petsc (scripts/test.sh, so CI covers them); demo.sh does without.
 if [ "${1:-}" = "--petsc" ]; then
   PACKAGES+=(libpetsc-real-dev)  # PETSc 3.18 with Open MPI (mpiexec), MUMPS and hypre
+  PACKAGES+=(slepc-dev)          # SLEPc 3.18 (PETSc's): link modes on petsc-mumps (eigensolver on its factor)
 fi
 
 missing=()

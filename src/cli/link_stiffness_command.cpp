@@ -153,11 +153,11 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
     const int modes = args->modes.value_or(0);
     if (args->modes && (modes < 1 || modes > fea::kMaxLinkModes))
       return fail(Status::Invalid(fmt::format("--modes {}: give a count from 1 to {}", modes, fea::kMaxLinkModes)));
-    if (modes > 0 && !solver::factors_on_one_process(backend))
-      return fail(
-          Status::Invalid(fmt::format("--modes with --solver {}: the natural frequencies need the direct solver "
-                                      "on one process; use --solver cholmod",
-                                      args->solver)));
+    if (modes > 0 && !solver::solves_generalized_eigenproblems(backend))
+      return fail(Status::Invalid(
+          fmt::format("--modes with --solver {}: the natural frequencies need a direct solver (exact solves for "
+                      "the eigensolver); use --solver petsc-mumps (any number of MPI ranks) or cholmod",
+                      args->solver)));
     Output out(ctx, args->out);
     const double scale = args->unit == "mm" ? kMm : 1.0;
     fea::LinkStiffnessRequest request;

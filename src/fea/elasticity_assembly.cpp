@@ -329,8 +329,8 @@ Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const
 }
 
 Status assemble_mass(const TetMesh& mesh, const std::vector<double>& density, const std::vector<int>& material,
-                     const DofMap& map, solver::SparseMatrix* mass) {
-  return assemble_elements(mesh, map, mass, {}, [&](int e, const Vec3* x, auto* Me) {
+                     const DofMap& map, solver::SparseMatrix* mass, std::span<const int> elements) {
+  return assemble_elements(mesh, map, mass, elements, [&](int e, const Vec3* x, auto* Me) {
     return tet_mass<nodes_of<decltype(Me)>>(x, density[material.empty() ? 0 : material[e]], Me);
   });
 }

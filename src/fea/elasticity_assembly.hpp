@@ -54,9 +54,10 @@ Status assemble_stiffness(const TetMesh& mesh, const std::vector<Mat6>& D, const
 // The consistent mass (kg; kg m and kg m^2 for the reference node's rotations) on the same dof map and
 // pattern as assemble_stiffness (the same code: clamped dofs dropped, coupled nodes' masses carried by
 // the reference node): element e has the density density[material[e]] (kg/m^3; material empty:
-// density[0] for all). All elements, on this process.
+// density[0] for all). The elements `elements` (empty: all), as assemble_stiffness: a distributed
+// assembly's summand of M.
 Status assemble_mass(const TetMesh& mesh, const std::vector<double>& density, const std::vector<int>& material,
-                     const DofMap& map, solver::SparseMatrix* mass);
+                     const DofMap& map, solver::SparseMatrix* mass, std::span<const int> elements = {});
 
 // The elements in slabs: sorted by their centre's coordinate along the bounding box's longest axis.
 // Consecutive ranges of this order are the ranks' shares of a distributed assembly: a rank's

@@ -100,7 +100,7 @@ Status memory_refusal(const TetMesh& mesh, int dofs, const solver::Factorization
 }
 
 // The modes' checks, before any work: a count in range, a density (a massless link has no
-// frequencies), and a backend that solves with K's factor on this process.
+// frequencies), and a backend whose solves the eigensolver can iterate on (a direct one).
 Status check_modes_request(const Material& material, const LinkStiffnessOptions& options) {
   if (options.modes == 0) return Status::Ok();
   if (options.modes < 0 || options.modes > kMaxLinkModes)
@@ -111,35 +111,41 @@ Status check_modes_request(const Material& material, const LinkStiffnessOptions&
         fmt::format("link modes: material '{}' has no density (density = {:g} kg/m^3), so the link "
                     "has no mass and no natural frequencies; give the material a density in kg/m^3",
                     material.id, material.density));
-  if (!solver::factors_on_one_process(options.solver.backend))
+  if (!solver::solves_generalized_eigenproblems(options.solver.backend))
     return Status::Invalid(
-        "link modes: natural frequencies need the direct solver on one process (cholmod): the "
-        "Lanczos iteration solves with K's factor; drop the PETSc solver for modes");
+        fmt::format("link modes: natural frequencies need a direct solver (cholmod, or petsc-mumps on any number "
+                    "of MPI ranks): the eigensolver's Krylov iteration assumes exact solves with K, and {} solves "
+                    "only to its CG tolerance",
+                    solver::backend_name(options.solver.backend)));
   return Status::Ok();
 }
 
 // The modes of the clamped link: M q = mu K q for the largest mu = 1/omega^2 (solver/generalized_eigen.hpp)
-// with `factor` prepared with K; M and K are lower triangles on the dof map `map`. `F` maps the
-// reference point's wrench to the dofs (its transpose gives the reference motion of a stiff body).
+// with `factor` prepared with K; M and K are lower triangles on the dof map `map`, on `ranks` > 1
+// (the distributed assembly) this rank's summands, as `factor` was given K. `F` maps the reference
+// point's wrench to the dofs (its transpose gives the reference motion of a stiff body).
 Status solve_link_modes(const TetMesh& mesh, const DofMap& map, const solver::SparseMatrix& K,
-                        const solver::SparseMatrix& M, const solver::LinearSolver& factor, const MatX& F,
+                        const solver::SparseMatrix& M, const solver::LinearSolver& factor, int ranks, const MatX& F,
                         bool stiff_body, const Vec3& reference_point, int count, bool keep_shapes,
                         std::vector<LinkMode>* modes) {
   auto eig = solver::largest_generalized_eigenpairs(M, K, factor, count);
   if (!eig.ok()) return Status(eig.status().code(), "link modes: " + eig.status().message());
   const auto& [mu, Q] = *eig;
   const MatX R = rigid_body_modes(mesh, map, reference_point).leftCols<3>();  // unit translations x, y, z
-  const MatX MR = M.selfadjointView<Eigen::Lower>() * R;
+  // The products with K and M, whose summands' products add up over the ranks to the whole ones.
+  MatX MR = M.selfadjointView<Eigen::Lower>() * R;
+  MatX KQ = K.selfadjointView<Eigen::Lower>() * Q, MQ = M.selfadjointView<Eigen::Lower>() * Q;
+  if (ranks > 1)
+    for (MatX* product : {&MR, &KQ, &MQ})
+      if (Status s = solver::sum_over_ranks(std::span(product->data(), product->size())); !s.ok()) return s;
   for (int k = 0; k < mu.size(); ++k) {
     if (!(mu(k) > 1e-12 * mu(0))) continue;  // a massless motion: no frequency
     LinkMode m;
     m.omega = 1.0 / std::sqrt(mu(k));
     m.frequency = m.omega / (2.0 * std::numbers::pi);
-    VecX q = Q.col(k);
-    const VecX Mq0 = M.selfadjointView<Eigen::Lower>() * q;
-    q /= std::sqrt(q.dot(Mq0));  // mass-normalized
-    const VecX Kq = K.selfadjointView<Eigen::Lower>() * q;
-    const VecX Mq = M.selfadjointView<Eigen::Lower>() * q;
+    const double scale = 1.0 / std::sqrt(Q.col(k).dot(MQ.col(k)));  // mass-normalized
+    VecX q = scale * Q.col(k);
+    const VecX Kq = scale * KQ.col(k), Mq = scale * MQ.col(k);
     m.residual = (Kq - m.omega * m.omega * Mq).norm() / Kq.norm();
     if (!(m.residual <= kLinkModeResidualLimit))
       return Status::NotConverged(
@@ -306,7 +312,10 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   solver::SparseMatrix M;
   if (options.modes > 0) {
     // The same density in the stiff body: it is the link's own material in the reference region.
-    if (Status s = assemble_mass(mesh, {material.density, material.density}, element_material, map, &M); !s.ok())
+    // Distributed: this rank's slab, as K (the eigensolver adds the summands as the backend did K's).
+    if (Status s = solver::agree_on_status(
+            assemble_mass(mesh, {material.density, material.density}, element_material, map, &M, slab));
+        !s.ok())
       return s;
     for (int e = 0; e < mesh.num_elements(); ++e) r.mass += material.density * element_volume(mesh, e);
   }
@@ -354,10 +363,10 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   }
   r.solve_seconds = seconds_since(t1);
   if (options.modes > 0) {
-    progress(fmt::format("the {} lowest natural frequencies (Lanczos on the factor of K)", options.modes));
+    progress(fmt::format("the {} lowest natural frequencies (Krylov eigensolver on the factor of K)", options.modes));
     const auto t2 = std::chrono::steady_clock::now();
-    if (Status s = solve_link_modes(mesh, map, K, M, *linear_solver, F, stiff_body, reference_point, options.modes,
-                                    options.keep_fields, &r.modes);
+    if (Status s = solve_link_modes(mesh, map, K, M, *linear_solver, ranks, F, stiff_body, reference_point,
+                                    options.modes, options.keep_fields, &r.modes);
         !s.ok())
       return s;
     r.modes_seconds = seconds_since(t2);

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
+#include <utility>
 
 #include <Spectra/SymGEigsSolver.h>
 #include <fmt/format.h>
 #include <Eigen/Eigenvalues>
+
+#include "solver/petsc_solver.hpp"
 
 namespace kinestat::solver {
 namespace {
@@ -52,6 +55,13 @@ constexpr int kDenseBelow = 24;
 
 StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
                                                                const LinearSolver& chol, int count) {
+  // The one dispatch point: petsc-mumps solves on its own distributed K and factor (SLEPc).
+  if (auto distributed = petsc_generalized_eigenpairs(A, chol, count)) return std::move(*distributed);
+  if (chol.summing_ranks() > 1)  // A and Kr may be summands here; only petsc-mumps adds them up
+    return Status::Invalid(
+        fmt::format("generalized eigenpairs on {} MPI ranks need the petsc-mumps solver (SLEPc on its factor); "
+                    "{} was given",
+                    chol.summing_ranks(), chol.backend_description()));
   const int n = static_cast<int>(Kr.rows());
   if (n < kDenseBelow) {
     const MatX Ad = MatX(SparseMatrix(A.selfadjointView<Eigen::Lower>()));

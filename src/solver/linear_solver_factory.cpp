@@ -54,6 +54,10 @@ bool backend_built(Backend backend) { return backend == Backend::kCholmod || pet
 
 bool factors_on_one_process(Backend backend) { return backend == Backend::kCholmod; }
 
+bool solves_generalized_eigenproblems(Backend backend) {
+  return backend == Backend::kCholmod || backend == Backend::kPetscMumps;
+}
+
 double solution_tolerance(const LinearSolverOptions& options) {
   return options.backend == Backend::kPetscCg ? options.relative_tolerance : 0.0;
 }

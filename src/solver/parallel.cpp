@@ -1,8 +1,9 @@
-// The MPI runtime (kinestat/solver/parallel.hpp): PETSc's start and end, and the collectives the
+// The MPI runtime (kinestat/solver/parallel.hpp): PETSc's and SLEPc's start and end, and the collectives the
 // methods use, on PETSC_COMM_WORLD; finish_job's barrier on a duplicate of it, so that it never
 // matches a collective a solver is waiting in. Without PETSc every function acts as one process.
 #include "kinestat/solver/parallel.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,7 +14,7 @@
 #include <fmt/format.h>
 
 #if KINESTAT_HAVE_PETSC
-#include <petscsys.h>
+#include <slepcsys.h>
 #endif
 
 namespace kinestat::solver {
@@ -77,10 +78,11 @@ StatusOr<ProcessGroup> start_parallel() {
     return Status::Internal("PETSc was finished in this process and cannot start again");
   if (lifecycle == Lifecycle::kNotStarted) {
     // No command line: kinestat's options are not PETSc's; PETSC_OPTIONS still reaches PETSc.
-    if (PetscErrorCode code = PetscInitializeNoArguments(); code != 0) {
+    // SLEPc's start starts PETSc too (the eigensolver on petsc-mumps, solver/generalized_eigen.hpp).
+    if (PetscErrorCode code = SlepcInitializeNoArguments(); code != 0) {
       const char* text = nullptr;
       PetscErrorMessage(code, &text, nullptr);
-      return Status::Internal(fmt::format("PETSc: PetscInitialize failed: {}", text ? text : "unknown error"));
+      return Status::Internal(fmt::format("SLEPc: SlepcInitialize failed: {}", text ? text : "unknown error"));
     }
     // Errors come back as codes (turned into Status), not as tracebacks on stderr.
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
@@ -105,13 +107,24 @@ void finish_parallel() {
   if (lifecycle != Lifecycle::kRunning) return;
   lifecycle = Lifecycle::kFinished;
   if (job_comm != MPI_COMM_NULL) MPI_Comm_free(&job_comm);
-  PetscFinalize();
+  SlepcFinalize();  // and PETSc, which SlepcInitialize started
 }
 
 Status broadcast_from_root(std::vector<double>& values) { return broadcast_vector(values, MPI_DOUBLE, 0); }
 Status broadcast_from_root(std::vector<int>& values) { return broadcast_vector(values, MPI_INT, 0); }
 Status gather_to_root(std::vector<double>& values) { return gather_vector(values, MPI_DOUBLE); }
 Status gather_to_root(std::vector<char>& values) { return gather_vector(values, MPI_CHAR); }
+
+Status sum_over_ranks(std::span<double> values) {
+  if (process_group().size == 1) return Status::Ok();
+  constexpr std::size_t kPiece = std::size_t{1} << 30;  // MPI's int counts
+  for (std::size_t first = 0; first < values.size(); first += kPiece) {
+    const int piece = static_cast<int>(std::min(kPiece, values.size() - first));
+    if (MPI_Allreduce(MPI_IN_PLACE, values.data() + first, piece, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD) != MPI_SUCCESS)
+      return Status::Internal("MPI_Allreduce of the ranks' sums failed");
+  }
+  return Status::Ok();
+}
 
 Status agree_on_status(const Status& mine) {
   const ProcessGroup group = process_group();
@@ -178,6 +191,7 @@ Status broadcast_from_root(std::vector<double>&) { return Status::Ok(); }
 Status broadcast_from_root(std::vector<int>&) { return Status::Ok(); }
 Status gather_to_root(std::vector<double>&) { return Status::Ok(); }
 Status gather_to_root(std::vector<char>&) { return Status::Ok(); }
+Status sum_over_ranks(std::span<double>) { return Status::Ok(); }
 Status agree_on_status(const Status& mine) { return mine; }
 Status same_on_every_rank(const std::string&, const std::string&) { return Status::Ok(); }
 int finish_job(int exit_code, const std::string&, double) { return exit_code; }

@@ -4,16 +4,21 @@
 // rank's summand (the elements it assembled) and lets PETSc add them, sending entries of other
 // ranks' rows to their owners, so that no rank holds the whole matrix. PETSc distributes the factor
 // (MUMPS) or the multigrid hierarchy (GAMG); the solution is gathered back to every rank, so every
-// rank computes the same 6x6. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) petsc_built() is
-// false and the factory makes neither.
+// rank computes the same 6x6. On the MUMPS backend SLEPc solves the generalized eigenproblem of
+// solver/generalized_eigen.hpp with the same factor (petsc_generalized_eigenpairs), the pencil's
+// other matrix assembled as K was. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) petsc_built()
+// is false and the factory makes neither.
 #include "solver/petsc_solver.hpp"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -23,6 +28,7 @@
 
 #if KINESTAT_HAVE_PETSC
 #include <petscksp.h>
+#include <slepceps.h>
 #include <Eigen/QR>
 #endif
 
@@ -32,15 +38,21 @@ namespace kinestat::solver {
 
 namespace {
 
-// PETSc calls return an error code; it becomes a Status (kInternal) naming the call and PETSc's text.
-Status petsc_error(PetscErrorCode code, const char* call) {
+// PETSc and SLEPc calls return an error code; it becomes a Status (kInternal) naming the library,
+// the call and the library's text (SLEPc's codes are PETSc's, so PetscErrorMessage reads both).
+Status library_error(const char* library, PetscErrorCode code, const char* call) {
   const char* text = nullptr;
   PetscErrorMessage(code, &text, nullptr);
-  return Status::Internal(fmt::format("PETSc: {} failed: {}", call, text ? text : "unknown error"));
+  return Status::Internal(fmt::format("{}: {} failed: {}", library, call, text ? text : "unknown error"));
 }
+Status petsc_error(PetscErrorCode code, const char* call) { return library_error("PETSc", code, call); }
 #define KINESTAT_PETSC(call)                                                         \
   do {                                                                               \
     if (PetscErrorCode code_ = (call); code_ != 0) return petsc_error(code_, #call); \
+  } while (0)
+#define KINESTAT_SLEPC(call)                                                                    \
+  do {                                                                                          \
+    if (PetscErrorCode code_ = (call); code_ != 0) return library_error("SLEPc", code_, #call); \
   } while (0)
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -71,6 +83,120 @@ StatusOr<std::vector<int>> split_rows(int n) {
 
 int owner_of(const std::vector<int>& offsets, int row) {
   return static_cast<int>(std::upper_bound(offsets.begin(), offsets.end(), row) - offsets.begin()) - 1;
+}
+
+// A distributed matrix as the PETSc backends hold it (K) and the eigensolver adds (the pencil's
+// other matrix): AIJ, in blocks of block_size(n) rows split over the ranks as split_rows says.
+struct DistributedMatrix {
+  Mat mat = nullptr;  // the caller destroys it, also on failure
+  int n = 0;
+  PetscInt rstart = 0, rend = 0;  // this rank's rows
+  long nnz_lower = 0;             // stored entries of the lower triangle, over all ranks
+};
+
+// Makes out->mat from `parts`: with `summed`, the sum of every rank's parts (each rank inserts all
+// its entries, PETSc's stash moves those of other ranks' rows during the assembly); without, every
+// rank holds the whole matrix in parts[0] and inserts only its own rows. Collective.
+Status assemble_matrix(std::span<const SparseMatrix> parts, bool summed, DistributedMatrix* out) {
+  if (parts.empty()) return Status::Invalid("PETSc solver: no matrix given");
+  const int n = out->n = static_cast<int>(parts[0].rows());
+  for (const SparseMatrix& p : parts)
+    if (p.rows() != n || p.cols() != n)
+      return Status::Invalid(
+          fmt::format("PETSc solver: a {} x {} matrix where a square one of {} rows is wanted", p.rows(), p.cols(), n));
+  // Every rank must bring the same n (a collective call with different sizes would not return).
+  int n_min = n, n_max = n;
+  MPI_Allreduce(&n, &n_min, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+  MPI_Allreduce(&n, &n_max, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  if (n_min != n_max)
+    return Status::Internal(fmt::format("PETSc solver: the ranks hold matrices of {} to {} rows", n_min, n_max));
+  StatusOr<std::vector<int>> offsets = split_rows(n);
+  if (!offsets.ok()) return offsets.status();
+  const int rank = process_group().rank;
+  const PetscInt rstart = out->rstart = (*offsets)[rank];
+  const PetscInt rend = out->rend = (*offsets)[rank + 1];
+  const PetscInt local = rend - rstart;
+  auto take = [&](PetscInt row) { return summed || (row >= rstart && row < rend); };
+
+  // PETSc wants both triangles of its rows. The lower triangle (column-major) holds row c's upper
+  // part in column c, and rows r > c's lower parts in the same column: each column is inserted as
+  // one column of rows r >= c and one row c, without a second (full) copy of the matrix.
+  auto for_each_column = [&](auto&& visit) -> Status {
+    std::vector<PetscInt> lower_rows, upper_cols;
+    std::vector<PetscScalar> lower_values, upper_values;
+    for (const SparseMatrix& part : parts)
+      for (PetscInt c = 0; c < n; ++c) {
+        lower_rows.clear(), upper_cols.clear(), lower_values.clear(), upper_values.clear();
+        for (SparseMatrix::InnerIterator it(part, static_cast<int>(c)); it; ++it) {
+          if (it.row() < c) continue;  // an upper entry: ignored
+          if (take(it.row())) lower_rows.push_back(it.row()), lower_values.push_back(it.value());
+          if (it.row() != c && take(c)) upper_cols.push_back(it.row()), upper_values.push_back(it.value());
+        }
+        if (Status s = visit(c, lower_rows, lower_values, upper_cols, upper_values); !s.ok()) return s;
+      }
+    return Status::Ok();
+  };
+
+  // Preallocation: per owned row, the entries in the diagonal block (columns this rank owns) and
+  // off it. Each rank counts what it inserts into every row (two O(n) arrays) and the counts are
+  // summed onto the rows' owners. An entry that several ranks (summands) hold is counted once per
+  // holder: an upper bound, capped at the row's length, whose excess is the ranks' shared rows only.
+  std::vector<PetscInt> diagonal(n, 0), off(n, 0);
+  auto count = [&](PetscInt row, PetscInt col) {
+    ++(owner_of(*offsets, static_cast<int>(row)) == owner_of(*offsets, static_cast<int>(col)) ? diagonal : off)[row];
+  };
+  Status counted =
+      for_each_column([&](PetscInt c, const auto& lower_rows, const auto&, const auto& upper_cols, const auto&) {
+        for (PetscInt row : lower_rows) count(row, c);
+        for (PetscInt col : upper_cols) count(c, col);
+        return Status::Ok();
+      });
+  if (!counted.ok()) return counted;
+  const int ranks = process_group().size;
+  std::vector<int> local_sizes(ranks);
+  for (int q = 0; q < ranks; ++q) local_sizes[q] = (*offsets)[q + 1] - (*offsets)[q];
+  std::vector<PetscInt> diagonal_nnz(local), off_nnz(local);
+  if (MPI_Reduce_scatter(diagonal.data(), diagonal_nnz.data(), local_sizes.data(), MPIU_INT, MPI_SUM,
+                         PETSC_COMM_WORLD) != MPI_SUCCESS ||
+      MPI_Reduce_scatter(off.data(), off_nnz.data(), local_sizes.data(), MPIU_INT, MPI_SUM, PETSC_COMM_WORLD) !=
+          MPI_SUCCESS)
+    return Status::Internal("MPI_Reduce_scatter of the preallocation counts failed");
+  std::vector<PetscInt>().swap(diagonal), std::vector<PetscInt>().swap(off);
+  for (PetscInt i = 0; i < local; ++i) {
+    diagonal_nnz[i] = std::min(diagonal_nnz[i], local);
+    off_nnz[i] = std::min(off_nnz[i], static_cast<PetscInt>(n) - local);
+  }
+  Mat& A = out->mat;
+  KINESTAT_PETSC(MatCreate(PETSC_COMM_WORLD, &A));
+  KINESTAT_PETSC(MatSetSizes(A, local, local, n, n));
+  KINESTAT_PETSC(MatSetType(A, MATAIJ));
+  KINESTAT_PETSC(MatSetBlockSize(A, block_size(n)));
+  KINESTAT_PETSC(MatSeqAIJSetPreallocation(A, 0, diagonal_nnz.data()));
+  KINESTAT_PETSC(MatMPIAIJSetPreallocation(A, 0, diagonal_nnz.data(), 0, off_nnz.data()));
+  Status inserted = for_each_column([&](PetscInt c, const auto& lower_rows, const auto& lower_values,
+                                        const auto& upper_cols, const auto& upper_values) -> Status {
+    if (!lower_rows.empty())  // rows r >= c, column c
+      KINESTAT_PETSC(MatSetValues(A, static_cast<PetscInt>(lower_rows.size()), lower_rows.data(), 1, &c,
+                                  lower_values.data(), ADD_VALUES));
+    if (!upper_cols.empty())  // row c, columns r > c
+      KINESTAT_PETSC(MatSetValues(A, 1, &c, static_cast<PetscInt>(upper_cols.size()), upper_cols.data(),
+                                  upper_values.data(), ADD_VALUES));
+    return Status::Ok();
+  });
+  if (!inserted.ok()) return inserted;
+  KINESTAT_PETSC(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+  KINESTAT_PETSC(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+  // Stored entries of the lower triangle of the assembled A, over all ranks.
+  long lower = 0;
+  for (PetscInt row = rstart; row < rend; ++row) {
+    PetscInt ncols = 0;
+    const PetscInt* cols = nullptr;
+    KINESTAT_PETSC(MatGetRow(A, row, &ncols, &cols, nullptr));
+    lower += std::count_if(cols, cols + ncols, [&](PetscInt col) { return col <= row; });
+    KINESTAT_PETSC(MatRestoreRow(A, row, &ncols, &cols, nullptr));
+  }
+  MPI_Allreduce(&lower, &out->nnz_lower, 1, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD);
+  return Status::Ok();
 }
 
 // What the two PETSc backends share: the distributed matrix, the KSP, and the solves with the true
@@ -134,6 +260,8 @@ class PetscKspSolver : public Interface {
   Mat A_ = nullptr;
   int n_ = 0;
   PetscInt rstart_ = 0, rend_ = 0;
+  bool summed_ = false;  // A_ is the sum of the ranks' parts (FactorizeSum), not every rank's whole A
+  KSP ksp_ = nullptr;
 
  private:
   Status DoSolve(const MatX& B, MatX* X, SolveReport* report) const override {
@@ -234,115 +362,21 @@ class PetscKspSolver : public Interface {
 
   Status FactorizeParts(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* report) {
     FactorizationReport r;
+    summed_ = summed;
     Status s = FactorizeImpl(parts, summed, &r);
     if (!s.ok()) Release();  // no Solve with a half-made or singular factor
     if (report) *report = r;
     return s;
   }
 
-  // Makes A_ from `parts`: with `summed`, A = the sum of every rank's parts (each rank inserts all
-  // its entries, PETSc's stash moves those of other ranks' rows during the assembly); without, every
-  // rank holds the whole A in parts[0] and inserts only its own rows.
+  // A_ from `parts` (assemble_matrix), and the report's size and entries.
   Status AssembleMatrix(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* r) {
-    if (parts.empty()) return Status::Invalid("PETSc solver: no matrix given");
-    n_ = static_cast<int>(parts[0].rows());
-    for (const SparseMatrix& p : parts)
-      if (p.rows() != n_ || p.cols() != n_)
-        return Status::Invalid(fmt::format("PETSc solver: a {} x {} matrix where a square one of {} rows is wanted",
-                                           p.rows(), p.cols(), n_));
-    // Every rank must bring the same n (a collective call with different sizes would not return).
-    int n_min = n_, n_max = n_;
-    MPI_Allreduce(&n_, &n_min, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
-    MPI_Allreduce(&n_, &n_max, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
-    if (n_min != n_max)
-      return Status::Internal(fmt::format("PETSc solver: the ranks hold matrices of {} to {} rows", n_min, n_max));
-    r->n = n_;
-    StatusOr<std::vector<int>> offsets = split_rows(n_);
-    if (!offsets.ok()) return offsets.status();
-    const int rank = process_group().rank;
-    rstart_ = (*offsets)[rank];
-    rend_ = (*offsets)[rank + 1];
-    const PetscInt local = rend_ - rstart_;
-    auto take = [&](PetscInt row) { return summed || (row >= rstart_ && row < rend_); };
-
-    // PETSc wants both triangles of its rows. The lower triangle (column-major) holds row c's upper
-    // part in column c, and rows r > c's lower parts in the same column: each column is inserted as
-    // one column of rows r >= c and one row c, without a second (full) copy of the matrix.
-    auto for_each_column = [&](auto&& visit) -> Status {
-      std::vector<PetscInt> lower_rows, upper_cols;
-      std::vector<PetscScalar> lower_values, upper_values;
-      for (const SparseMatrix& part : parts)
-        for (PetscInt c = 0; c < n_; ++c) {
-          lower_rows.clear(), upper_cols.clear(), lower_values.clear(), upper_values.clear();
-          for (SparseMatrix::InnerIterator it(part, static_cast<int>(c)); it; ++it) {
-            if (it.row() < c) continue;  // an upper entry: ignored
-            if (take(it.row())) lower_rows.push_back(it.row()), lower_values.push_back(it.value());
-            if (it.row() != c && take(c)) upper_cols.push_back(it.row()), upper_values.push_back(it.value());
-          }
-          if (Status s = visit(c, lower_rows, lower_values, upper_cols, upper_values); !s.ok()) return s;
-        }
-      return Status::Ok();
-    };
-
-    // Preallocation: per owned row, the entries in the diagonal block (columns this rank owns) and
-    // off it. Each rank counts what it inserts into every row (two O(n) arrays) and the counts are
-    // summed onto the rows' owners. An entry that several ranks (summands) hold is counted once per
-    // holder: an upper bound, capped at the row's length, whose excess is the ranks' shared rows only.
-    std::vector<PetscInt> diagonal(n_, 0), off(n_, 0);
-    auto count = [&](PetscInt row, PetscInt col) {
-      ++(owner_of(*offsets, static_cast<int>(row)) == owner_of(*offsets, static_cast<int>(col)) ? diagonal : off)[row];
-    };
-    Status counted =
-        for_each_column([&](PetscInt c, const auto& lower_rows, const auto&, const auto& upper_cols, const auto&) {
-          for (PetscInt row : lower_rows) count(row, c);
-          for (PetscInt col : upper_cols) count(c, col);
-          return Status::Ok();
-        });
-    if (!counted.ok()) return counted;
-    const int ranks = process_group().size;
-    std::vector<int> local_sizes(ranks);
-    for (int q = 0; q < ranks; ++q) local_sizes[q] = (*offsets)[q + 1] - (*offsets)[q];
-    std::vector<PetscInt> diagonal_nnz(local), off_nnz(local);
-    if (MPI_Reduce_scatter(diagonal.data(), diagonal_nnz.data(), local_sizes.data(), MPIU_INT, MPI_SUM,
-                           PETSC_COMM_WORLD) != MPI_SUCCESS ||
-        MPI_Reduce_scatter(off.data(), off_nnz.data(), local_sizes.data(), MPIU_INT, MPI_SUM, PETSC_COMM_WORLD) !=
-            MPI_SUCCESS)
-      return Status::Internal("MPI_Reduce_scatter of the preallocation counts failed");
-    std::vector<PetscInt>().swap(diagonal), std::vector<PetscInt>().swap(off);
-    for (PetscInt i = 0; i < local; ++i) {
-      diagonal_nnz[i] = std::min(diagonal_nnz[i], local);
-      off_nnz[i] = std::min(off_nnz[i], static_cast<PetscInt>(n_) - local);
-    }
-    KINESTAT_PETSC(MatCreate(PETSC_COMM_WORLD, &A_));
-    KINESTAT_PETSC(MatSetSizes(A_, local, local, n_, n_));
-    KINESTAT_PETSC(MatSetType(A_, MATAIJ));
-    KINESTAT_PETSC(MatSetBlockSize(A_, block_size(n_)));
-    KINESTAT_PETSC(MatSeqAIJSetPreallocation(A_, 0, diagonal_nnz.data()));
-    KINESTAT_PETSC(MatMPIAIJSetPreallocation(A_, 0, diagonal_nnz.data(), 0, off_nnz.data()));
-    Status inserted = for_each_column([&](PetscInt c, const auto& lower_rows, const auto& lower_values,
-                                          const auto& upper_cols, const auto& upper_values) -> Status {
-      if (!lower_rows.empty())  // rows r >= c, column c
-        KINESTAT_PETSC(MatSetValues(A_, static_cast<PetscInt>(lower_rows.size()), lower_rows.data(), 1, &c,
-                                    lower_values.data(), ADD_VALUES));
-      if (!upper_cols.empty())  // row c, columns r > c
-        KINESTAT_PETSC(MatSetValues(A_, 1, &c, static_cast<PetscInt>(upper_cols.size()), upper_cols.data(),
-                                    upper_values.data(), ADD_VALUES));
-      return Status::Ok();
-    });
-    if (!inserted.ok()) return inserted;
-    KINESTAT_PETSC(MatAssemblyBegin(A_, MAT_FINAL_ASSEMBLY));
-    KINESTAT_PETSC(MatAssemblyEnd(A_, MAT_FINAL_ASSEMBLY));
-    // Stored entries of the lower triangle of the assembled A, over all ranks.
-    long lower = 0;
-    for (PetscInt row = rstart_; row < rend_; ++row) {
-      PetscInt ncols = 0;
-      const PetscInt* cols = nullptr;
-      KINESTAT_PETSC(MatGetRow(A_, row, &ncols, &cols, nullptr));
-      lower += std::count_if(cols, cols + ncols, [&](PetscInt col) { return col <= row; });
-      KINESTAT_PETSC(MatRestoreRow(A_, row, &ncols, &cols, nullptr));
-    }
-    MPI_Allreduce(&lower, &r->nnz_matrix, 1, MPI_LONG, MPI_SUM, PETSC_COMM_WORLD);
-    return Status::Ok();
+    DistributedMatrix m;
+    Status s = assemble_matrix(parts, summed, &m);
+    A_ = m.mat, n_ = m.n, rstart_ = m.rstart, rend_ = m.rend;
+    r->n = m.n;
+    r->nnz_matrix = m.nnz_lower;
+    return s;
   }
 
   Status FactorizeImpl(std::span<const SparseMatrix> parts, bool summed, FactorizationReport* r) {
@@ -378,9 +412,13 @@ class PetscKspSolver : public Interface {
     return Status::Ok();
   }
 
-  KSP ksp_ = nullptr;
   int analyses_ = 0;
 };
+
+// The eigensolver's convergence, as Spectra's in generalized_eigen.cpp: relative residual 1e-10,
+// at most 1000 restarts.
+constexpr double kTolerance = 1e-10;
+constexpr int kMaxRestarts = 1000;
 
 // MUMPS's Cholesky (KSPPREONLY + PCCHOLESKY): a direct factorization distributed over the ranks.
 class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
@@ -389,6 +427,79 @@ class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
 
   std::string backend_description() const override {
     return fmt::format("{} MUMPS Cholesky on {}", petsc_version(), ranks_description());
+  }
+
+  // solver/generalized_eigen.hpp on this backend: SLEPc's Krylov-Schur on the pencil A q = mu K q
+  // with K = A_, A assembled as K was (summed_: `A` is this rank's summand; else every rank's whole
+  // A). The spectral transformation is a shift by 0 (operator K^-1 A, the largest mu at the end
+  // Krylov-Schur converges to first, as Spectra's regular-inverse mode) whose solves are this
+  // object's KSP: K's MUMPS factor, made once by Factorize, not a second one. Collective.
+  StatusOr<std::pair<VecX, MatX>> LargestGeneralizedEigenpairs(const SparseMatrix& A, int count) const {
+    if (!ksp_) return Status::Internal("PETSc MUMPS: eigenpairs asked for without a successful Factorize");
+    DistributedMatrix M;
+    EPS eps = nullptr;
+    Vec x = nullptr, Kx = nullptr, all = nullptr;
+    VecScatter gather = nullptr;
+    StatusOr<std::pair<VecX, MatX>> result = [&]() -> StatusOr<std::pair<VecX, MatX>> {
+      if (Status s = assemble_matrix(std::span(&A, 1), summed_, &M); !s.ok()) return s;
+      if (M.n != n_)  // the same on every rank (assemble_matrix checked): all return here
+        return Status::Invalid(fmt::format("generalized eigenpairs: A has {} rows, K has {}", M.n, n_));
+      KINESTAT_PETSC(MatSetOption(M.mat, MAT_SYMMETRIC, PETSC_TRUE));
+      const PetscInt nev = std::min(count, n_);
+      KINESTAT_SLEPC(EPSCreate(PETSC_COMM_WORLD, &eps));
+      KINESTAT_SLEPC(EPSSetOperators(eps, M.mat, A_));
+      KINESTAT_SLEPC(EPSSetProblemType(eps, EPS_GHEP));  // A symmetric, K positive definite: K-orthogonal q
+      KINESTAT_SLEPC(EPSSetType(eps, EPSKRYLOVSCHUR));
+      KINESTAT_SLEPC(EPSSetWhichEigenpairs(eps, EPS_LARGEST_REAL));  // Spectra's LargestAlge (buckling's mu < 0)
+      KINESTAT_SLEPC(EPSSetDimensions(eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+      KINESTAT_SLEPC(EPSSetTolerances(eps, kTolerance, kMaxRestarts));  // as the Spectra route
+      ST st;
+      KINESTAT_SLEPC(EPSGetST(eps, &st));
+      KINESTAT_SLEPC(STSetType(st, STSHIFT));
+      KINESTAT_SLEPC(STSetShift(st, 0.0));
+      // The solves' CG monitor (DoSolve's, whose context is gone) must not fire inside the EPS.
+      KINESTAT_PETSC(KSPMonitorCancel(ksp_));
+      KINESTAT_SLEPC(STSetKSP(st, ksp_));
+      // PETSC_OPTIONS (e.g. "-eps_monitor -eps_ncv 40") may tune the eigensolver, as the KSP's.
+      KINESTAT_SLEPC(EPSSetFromOptions(eps));
+      if (options_.progress) options_.progress(fmt::format("SLEPc Krylov-Schur for {} eigenpairs on {} dofs", nev, n_));
+      KINESTAT_SLEPC(EPSSolve(eps));
+      PetscInt converged = 0, restarts = 0;
+      KINESTAT_SLEPC(EPSGetConverged(eps, &converged));
+      KINESTAT_SLEPC(EPSGetIterationNumber(eps, &restarts));
+      if (converged < nev)
+        return Status::NotConverged(
+            fmt::format("the Krylov-Schur eigensolver (SLEPc) converged to {} of {} eigenvalues after {} "
+                        "restart{}; ask for fewer modes",
+                        converged, nev, restarts, restarts == 1 ? "" : "s"));
+      // Every rank gets all the eigenvalues and the whole vectors, K-normalized (q' K q = 1) as
+      // the Spectra route gives them: the callers then work on one process's data.
+      VecX mu(nev);
+      MatX Q(n_, nev);
+      KINESTAT_PETSC(MatCreateVecs(A_, &x, &Kx));
+      KINESTAT_PETSC(VecScatterCreateToAll(x, &gather, &all));
+      for (PetscInt k = 0; k < nev; ++k) {
+        PetscScalar value = 0.0, qKq = 0.0;
+        KINESTAT_SLEPC(EPSGetEigenpair(eps, k, &value, nullptr, x, nullptr));
+        KINESTAT_PETSC(MatMult(A_, x, Kx));
+        KINESTAT_PETSC(VecDot(x, Kx, &qKq));
+        if (!(qKq > 0.0))
+          return Status::Internal(fmt::format("SLEPc: eigenvector {} has q' K q = {:g}, not positive", k + 1, qKq));
+        KINESTAT_PETSC(VecScale(x, 1.0 / std::sqrt(qKq)));
+        KINESTAT_PETSC(VecScatterBegin(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
+        KINESTAT_PETSC(VecScatterEnd(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
+        const PetscScalar* values = nullptr;
+        KINESTAT_PETSC(VecGetArrayRead(all, &values));
+        Q.col(k) = Eigen::Map<const VecX>(values, n_);
+        KINESTAT_PETSC(VecRestoreArrayRead(all, &values));
+        mu(k) = value;
+      }
+      return std::pair<VecX, MatX>{std::move(mu), std::move(Q)};
+    }();
+    EPSDestroy(&eps);  // releases its reference to ksp_, which stays this object's
+    MatDestroy(&M.mat);
+    VecDestroy(&x), VecDestroy(&Kx), VecDestroy(&all), VecScatterDestroy(&gather);
+    return result;
   }
 
  private:
@@ -529,12 +640,23 @@ std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions& options) 
   return std::make_unique<PetscCgSolver>(options);
 }
 
+std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(const SparseMatrix& A,
+                                                                            const LinearSolver& solver, int count) {
+  const auto* mumps = dynamic_cast<const PetscMumpsCholesky*>(&solver);
+  if (!mumps) return std::nullopt;
+  return mumps->LargestGeneralizedEigenpairs(A, count);
+}
+
 #else  // PETSc not built in
 
 bool petsc_built() { return false; }
 
 std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions&) { return nullptr; }
 std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions&) { return nullptr; }
+std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(const SparseMatrix&, const LinearSolver&,
+                                                                            int) {
+  return std::nullopt;
+}
 
 #endif
 

@@ -1,9 +1,12 @@
 // The PETSc backends (internal: made through solver/linear_solver_factory.hpp): MUMPS's distributed
 // Cholesky (a SparseCholesky), and CG preconditioned by GAMG with the rigid-body near-null space (a
-// LinearSolver of the iterative kind). Both assemble and solve through one PETSc KSP.
+// LinearSolver of the iterative kind). Both assemble and solve through one PETSc KSP; SLEPc solves
+// the generalized eigenproblem on the MUMPS one.
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include "kinestat/solver/linear_solver.hpp"
 #include "kinestat/solver/sparse_cholesky.hpp"
@@ -14,5 +17,12 @@ bool petsc_built();
 // Only with petsc_built() (the factory checks it; without PETSc they return nullptr).
 std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions& options);
 std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions& options);
+
+// solver/generalized_eigen.hpp's eigenpairs when `solver` is the petsc-mumps backend (made by
+// make_petsc_mumps, factorized with K): SLEPc on its distributed K and MUMPS factor, `A` assembled
+// as K was (FactorizeSum: this rank's summand; Factorize: the whole A). Collective. nullopt for
+// any other solver (and without PETSc), which the caller solves itself.
+std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(const SparseMatrix& A,
+                                                                            const LinearSolver& solver, int count);
 
 }  // namespace kinestat::solver

@@ -17,6 +17,7 @@
 #include "kinestat/fea/link_stiffness.hpp"
 #include "kinestat/fea/link_stiffness_inputs.hpp"
 #include "kinestat/fea/tet_mesh.hpp"
+#include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace kinestat::fea {
 namespace {
@@ -211,6 +212,31 @@ TEST(LinkModes, ALinkWithoutDensityOrABadCountIsRefused) {
   }
   // Without modes no density is needed: the 6x6 alone, as before.
   EXPECT_TRUE(link_stiffness(mesh, Material::from_E_nu("E", 210e9, 0.3), bar_options(0)).ok());
+}
+
+// The modes on the distributed backend (one rank here; tests/mpi/compare_link_modes.py runs two):
+// petsc-mumps (SLEPc on its factor) gives cholmod's (Spectra's) frequencies and masses; petsc-cg,
+// whose solves carry CG's tolerance, is refused before any work.
+TEST(LinkModes, PetscMumpsGivesCholmodsModesAndCgIsRefused) {
+  const TetMesh mesh = bar_mesh(1);
+  auto cholmod = link_stiffness(mesh, steel(), bar_options(4));
+  ASSERT_TRUE(cholmod.ok()) << cholmod.status().message();
+  LinkStiffnessOptions options = bar_options(4);
+  options.solver.backend = solver::Backend::kPetscCg;
+  auto cg = link_stiffness(mesh, steel(), options);
+  ASSERT_FALSE(cg.ok());
+  EXPECT_EQ(cg.status().code(), StatusCode::kInvalidInput);
+  EXPECT_NE(cg.status().message().find("need a direct solver"), std::string::npos) << cg.status().message();
+  if (!solver::backend_built(solver::Backend::kPetscMumps)) GTEST_SKIP() << "PETSc (and SLEPc) not built in";
+  options.solver.backend = solver::Backend::kPetscMumps;
+  auto mumps = link_stiffness(mesh, steel(), options);
+  ASSERT_TRUE(mumps.ok()) << mumps.status().message();
+  ASSERT_EQ(mumps->modes.size(), cholmod->modes.size());
+  for (size_t k = 0; k < mumps->modes.size(); ++k) {
+    EXPECT_NEAR(mumps->modes[k].frequency, cholmod->modes[k].frequency, 1e-9 * cholmod->modes[k].frequency);
+    EXPECT_NEAR(mumps->modes[k].effective_mass.sum(), cholmod->modes[k].effective_mass.sum(), 1e-6 * mumps->mass);
+    EXPECT_LT(mumps->modes[k].residual, 1e-8);
+  }
 }
 
 // The bundled materials carry standard densities; E=...,nu=...,rho=... sets one.

@@ -1,7 +1,13 @@
 // The PETSc backends in one process (one MPI rank; tests/mpi/ runs them on two): the same solutions
-// as a dense LDL^T, the CG tolerance met by the true residual, free motions refused.
+// as a dense LDL^T, the CG tolerance met by the true residual, free motions refused; SLEPc's
+// generalized eigenpairs on petsc-mumps against Spectra's on CHOLMOD.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "kinestat/solver/generalized_eigen.hpp"
 #include "kinestat/solver/linear_solver_factory.hpp"
 
 namespace kinestat::solver {
@@ -86,6 +92,92 @@ TEST(PetscSolver, MumpsRefusesAFreeMotion) {
   EXPECT_EQ(s.code(), StatusCode::kSingular) << s.message();
   MatX X;
   EXPECT_FALSE(solver->Solve(MatX::Ones(33, 1), &X).ok());  // no numbers from a singular matrix
+}
+
+// A chain of n springs and n masses, clamped at one end (1D, one dof per mass): stiffnesses and
+// masses vary along it, so its eigenvalues are simple (a Jacobi pencil) and its vectors unique up
+// to sign. Lower triangles, as the FEA stores K and M.
+std::pair<SparseMatrix, SparseMatrix> spring_mass_chain(int n) {
+  std::vector<Eigen::Triplet<double>> k, m;
+  for (int i = 0; i < n; ++i) {
+    const double ki = 1e3 * (1.0 + 0.5 * std::sin(0.7 * i)), kj = 1e3 * (1.0 + 0.5 * std::sin(0.7 * (i + 1)));
+    k.emplace_back(i, i, ki + (i + 1 < n ? kj : 0.0));  // spring i to the left, spring i + 1 to the right
+    if (i + 1 < n) k.emplace_back(i + 1, i, -kj);
+    m.emplace_back(i, i, 2.0 + std::cos(1.3 * i));
+  }
+  SparseMatrix K(n, n), M(n, n);
+  K.setFromTriplets(k.begin(), k.end());
+  M.setFromTriplets(m.begin(), m.end());
+  return {K, M};
+}
+
+// SLEPc (petsc-mumps, dispatched by largest_generalized_eigenpairs) against Spectra (cholmod): the
+// same eigenvalues to 1e-10 relative and the same K-normalized vectors up to sign, K given whole
+// (Factorize) and as two summands (FactorizeSum; on one rank A is then this rank's whole summand).
+TEST(PetscSolver, SlepcEigenpairsMatchSpectras) {
+  if (!backend_built(Backend::kPetscMumps)) GTEST_SKIP() << "PETSc (and SLEPc) not built in";
+  const int n = 60, count = 6;  // above generalized_eigen.cpp's dense threshold: Lanczos vs Krylov-Schur
+  const auto [K, M] = spring_mass_chain(n);
+  auto cholmod = make_sparse_cholesky({.backend = Backend::kCholmod});
+  ASSERT_TRUE(cholmod->Factorize(K, nullptr).ok());
+  auto spectra = largest_generalized_eigenpairs(M, K, *cholmod, count);
+  ASSERT_TRUE(spectra.ok()) << spectra.status().message();
+  const SparseMatrix Kfull = K.selfadjointView<Eigen::Lower>();
+  const SparseMatrix half = K.triangularView<Eigen::Lower>() * 0.5;  // two equal summands
+  for (bool summed : {false, true}) {
+    SCOPED_TRACE(summed ? "FactorizeSum" : "Factorize");
+    auto mumps = make_sparse_cholesky({.backend = Backend::kPetscMumps});
+    const std::vector<SparseMatrix> halves = {half, half};
+    ASSERT_TRUE((summed ? mumps->FactorizeSum(halves, nullptr) : mumps->Factorize(K, nullptr)).ok());
+    auto slepc = largest_generalized_eigenpairs(M, K, *mumps, count);
+    ASSERT_TRUE(slepc.ok()) << slepc.status().message();
+    const auto& [mu, Q] = *slepc;
+    const auto& [mu_ref, Q_ref] = *spectra;
+    ASSERT_EQ(mu.size(), count);
+    ASSERT_EQ(Q.rows(), n);
+    ASSERT_EQ(Q.cols(), count);
+    std::cout << "SLEPc against Spectra, " << (summed ? "FactorizeSum" : "Factorize") << ": max |dmu| / mu "
+              << ((mu - mu_ref).cwiseAbs().array() / mu_ref.array()).maxCoeff() << "\n";
+    for (int k = 0; k < count; ++k) {
+      EXPECT_NEAR(mu(k), mu_ref(k), 1e-10 * mu_ref(k)) << "eigenvalue " << k;
+      if (k > 0) {
+        EXPECT_LT(mu(k), mu(k - 1));  // descending
+      }
+      EXPECT_NEAR(Q.col(k).dot(Kfull * Q.col(k)), 1.0, 1e-12);  // K-normalized
+      const double sign = Q.col(k).dot(Kfull * Q_ref.col(k)) < 0.0 ? -1.0 : 1.0;
+      EXPECT_LT((sign * Q.col(k) - Q_ref.col(k)).norm(), 1e-7 * Q_ref.col(k).norm()) << "eigenvector " << k;
+    }
+  }
+}
+
+// A pencil of fewer unknowns than Krylov-Schur's default basis, all its eigenpairs asked for: the
+// dense route's answer (generalized_eigen.cpp solves below 24 unknowns densely on cholmod).
+TEST(PetscSolver, SlepcGivesEveryEigenpairOfASmallPencil) {
+  if (!backend_built(Backend::kPetscMumps)) GTEST_SKIP() << "PETSc (and SLEPc) not built in";
+  const int n = 8;
+  const auto [K, M] = spring_mass_chain(n);
+  auto cholmod = make_sparse_cholesky({.backend = Backend::kCholmod});
+  auto mumps = make_sparse_cholesky({.backend = Backend::kPetscMumps});
+  ASSERT_TRUE(cholmod->Factorize(K, nullptr).ok());
+  ASSERT_TRUE(mumps->Factorize(K, nullptr).ok());
+  auto dense = largest_generalized_eigenpairs(M, K, *cholmod, n);
+  auto slepc = largest_generalized_eigenpairs(M, K, *mumps, n);
+  ASSERT_TRUE(dense.ok()) << dense.status().message();
+  ASSERT_TRUE(slepc.ok()) << slepc.status().message();
+  ASSERT_EQ(slepc->first.size(), n);
+  for (int k = 0; k < n; ++k) EXPECT_NEAR(slepc->first(k), dense->first(k), 1e-10 * dense->first(k)) << k;
+}
+
+TEST(PetscSolver, SlepcRefusesAPencilOfAnotherSize) {
+  if (!backend_built(Backend::kPetscMumps)) GTEST_SKIP() << "PETSc (and SLEPc) not built in";
+  const auto [K, M] = spring_mass_chain(40);
+  auto mumps = make_sparse_cholesky({.backend = Backend::kPetscMumps});
+  ASSERT_TRUE(mumps->Factorize(K, nullptr).ok());
+  const SparseMatrix smaller = M.topLeftCorner(30, 30);
+  auto eig = largest_generalized_eigenpairs(smaller, K, *mumps, 3);
+  ASSERT_FALSE(eig.ok());
+  EXPECT_EQ(eig.status().code(), StatusCode::kInvalidInput);
+  EXPECT_NE(eig.status().message().find("A has 30 rows, K has 40"), std::string::npos) << eig.status().message();
 }
 
 }  // namespace

@@ -132,6 +132,10 @@ TEST(LinearSolverFactory, TheIterativeBackendIsNoCholesky) {
   EXPECT_TRUE(factors_on_one_process(Backend::kCholmod));
   EXPECT_FALSE(factors_on_one_process(Backend::kPetscMumps));
   EXPECT_FALSE(factors_on_one_process(Backend::kPetscCg));
+  // The generalized eigensolver needs exact solves: both direct backends, not CG.
+  EXPECT_TRUE(solves_generalized_eigenproblems(Backend::kCholmod));
+  EXPECT_TRUE(solves_generalized_eigenproblems(Backend::kPetscMumps));
+  EXPECT_FALSE(solves_generalized_eigenproblems(Backend::kPetscCg));
   EXPECT_EQ(solution_tolerance({.backend = Backend::kCholmod, .relative_tolerance = 1e-6}), 0.0);
   EXPECT_EQ(solution_tolerance({.backend = Backend::kPetscCg, .relative_tolerance = 1e-6}), 1e-6);
 }

@@ -4,6 +4,7 @@
 // docs/reliability.md, "MPI", says how a job fails together.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ struct ProcessGroup {
   int size = 1;
 };
 
-// Starts PETSc (and MPI) once per process for the PETSc backends: call it first thing when the
+// Starts PETSc and SLEPc (and MPI) once per process for the PETSc backends: call it first thing when the
 // program may run under mpirun, so that every rank knows its rank before writing anything. The PETSc
 // backends also start it themselves when needed. Ok without effect when PETSc is not built in.
 StatusOr<ProcessGroup> start_parallel();
@@ -38,6 +39,10 @@ Status broadcast_from_root(std::vector<int>& values);
 // they do nothing.
 Status gather_to_root(std::vector<double>& values);
 Status gather_to_root(std::vector<char>& values);
+// The sum over the ranks of what each computed from its share of a distributed assembly (e.g. K q
+// from its summand of K). Collective: `values` has the same length on every rank, and on return
+// holds the sum on every rank. Without PETSc, before start_parallel or on one rank it does nothing.
+Status sum_over_ranks(std::span<double> values);
 // Every rank's outcome of a step that may fail on some ranks only (rank 0's meshing, a rank's own
 // elements): returns to every rank the failure of the lowest failing rank (code and message), or Ok.
 // Call it before the next collective step, so that a failure stops every rank instead of leaving the
