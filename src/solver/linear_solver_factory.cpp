@@ -52,8 +52,6 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
 
 bool backend_built(Backend backend) { return backend == Backend::kCholmod || petsc_built(); }
 
-bool factors_on_one_process(Backend backend) { return backend == Backend::kCholmod; }
-
 bool solves_generalized_eigenproblems(Backend backend) {
   return backend == Backend::kCholmod || backend == Backend::kPetscMumps;
 }

@@ -129,9 +129,6 @@ TEST(LinearSolverFactory, TheIterativeBackendIsNoCholesky) {
   ASSERT_TRUE(direct->Solve(MatX::Ones(6, 2), &X, &solve).ok());
   EXPECT_EQ(solve.iterations, std::vector<int>({0, 0}));
   EXPECT_EQ(solve.relative_tolerance, 0.0);
-  EXPECT_TRUE(factors_on_one_process(Backend::kCholmod));
-  EXPECT_FALSE(factors_on_one_process(Backend::kPetscMumps));
-  EXPECT_FALSE(factors_on_one_process(Backend::kPetscCg));
   // The generalized eigensolver needs exact solves: both direct backends, not CG.
   EXPECT_TRUE(solves_generalized_eigenproblems(Backend::kCholmod));
   EXPECT_TRUE(solves_generalized_eigenproblems(Backend::kPetscMumps));

@@ -34,8 +34,6 @@ std::optional<Backend> backend_from_name(std::string_view name);
 // Ok, or kInvalidInput naming the backend and why it is not built in (how to get it).
 Status check_backend_built(Backend backend);
 
-// Whether `backend` holds a Cholesky factor on this process alone (cholmod).
-bool factors_on_one_process(Backend backend);
 // Whether solver/generalized_eigen.hpp works on `backend`'s solver: a direct one, whose solves are
 // exact to round-off as the Krylov eigensolvers assume (cholmod: Spectra; petsc-mumps: SLEPc, on any
 // number of MPI ranks). Not an iterative one (petsc-cg): its solves carry CG's tolerance.
