@@ -2,8 +2,9 @@
 then two maps in two Python threads at once, each map on one C++ thread. compute_workspace_map
 releases the GIL, so on a machine with two free cores the two threads take about as long as one
 (ratio ~1.0); a call that held the GIL would serialize them (ratio ~2.0). The quiet-machine figure
-is in benchmarks/README.md; tests/python/test_gil.py runs this script alone and asserts a ratio
-below 1.6.
+is in benchmarks/README.md; tests/python/test_gil.py runs this script without a bound on the ratio
+(it depends on free cores: a CI run at load 2.3 read 1.71); the test asserts the GIL's release by
+counting another thread's steps during a call instead.
 
 Run: PYTHONPATH=build/python /usr/bin/python3 benchmarks/python/bench_gil.py [--step MM] [--repeat N]
 """
