@@ -9,16 +9,9 @@ wrote the JSON, and that the ranks shared the assembly (solver.elements_per_rank
 usage: compare_link_modes.py KINESTAT MPIEXEC RANKS COUNT TOL MESH [link-stiffness options...]
 """
 import json
-import os
-import subprocess
 import sys
 
-
-def run(command):
-    done = subprocess.run(command, capture_output=True, text=True, timeout=300)
-    if done.returncode != 0:
-        sys.exit(f"{' '.join(command)}: exit {done.returncode}\n{done.stderr}")
-    return done.stdout
+from mpi_runs import allow_mpi_runs, check_shared_assembly, run
 
 
 def main():
@@ -26,9 +19,7 @@ def main():
     tol = float(tol)
     base = [kinestat, "link-stiffness", mesh, *options, "--modes", count, "--json", "-", "--quiet"]
     reference = json.loads(run([*base, "--solver", "cholmod"]))["vibration"]["modes"]
-    # As root (CI containers) Open MPI wants both the flag and the environment variables.
-    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                      OMPI_MCA_rmaps_base_oversubscribe="1")
+    allow_mpi_runs()
     result = json.loads(run([mpiexec, "-np", ranks, *base, "--solver", "petsc-mumps"]))  # one document: rank 0's
     modes = result["vibration"]["modes"]
     if len(modes) != len(reference) or len(modes) != int(count):
@@ -42,9 +33,7 @@ def main():
         sys.exit(f"petsc-mumps's frequencies differ from cholmod's by {worst:.3e} > {tol:g}")
     if not residual <= 1e-8:
         sys.exit(f"a mode's residual is {residual:.2e} > 1e-8")
-    per_rank, elements = result["solver"]["elements_per_rank"], result["mesh"]["elements"]
-    if len(per_rank) != int(ranks) or sum(per_rank) != elements:
-        sys.exit(f"elements per rank {per_rank}: want {ranks} ranks sharing the {elements} elements")
+    check_shared_assembly(result, ranks)
 
 
 if __name__ == "__main__":

@@ -10,16 +10,9 @@ usage: compare_link_stiffness.py KINESTAT MPIEXEC RANKS SOLVER TOL MESH [link-st
 """
 import json
 import math
-import os
-import subprocess
 import sys
 
-
-def run(command):
-    done = subprocess.run(command, capture_output=True, text=True, timeout=300)
-    if done.returncode != 0:
-        sys.exit(f"{' '.join(command)}: exit {done.returncode}\n{done.stderr}")
-    return done.stdout
+from mpi_runs import allow_mpi_runs, check_shared_assembly, run
 
 
 def main():
@@ -27,9 +20,7 @@ def main():
     tol = float(tol)
     base = [kinestat, "link-stiffness", mesh, *options, "--json", "-", "--quiet"]
     reference = json.loads(run(base))["compliance"]
-    # As root (CI containers) Open MPI wants both the flag and the environment variables.
-    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                      OMPI_MCA_rmaps_base_oversubscribe="1")
+    allow_mpi_runs()
     out = run([mpiexec, "-np", ranks, *base, "--solver", solver])
     # One JSON document on stdout: rank 0's (json.loads fails on two).
     result = json.loads(out)
@@ -43,10 +34,7 @@ def main():
           f"residuals {s['relative_residuals']}; max |dC_ij| / sqrt(C_ii C_jj) = {worst:.3e} (tolerance {tol:g})")
     if not worst <= tol:
         sys.exit(f"{solver} differs from cholmod by {worst:.3e} > {tol:g}")
-    per_rank, elements = s["elements_per_rank"], result["mesh"]["elements"]
-    print(f"elements assembled per rank: {per_rank} of {elements}")
-    if len(per_rank) != int(ranks) or sum(per_rank) != elements:
-        sys.exit(f"elements per rank {per_rank}: want {ranks} ranks sharing the {elements} elements")
+    per_rank, elements = check_shared_assembly(result, ranks)
     if int(ranks) == 2 and not 0.3 <= per_rank[0] / elements <= 0.7:
         sys.exit(f"rank 0 assembled {per_rank[0]} of {elements} elements: the assembly was not shared")
 

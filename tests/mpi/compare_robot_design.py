@@ -17,21 +17,19 @@ import subprocess
 import sys
 import tempfile
 
+from mpi_runs import allow_mpi_runs, run
 
-def run(command):
-    done = subprocess.run(command, capture_output=True, text=True, timeout=300)
-    if done.returncode != 0:
-        sys.exit(f"{' '.join(command)}: exit {done.returncode}\n{done.stderr}")
-    return json.loads(done.stdout)  # fails on two documents
+
+def run_json(command):
+    return json.loads(run(command))  # fails on two documents
 
 
 def main():
     kinestat, mpiexec, robot, *options = sys.argv[1:]
-    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                      OMPI_MCA_rmaps_base_oversubscribe="1")
+    allow_mpi_runs()
     base = [kinestat, "design", robot, *options, "--json", "-", "--quiet", "--threads", "1"]
-    one = run([mpiexec, "-np", "1", *base])
-    two = run([mpiexec, "-np", "2", *base])
+    one = run_json([mpiexec, "-np", "1", *base])
+    two = run_json([mpiexec, "-np", "2", *base])
     if two["ranks"] != 2 or one["ranks"] != 1:
         sys.exit(f"ranks: {one['ranks']} and {two['ranks']}, expected 1 and 2")
     if one["best"] != two["best"]:

@@ -21,6 +21,8 @@ import sys
 import tempfile
 import time
 
+from mpi_runs import allow_mpi_runs
+
 
 def run_job(command, cwd=None):
     start = time.monotonic()
@@ -33,8 +35,7 @@ def run_job(command, cwd=None):
 
 def main():
     kinestat, mpiexec, mesh = os.path.abspath(sys.argv[1]), sys.argv[2], os.path.abspath(sys.argv[3])
-    os.environ.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-                      OMPI_MCA_rmaps_base_oversubscribe="1")
+    allow_mpi_runs()
     common = ["link-stiffness", "--clamp", "x=0", "--reference", "x=200", "--solver", "petsc-mumps", "--quiet"]
 
     done, seconds = run_job([mpiexec, "-np", "1", kinestat, *common, mesh, "--size", "20", ":",
