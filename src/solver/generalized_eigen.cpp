@@ -51,12 +51,16 @@ struct StiffnessInverse {
 // would build the full basis anyway.
 constexpr int kDenseBelow = 24;
 
+// Both Krylov routes (Spectra here, SLEPc on petsc-mumps) stop at this relative residual of each
+// eigenpair, and give up after this many restarts.
+constexpr EigenConvergence kConvergence{.tolerance = 1e-10, .max_restarts = 1000};
+
 }  // namespace
 
 StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
                                                                const LinearSolver& chol, int count) {
   // The one dispatch point: petsc-mumps solves on its own distributed K and factor (SLEPc).
-  if (auto distributed = petsc_generalized_eigenpairs(A, chol, count)) return std::move(*distributed);
+  if (auto distributed = petsc_generalized_eigenpairs(A, chol, count, kConvergence)) return std::move(*distributed);
   if (chol.summing_ranks() > 1)  // A and Kr may be summands here; only petsc-mumps adds them up
     return Status::Invalid(
         fmt::format("generalized eigenpairs on {} MPI ranks need the petsc-mumps solver (SLEPc on its factor); "
@@ -79,12 +83,12 @@ StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatri
   try {
     Spectra::SymGEigsSolver<Product, StiffnessInverse, Spectra::GEigsMode::RegularInverse> eig(op, bop, nev, ncv);
     eig.init();
-    eig.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
+    eig.compute(Spectra::SortRule::LargestAlge, kConvergence.max_restarts, kConvergence.tolerance);
     if (eig.info() != Spectra::CompInfo::Successful)
       return Status::NotConverged(
           fmt::format("the Lanczos eigensolver (Spectra) did not converge to {} eigenvalues in "
-                      "1000 restarts; ask for fewer modes",
-                      nev));
+                      "{} restarts; ask for fewer modes",
+                      nev, kConvergence.max_restarts));
     return std::pair<VecX, MatX>{eig.eigenvalues(), eig.eigenvectors()};
   } catch (const std::exception& e) {
     return Status::Internal(fmt::format("the Lanczos eigensolver (Spectra) failed: {}", e.what()));

@@ -85,6 +85,18 @@ int owner_of(const std::vector<int>& offsets, int row) {
   return static_cast<int>(std::upper_bound(offsets.begin(), offsets.end(), row) - offsets.begin()) - 1;
 }
 
+// The distributed vector x whole on every rank, into `column` (its length): `gather` scatters x to
+// `all` (VecScatterCreateToAll). A PETSc error code, for KINESTAT_PETSC.
+PetscErrorCode gather_to_every_rank(VecScatter gather, Vec x, Vec all, Eigen::Ref<VecX> column) {
+  PetscCall(VecScatterBegin(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar* values = nullptr;
+  PetscCall(VecGetArrayRead(all, &values));
+  column = Eigen::Map<const VecX>(values, column.size());
+  PetscCall(VecRestoreArrayRead(all, &values));
+  return 0;
+}
+
 // A distributed matrix as the PETSc backends hold it (K) and the eigensolver adds (the pencil's
 // other matrix): AIJ, in blocks of block_size(n) rows split over the ranks as split_rows says.
 struct DistributedMatrix {
@@ -322,12 +334,7 @@ class PetscKspSolver : public Interface {
               options_.relative_tolerance));
         rep.iterations.push_back(iterative() ? static_cast<int>(iterations) : 0);  // preonly counts the one solve
         rep.relative_residual.push_back(relative);
-        KINESTAT_PETSC(VecScatterBegin(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
-        KINESTAT_PETSC(VecScatterEnd(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
-        const PetscScalar* values = nullptr;
-        KINESTAT_PETSC(VecGetArrayRead(all, &values));
-        X->col(k) = Eigen::Map<const VecX>(values, n_);
-        KINESTAT_PETSC(VecRestoreArrayRead(all, &values));
+        KINESTAT_PETSC(gather_to_every_rank(gather, x, all, X->col(k)));
       }
       return Status::Ok();
     }();
@@ -415,11 +422,6 @@ class PetscKspSolver : public Interface {
   int analyses_ = 0;
 };
 
-// The eigensolver's convergence, as Spectra's in generalized_eigen.cpp: relative residual 1e-10,
-// at most 1000 restarts.
-constexpr double kTolerance = 1e-10;
-constexpr int kMaxRestarts = 1000;
-
 // MUMPS's Cholesky (KSPPREONLY + PCCHOLESKY): a direct factorization distributed over the ranks.
 class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
  public:
@@ -434,7 +436,8 @@ class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
   // A). The spectral transformation is a shift by 0 (operator K^-1 A, the largest mu at the end
   // Krylov-Schur converges to first, as Spectra's regular-inverse mode) whose solves are this
   // object's KSP: K's MUMPS factor, made once by Factorize, not a second one. Collective.
-  StatusOr<std::pair<VecX, MatX>> LargestGeneralizedEigenpairs(const SparseMatrix& A, int count) const {
+  StatusOr<std::pair<VecX, MatX>> LargestGeneralizedEigenpairs(const SparseMatrix& A, int count,
+                                                               const EigenConvergence& convergence) const {
     if (!ksp_) return Status::Internal("PETSc MUMPS: eigenpairs asked for without a successful Factorize");
     DistributedMatrix M;
     EPS eps = nullptr;
@@ -452,7 +455,7 @@ class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
       KINESTAT_SLEPC(EPSSetType(eps, EPSKRYLOVSCHUR));
       KINESTAT_SLEPC(EPSSetWhichEigenpairs(eps, EPS_LARGEST_REAL));  // Spectra's LargestAlge (buckling's mu < 0)
       KINESTAT_SLEPC(EPSSetDimensions(eps, nev, PETSC_DEFAULT, PETSC_DEFAULT));
-      KINESTAT_SLEPC(EPSSetTolerances(eps, kTolerance, kMaxRestarts));  // as the Spectra route
+      KINESTAT_SLEPC(EPSSetTolerances(eps, convergence.tolerance, convergence.max_restarts));
       ST st;
       KINESTAT_SLEPC(EPSGetST(eps, &st));
       KINESTAT_SLEPC(STSetType(st, STSHIFT));
@@ -486,12 +489,7 @@ class PetscMumpsCholesky final : public PetscKspSolver<SparseCholesky> {
         if (!(qKq > 0.0))
           return Status::Internal(fmt::format("SLEPc: eigenvector {} has q' K q = {:g}, not positive", k + 1, qKq));
         KINESTAT_PETSC(VecScale(x, 1.0 / std::sqrt(qKq)));
-        KINESTAT_PETSC(VecScatterBegin(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
-        KINESTAT_PETSC(VecScatterEnd(gather, x, all, INSERT_VALUES, SCATTER_FORWARD));
-        const PetscScalar* values = nullptr;
-        KINESTAT_PETSC(VecGetArrayRead(all, &values));
-        Q.col(k) = Eigen::Map<const VecX>(values, n_);
-        KINESTAT_PETSC(VecRestoreArrayRead(all, &values));
+        KINESTAT_PETSC(gather_to_every_rank(gather, x, all, Q.col(k)));
         mu(k) = value;
       }
       return std::pair<VecX, MatX>{std::move(mu), std::move(Q)};
@@ -641,10 +639,11 @@ std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions& options) 
 }
 
 std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(const SparseMatrix& A,
-                                                                            const LinearSolver& solver, int count) {
+                                                                            const LinearSolver& solver, int count,
+                                                                            const EigenConvergence& convergence) {
   const auto* mumps = dynamic_cast<const PetscMumpsCholesky*>(&solver);
   if (!mumps) return std::nullopt;
-  return mumps->LargestGeneralizedEigenpairs(A, count);
+  return mumps->LargestGeneralizedEigenpairs(A, count, convergence);
 }
 
 #else  // PETSc not built in
@@ -654,7 +653,7 @@ bool petsc_built() { return false; }
 std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions&) { return nullptr; }
 std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions&) { return nullptr; }
 std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(const SparseMatrix&, const LinearSolver&,
-                                                                            int) {
+                                                                            int, const EigenConvergence&) {
   return std::nullopt;
 }
 

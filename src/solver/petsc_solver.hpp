@@ -18,11 +18,18 @@ bool petsc_built();
 std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions& options);
 std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions& options);
 
+// When a Krylov eigensolver stops: each eigenpair's relative residual, and the restarts it may take.
+struct EigenConvergence {
+  double tolerance = 0.0;
+  int max_restarts = 0;
+};
+
 // solver/generalized_eigen.hpp's eigenpairs when `solver` is the petsc-mumps backend (made by
 // make_petsc_mumps, factorized with K): SLEPc on its distributed K and MUMPS factor, `A` assembled
 // as K was (FactorizeSum: this rank's summand; Factorize: the whole A). Collective. nullopt for
 // any other solver (and without PETSc), which the caller solves itself.
 std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(const SparseMatrix& A,
-                                                                            const LinearSolver& solver, int count);
+                                                                            const LinearSolver& solver, int count,
+                                                                            const EigenConvergence& convergence);
 
 }  // namespace kinestat::solver
