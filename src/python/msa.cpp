@@ -112,7 +112,16 @@ void bind_model(py::module_& m) {
                          "Vectors in the beam's local axes, or global when global_axes.")
       .def(py::init([](int beam, MemberLoadType type, bool global_axes, const Vec3& w1, const Vec3& w2, double a,
                        double b, const Vec3& force, const Vec3& moment, const ThermalLoad& thermal) {
-             return MemberLoad{beam, type, global_axes, w1, w2, a, b, force, moment, thermal};
+             return MemberLoad{.beam = beam,
+                               .type = type,
+                               .global_axes = global_axes,
+                               .w1 = w1,
+                               .w2 = w2,
+                               .a = a,
+                               .b = b,
+                               .force = force,
+                               .moment = moment,
+                               .thermal = thermal};
            }),
            py::arg("beam"), py::arg("type"), py::arg("global_axes") = false, py::arg("w1") = Vec3(Vec3::Zero()),
            py::arg("w2") = Vec3(Vec3::Zero()), py::arg("a") = 0.0, py::arg("b") = 0.0,
