@@ -11,7 +11,7 @@ else
 fi
 jobs=$(scripts/cpus.sh)
 # KINESTAT_WERROR=1 (scripts/test.sh): a warning in kinestat's own code fails the build.
-# KINESTAT_TEST_LAYERS="solver;fea;cli" (scripts/test.sh): only those layers' test programs.
+# KINESTAT_TEST_LAYERS="solver;fea;..." (scripts/test.sh sets four): only those layers' test programs.
 # compile_commands.json: scripts/tidy.sh reads it.
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DKINESTAT_WERROR="${KINESTAT_WERROR:-0}" \
   -DKINESTAT_TEST_LAYERS="${KINESTAT_TEST_LAYERS:-all}" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON >/dev/null

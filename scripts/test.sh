@@ -21,8 +21,8 @@ step format scripts/check_format.sh
 # PETSc too, so that the distributed backends are built and tested on 1 and 2 MPI ranks; a warning
 # in kinestat's own code fails the build (-Werror). Of the GoogleTest programs only the layers with
 # PETSc code paths (solver, fea, cli) and mechanisms (its no-allocation test cannot run under ASan):
-# the sanitizer build below compiles and runs every layer's, and compiling all nine here took about
-# 4 minutes more on this 2-core machine (2026-11-26). The Python, CLI, MPI, example and fuzz-replay
+# the sanitizer build below compiles and runs every layer's. Compiling the other layers' here too
+# cost 264 s of wall time on this 2-core machine for six of them, mechanisms included (2026-11-26). The Python, CLI, MPI, example and fuzz-replay
 # tests run here in full.
 KINESTAT_PETSC=1 KINESTAT_WERROR=1 KINESTAT_TEST_LAYERS="solver;fea;mechanisms;cli" step build scripts/build.sh
 jobs=$(scripts/cpus.sh)
