@@ -5,7 +5,7 @@
 # allocation above 1 GB, more than 2 GB of memory or an input running 30 s stops the run with the
 # input saved under build-sanitize/fuzz/artifacts/NAME/: fix the code, then keep the input as a
 # regression under tests/fuzz/NAME/ (ctest replays that folder in every build).
-#   scripts/fuzz.sh [SECONDS]      CI runs scripts/fuzz.sh 20 from scripts/test.sh
+#   scripts/fuzz.sh [SECONDS]      CI runs scripts/fuzz.sh 10 from scripts/test.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
