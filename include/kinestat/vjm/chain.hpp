@@ -12,6 +12,8 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -170,13 +172,24 @@ ChainHessians hessians(const Chain& chain, const VecX& q, const VecX& theta, con
 template <class Twist, class Add>
 void for_each_hessian_term(const Twist* tw, int count, const Vec3& p, const Vec6& F, Add&& add) {
   const Vec3 f = F.head<3>(), M = p.cross(f) + F.tail<3>();
-  for (int b = 0; b < count; ++b) {
-    const Vec3 g = f.cross(tw[b].w), h = tw[b].v.cross(f) + tw[b].w.cross(M);
+  // g_b, h_b for a block of columns, then u_a once per row of the block: cross products per factor,
+  // only dot products per pair (the loaded posture kernels call this at every Newton step).
+  constexpr int kBlock = 32;
+  std::array<Vec3, kBlock> g, h;
+  for (int b0 = 0; b0 < count; b0 += kBlock) {
+    const int nb = std::min(kBlock, count - b0);
+    for (int j = 0; j < nb; ++j) {
+      g[j] = f.cross(tw[b0 + j].w);
+      h[j] = tw[b0 + j].v.cross(f) + tw[b0 + j].w.cross(M);
+    }
     for (int a = 0; a < count; ++a) {
       const Vec3 u = tw[a].v + tw[a].w.cross(p);
-      double term = u.dot(g);
-      if (a < b) term += tw[a].w.dot(h) - tw[a].v.dot(g);
-      add(b, a, term);
+      for (int j = 0; j < nb; ++j) {
+        const int b = b0 + j;
+        double term = u.dot(g[j]);
+        if (a < b) term += tw[a].w.dot(h[j]) - tw[a].v.dot(g[j]);
+        add(b, a, term);
+      }
     }
   }
 }
