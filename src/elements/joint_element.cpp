@@ -6,16 +6,15 @@
 
 namespace kinestat {
 
-Mat6 joint_spring_block(const Mat3& frame, const Vec6& k) {
-  Vec6 finite = k;
-  for (int i = 0; i < 6; ++i)
-    if (std::isinf(finite(i))) finite(i) = 0.0;
+Mat6 joint_spring_block(const Mat3& frame, const Vec6& k, const Mat6& coupling) {
+  Mat6 local = coupling;
+  for (int i = 0; i < 6; ++i) local(i, i) = std::isinf(k(i)) ? 0.0 : k(i);
   const Mat6 R = rotation6(frame);
-  return R * finite.asDiagonal() * R.transpose();
+  return R * local * R.transpose();
 }
 
-Mat12 joint_global_stiffness(const Mat3& frame, const Vec6& k) {
-  const Mat6 kc = joint_spring_block(frame, k);
+Mat12 joint_global_stiffness(const Mat3& frame, const Vec6& k, const Mat6& coupling) {
+  const Mat6 kc = joint_spring_block(frame, k, coupling);
   Mat12 K;
   K << kc, -kc, -kc, kc;
   return K;

@@ -34,6 +34,7 @@ struct Connection {
   // a joint element
   Mat3 frame = Mat3::Identity();
   Vec6 stiffness = Vec6::Zero();
+  Mat6 coupling = Mat6::Zero();  // a coupled spring's off-diagonal terms (msa::Joint::coupling)
   // a beam
   const RobotBeam* beam_data = nullptr;
   Vec3 orientation = Vec3::Zero();
@@ -180,18 +181,9 @@ class Builder {
     return b;
   }
 
-  // A 6x6 spring between the body `cur` and a new body at `p`, in `axes` (base axes).
-  StatusOr<int> spring(int cur, const Vec3& p, const Mat3& axes, const RobotSpring& sp) {
-    if (sp.fea && !diagonal(sp.stiffness))
-      return invalid(
-          fmt::format("{}: a `fea:` spring is a full 6x6 (its mesh couples its components) and an MSA joint "
-                      "is diagonal in its axes; use the VJM (--method vjm), or give the link a `beam:`",
-                      sp.fea_where));
-    if (!diagonal(sp.stiffness))
-      return invalid(
-          fmt::format("{}: its 6x6 spring couples its components in its axes; an MSA joint is diagonal in "
-                      "its axes (give the spring `diagonal:` and `axes:`), or use the VJM",
-                      sp.label));
+  // A 6x6 spring between the body `cur` and a new body at `p`, in `axes` (base axes): a joint element,
+  // its off-diagonal terms (a coupled spring: `fea:`, a full `matrix:`) the joint's coupling.
+  int spring(int cur, const Vec3& p, const Mat3& axes, const RobotSpring& sp) {
     Connection c;
     c.label = sp.label + " (spring)";
     c.body1 = cur;
@@ -199,6 +191,8 @@ class Builder {
     c.p1 = c.p2 = p;
     c.frame = axes;
     c.stiffness = sp.stiffness.diagonal();
+    c.coupling = sp.stiffness;
+    c.coupling.diagonal().setZero();
     conn_.push_back(c);
     return c.body2;
   }
@@ -225,9 +219,7 @@ class Builder {
           c.orientation = axes.col(1);
           conn_.push_back(c);
         } else {
-          auto next = spring(cur, end, axes, *link->spring);
-          if (!next.ok()) return next.status();
-          cur = *next;
+          cur = spring(cur, end, axes, *link->spring);
         }
         continue;
       }
@@ -241,9 +233,7 @@ class Builder {
         if (one) {
           e = *one;
         } else {
-          auto next = spring(cur, f.at.translation(), axes, *j.spring);
-          if (!next.ok()) return next.status();
-          cur = *next;
+          cur = spring(cur, f.at.translation(), axes, *j.spring);
         }
       }
       if (e.stiffness.array().isInf().all()) continue;  // locked: the same body
@@ -384,6 +374,7 @@ class Builder {
       }
       j.frame = c.frame;
       j.stiffness = c.stiffness;
+      j.coupling = c.coupling;
       j.source = c.label;
       s_.add_joint(j);
     }

@@ -43,7 +43,7 @@ StatusOr<solver::SparseMatrix> assemble_stiffness(const Structure& s) {
     // Eq. (4) writes [T][k][T]^T with T mapping local to global; here T maps global to local.
     scatter(m->transform.transpose() * m->local * m->transform, b.node1, b.node2);
   }
-  for (const Joint& j : s.joints()) scatter(joint_global_stiffness(j.frame, j.stiffness), j.node1, j.node2);
+  for (const Joint& j : s.joints()) scatter(joint_global_stiffness(j.frame, j.stiffness, j.coupling), j.node1, j.node2);
   solver::SparseMatrix K(s.num_dofs(), s.num_dofs());
   K.setFromTriplets(trip.begin(), trip.end());
   return K;

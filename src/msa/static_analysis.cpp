@@ -153,8 +153,8 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
     const Joint& jt = s.joints()[j];
     const Mat6 R6 = rotation6(jt.frame);
     const Vec6 rel = R6.transpose() * (u.segment<6>(6 * jt.node2) - u.segment<6>(6 * jt.node1));
-    Vec6 force;  // k (u2 - u1) in the joint frame: positive in tension
-    for (int i = 0; i < 6; ++i) force(i) = std::isinf(jt.stiffness(i)) ? 0.0 : jt.stiffness(i) * rel(i);
+    Vec6 force = jt.coupling * rel;  // k (u2 - u1) in the joint frame: positive in tension
+    for (int i = 0; i < 6; ++i) force(i) = std::isinf(jt.stiffness(i)) ? 0.0 : force(i) + jt.stiffness(i) * rel(i);
     // Rigid components carry a constraint force: read it off the tied node's equilibrium.
     for (const auto& tie : sys.map.ties) {
       if (tie.joint != static_cast<int>(j)) continue;

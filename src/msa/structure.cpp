@@ -4,6 +4,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <Eigen/Eigenvalues>
 
 #include "kinestat/core/frame.hpp"
 #include "kinestat/core/input_checks.hpp"
@@ -25,6 +26,38 @@ std::string source_of(const T& item) {
     return item.source;
   else
     return {};
+}
+
+// A joint's coupled spring: finite, symmetric, zero on the diagonal and in rigid components' rows,
+// and, with the components' stiffnesses on its diagonal, positive semidefinite (a spring that gives
+// energy back is no spring).
+Status check_coupling(const Joint& j) {
+  if (j.coupling.isZero(0.0)) return Status::Ok();
+  if (!j.coupling.allFinite())
+    return Status::Invalid(fmt::format("joint '{}': its coupling terms must be finite", j.id));
+  Mat6 K = j.coupling;
+  for (int i = 0; i < 6; ++i) {
+    if (K(i, i) != 0.0)
+      return Status::Invalid(
+          fmt::format("joint '{}': the diagonal of its coupling must be zero (the components' "
+                      "stiffnesses are `stiffness`)",
+                      j.id));
+    if (std::isinf(j.stiffness(i)) && !K.row(i).isZero(0.0))
+      return Status::Invalid(
+          fmt::format("joint '{}': its rigid component {} is coupled to others; a coupled spring has finite components",
+                      j.id, dof_name(i)));
+    K(i, i) = std::isinf(j.stiffness(i)) ? 0.0 : j.stiffness(i);
+  }
+  const double scale = K.cwiseAbs().maxCoeff();
+  if ((K - K.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
+    return Status::Invalid(fmt::format("joint '{}': its stiffness with its coupling is not symmetric", j.id));
+  const double lowest = Eigen::SelfAdjointEigenSolver<Mat6>(K, Eigen::EigenvaluesOnly).eigenvalues()(0);
+  if (lowest < -1e-9 * scale)
+    return Status::Invalid(fmt::format(
+        "joint '{}': its stiffness with its coupling is not positive semidefinite (eigenvalue {:.3g} in units of "
+        "its largest term): a spring cannot give energy back",
+        j.id, lowest / scale));
+  return Status::Ok();
 }
 
 bool is_rotation(const Mat3& R) { return (R.transpose() * R - Mat3::Identity()).norm() < 1e-9 && R.determinant() > 0; }
@@ -178,6 +211,7 @@ Status Structure::validate() const {
           !st.ok())
         return invalid(j.source, st.message());
     }
+    if (Status st = check_coupling(j); !st.ok()) return invalid(j.source, st.message());
   }
   std::set<int> constrained;  // nodes whose dofs depend on another node (slaves)
   for (const auto& r : rigid_links_) {

@@ -84,8 +84,11 @@ void bind_elements(py::module_& m) {
       "Static condensation of the released local dofs (12 booleans). InputError when the element becomes free.");
   m.def("beam_transformation", &beam_transformation, py::arg("axes"), "T with u_local = T u_global (12x12).");
   m.def("joint_global_stiffness", &joint_global_stiffness, py::arg("frame"), py::arg("k"),
-        "12x12 [kc -kc; -kc kc] of a 6-dof joint spring k (N/m, N m/rad) in `frame`; inf components add nothing.");
-  m.def("joint_spring_block", &joint_spring_block, py::arg("frame"), py::arg("k"), "The 6x6 kc block (global).");
+        py::arg("coupling") = Mat6(Mat6::Zero()),
+        "12x12 [kc -kc; -kc kc] of a 6-dof joint spring k (N/m, N m/rad) in `frame`; inf components add nothing; "
+        "`coupling`: the off-diagonal terms of a coupled spring in `frame` (6x6, zero diagonal).");
+  m.def("joint_spring_block", &joint_spring_block, py::arg("frame"), py::arg("k"),
+        py::arg("coupling") = Mat6(Mat6::Zero()), "The 6x6 kc block (global).");
 }
 
 }  // namespace kinestat::python

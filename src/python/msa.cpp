@@ -48,17 +48,20 @@ void bind_model(py::module_& m) {
 
   py::class_<Joint>(m, "Joint",
                     "A 6-dof spring between two coincident nodes; stiffness (kt N/m x3, kr N m/rad x3) in `frame` "
-                    "(columns: local axes in global). 0 releases a component, msa.RIGID makes it an exact constraint.")
-      .def(py::init([](std::string id, int node1, int node2, const Mat3& frame, const Vec6& stiffness) {
-             return Joint{std::move(id), node1, node2, frame, stiffness};
-           }),
-           py::arg("id"), py::arg("node1"), py::arg("node2"), py::arg("frame") = Mat3(Mat3::Identity()),
-           py::arg("stiffness") = Vec6(Vec6::Zero()))
+                    "(columns: local axes in global). 0 releases a component, msa.RIGID makes it an exact constraint. "
+                    "`coupling`: the off-diagonal terms of a spring that couples its components in `frame` (6x6, "
+                    "symmetric, zero diagonal; a link's 6x6 from FEA).")
+      .def(
+          py::init([](std::string id, int node1, int node2, const Mat3& frame, const Vec6& stiffness,
+                      const Mat6& coupling) { return Joint{std::move(id), node1, node2, frame, stiffness, coupling}; }),
+          py::arg("id"), py::arg("node1"), py::arg("node2"), py::arg("frame") = Mat3(Mat3::Identity()),
+          py::arg("stiffness") = Vec6(Vec6::Zero()), py::arg("coupling") = Mat6(Mat6::Zero()))
       .def_readwrite("id", &Joint::id)
       .def_readwrite("node1", &Joint::node1)
       .def_readwrite("node2", &Joint::node2)
       .def_readwrite("frame", &Joint::frame)
-      .def_readwrite("stiffness", &Joint::stiffness);
+      .def_readwrite("stiffness", &Joint::stiffness)
+      .def_readwrite("coupling", &Joint::coupling);
 
   py::class_<RigidLink>(m, "RigidLink",
                         "`slave` follows `master` as a rigid body in the dofs of `mask` (6 booleans, in `frame`).")

@@ -206,6 +206,35 @@ TEST(Frame, RigidJointComponentsActAsConstraints) {
   EXPECT_NEAR(std::abs(sol2.cases[0].joint_forces[0](2)), P, 1e-9 * P);
 }
 
+TEST(Frame, CoupledJointIsItsMatrixInItsFrame) {
+  // A node held to a fixed one by a joint whose 6x6 couples its components (a link's FEA spring), in a
+  // turned frame: the node's displacement under W is (R6 K R6^T)^-1 W, here solved by Eigen's LDLT on
+  // the 6x6, and the joint's force in its frame is K R6^T u = R6^T W.
+  Mat6 A;
+  A << 4, 1, 0, 0.5, 0, 0.2, 1, 5, 0.3, 0, 0.1, 0, 0, 0.3, 6, 0, 0, 0.4, 0.5, 0, 0, 3, 0.2, 0, 0, 0.1, 0, 0.2, 2, 0.3,
+      0.2, 0, 0.4, 0, 0.3, 1;
+  const Vec6 scale = (Vec6() << 1e7, 1e7, 1e7, 1e3, 1e3, 1e3).finished();  // N/m, N m/rad
+  const Mat6 K = scale.cwiseSqrt().asDiagonal() * (A * A.transpose()) * scale.cwiseSqrt().asDiagonal();
+  Mat6 coupling = K;
+  coupling.diagonal().setZero();
+  const Mat3 R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  Structure s;
+  const int g = s.add_node("g", Vec3(0.1, 0.2, 0.3)), t = s.add_node("t", Vec3(0.1, 0.2, 0.3));
+  s.add_support({g, kAllDofs, Mat3::Identity()});
+  s.add_joint({"link", g, t, R, K.diagonal(), coupling});
+  const Vec6 W = (Vec6() << 100, -50, 80, 3, -2, 1).finished();
+  s.add_load_case(point_load("W", t, W));
+  const Solution sol = solve(s);
+  ASSERT_TRUE(sol.status.ok()) << sol.status.message();
+  const Mat6 R6 = rotation6(R);
+  const Vec6 expected = (R6 * K * R6.transpose()).ldlt().solve(W);
+  const Vec6& u = sol.cases[0].displacement[t];
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(u(i), expected(i), 1e-10 * expected.cwiseAbs().maxCoeff()) << i;
+  const Vec6 force = R6.transpose() * W;
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(sol.cases[0].joint_forces[0](i), force(i), 1e-10 * W.norm()) << i;
+  EXPECT_LT(sol.cases[0].equilibrium_error, 1e-12);
+}
+
 TEST(Frame, SupportInRotatedFrameAndPrescribedDisplacement) {
   // A node held by an isotropic spring k to the ground and by a roller whose normal is the support's
   // local x axis at 30 degrees: a load along global x moves the node only along the roller.

@@ -69,6 +69,35 @@ TEST(StructureValidation, NonFiniteAndOutOfRangeValuesNameTheirItem) {
   expect_contains(stiff.validate().message(), "is not a finite number");
 }
 
+TEST(StructureValidation, CoupledJointChecked) {
+  // A coupled joint's terms: symmetric, off the diagonal, away from rigid components, and a spring
+  // (positive semidefinite with the diagonal), each refused by FILE:LINE and the joint.
+  const auto refusal = [](const Vec6& k, const Mat6& coupling) {
+    Structure s = cantilever();
+    const int b = s.add_node("B2", Vec3(1, 0, 0));
+    s.add_joint({"j", 1, b, Mat3::Identity(), k, coupling, "frame.yaml:7"});
+    return s.validate().message();
+  };
+  const Vec6 k = Vec6::Constant(10.0);
+  Mat6 c = Mat6::Zero();
+  c(0, 1) = c(1, 0) = 4.0;
+  EXPECT_EQ(refusal(k, c), "");  // [[10, 4], [4, 10]]: a spring
+  Mat6 asymmetric = c;
+  asymmetric(1, 0) = 3.0;
+  expect_contains(refusal(k, asymmetric), "frame.yaml:7: joint 'j': its stiffness with its coupling is not symmetric");
+  Mat6 gives_back = c;
+  gives_back(0, 1) = gives_back(1, 0) = 11.0;  // eigenvalue 10 - 11 < 0
+  expect_contains(refusal(k, gives_back),
+                  "frame.yaml:7: joint 'j': its stiffness with its coupling is not positive "
+                  "semidefinite");
+  Mat6 on_diagonal = c;
+  on_diagonal(2, 2) = 1.0;
+  expect_contains(refusal(k, on_diagonal), "the diagonal of its coupling must be zero");
+  Vec6 rigid = k;
+  rigid(0) = kRigid;
+  expect_contains(refusal(rigid, c), "frame.yaml:7: joint 'j': its rigid component ux is coupled to others");
+}
+
 TEST(StructureValidation, OneValuePerPrescribedDof) {
   Structure s = cantilever();
   s.add_load_case({"settle", {}, {{0, 2, 1e-3, "frame.yaml:11"}, {0, 2, 2e-3, "frame.yaml:12"}}, "frame.yaml:10"});

@@ -139,6 +139,31 @@ def test_structure_in_code_is_validated_like_a_file():
         ks.msa.solve(s)
 
 
+def test_coupled_joint_carries_its_matrix():
+    # A node held to a fixed one by a coupled 6x6 (identity frame): u = K^-1 W, solved by NumPy;
+    # a coupling that is not symmetric is refused naming the joint.
+    K = np.diag([4e6, 5e6, 6e6, 3e3, 2e3, 1e3])
+    K[0, 1] = K[1, 0] = 1e6
+    K[2, 4] = K[4, 2] = 2e4
+    coupling = K - np.diag(np.diag(K))
+    W = np.array([100.0, -50.0, 80.0, 3.0, -2.0, 1.0])
+
+    def held(coupling):
+        s = ks.msa.Structure()
+        g = s.add_node("g", [0.0, 0.0, 0.0])
+        t = s.add_node("t", [0.0, 0.0, 0.0])
+        s.add_support(ks.msa.Support(g))
+        s.add_joint(ks.msa.Joint("link", g, t, stiffness=np.diag(K), coupling=coupling))
+        s.add_load_case(ks.msa.LoadCase("W", [ks.msa.NodalLoad(t, W)]))
+        return s
+
+    u = ks.msa.solve(held(coupling)).cases[0].displacement[1]
+    np.testing.assert_allclose(u, np.linalg.solve(K, W), rtol=1e-10)
+    coupling[1, 0] = 0.0
+    with pytest.raises(ks.InputError, match="joint 'link': its stiffness with its coupling is not symmetric"):
+        held(coupling).validate()
+
+
 def test_singular_posture_raises_singular_error_with_free_motion():
     # theta1 = theta2: B1, P, B2 aligned, a parallel singularity (README: node 5 translates along y).
     theta = math.radians(30)

@@ -9,11 +9,13 @@
 
 namespace kinestat {
 
-// 12x12 global stiffness [kc -kc; -kc kc], kc = R6 diag(k) R6^T, with R the joint frame's axes
-// (columns) in global coordinates. Infinite (rigid) components contribute nothing.
-Mat12 joint_global_stiffness(const Mat3& frame, const Vec6& k);
+// 12x12 global stiffness [kc -kc; -kc kc], kc = R6 (diag(k) + coupling) R6^T, with R the joint
+// frame's axes (columns) in global coordinates. Infinite (rigid) components contribute nothing.
+// `coupling`: the off-diagonal terms of a spring that couples its components in the joint frame (a
+// link's 6x6 from FEA), zero on the diagonal and in the rows and columns of rigid components.
+Mat12 joint_global_stiffness(const Mat3& frame, const Vec6& k, const Mat6& coupling = Mat6::Zero());
 
 // The 6x6 kc block alone (global coordinates).
-Mat6 joint_spring_block(const Mat3& frame, const Vec6& k);
+Mat6 joint_spring_block(const Mat3& frame, const Vec6& k, const Mat6& coupling = Mat6::Zero());
 
 }  // namespace kinestat

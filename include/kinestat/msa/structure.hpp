@@ -43,12 +43,16 @@ struct Beam {
 };
 
 // 6-dof spring between two coincident nodes; stiffness in `frame` (columns: local axes in global).
-// A component may be 0 (released) or kRigid (exact constraint).
+// A component may be 0 (released) or kRigid (exact constraint). `coupling`: the off-diagonal terms
+// of a spring that couples its components in `frame` (a link's 6x6 from FEA; N/m, N and N m/rad as
+// the components they join), symmetric with a zero diagonal, zero in the rows of rigid components,
+// diag(stiffness) + coupling positive semidefinite (validate() checks).
 struct Joint {
   std::string id;
   int node1 = -1, node2 = -1;
   Mat3 frame = Mat3::Identity();
   Vec6 stiffness = Vec6::Zero();
+  Mat6 coupling = Mat6::Zero();
   std::string source{};
 };
 
