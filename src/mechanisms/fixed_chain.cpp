@@ -51,6 +51,8 @@ void FixedChain::add_motion(Kind kind, const Vec3& axis, double offset, bool pas
   f = Factor{};
   f.kind = kind;
   f.axis = axis;
+  for (int k = 0; k < 3; ++k)
+    if (axis == Vec3::Unit(k)) f.unit_axis = k;
   f.offset = offset;
   f.passive = passive;
   f.index = index;
@@ -114,9 +116,16 @@ void FixedChain::walk(const CoordinateVector& x, ChainWalk& w, ChainJacobian& J)
       w.tw[nt++] = f.kind == Kind::kRevolute ? ChainWalk::Twist{c * T.p.cross(a), c * a, slot}
                                              : ChainWalk::Twist{c * a, Vec3::Zero(), slot};
     }
-    if (f.kind == Kind::kRevolute)
+    if (f.kind == Kind::kRevolute && f.unit_axis >= 0) {
+      // About a coordinate axis k, only the columns i, j of T.R turn: 12 flops for the 27 of a product.
+      const int i = (f.unit_axis + 1) % 3, j = (f.unit_axis + 2) % 3;
+      const double c = std::cos(value), s = std::sin(value);
+      const Vec3 ri = T.R.col(i), rj = T.R.col(j);
+      T.R.col(i) = c * ri + s * rj;
+      T.R.col(j) = c * rj - s * ri;
+    } else if (f.kind == Kind::kRevolute) {
       T.R = T.R * Eigen::AngleAxisd(value, f.axis).toRotationMatrix();
-    else
+    } else
       T.p += T.R * (value * f.axis);
   }
   w.count = nt;
@@ -232,13 +241,13 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
   return true;
 }
 
-// Under a wrench, from a warm start: Newton on all the equations at once, every chain's eq. (11) and
-// the platform's balance sum F_i = W_ext, unknowns every chain's (dx_i, dF_i) and the platform's
-// twist dt. Each chain's Newton system is solved for its own residual and for the six unit moves of
-// its target, which condenses it to F_i + dF_i0 + K_i dt (K_i: the chain's dF/dt, eq. 21 by the
-// Schur complement of the same matrix); the 6x6 sum gives dt. The nested iteration (equilibrium(),
-// the reference's) re-solves every chain to 1e-12 at each platform step; near a neighbour's solution
-// this converges in the same few steps for all the unknowns together.
+// Under a wrench: Newton on all the equations at once, every chain's eq. (11) and the platform's
+// balance sum F_i = W_ext, unknowns every chain's (dx_i, dF_i) and the platform's twist dt. Each
+// chain's Newton system is solved for its own residual and for the six unit moves of its target,
+// which condenses it to F_i + dF_i0 + K_i dt (K_i: the chain's dF/dt, eq. 21 by the Schur complement
+// of the same matrix); the 6x6 sum gives dt. The nested iteration (equilibrium(), the reference's)
+// re-solves every chain to 1e-12 at each platform step; this converges in a few steps for all the
+// unknowns together. From rest (F = 0, so H = 0) its first step is the linear response K0^-1 W_ext.
 //
 // A round whose residuals are not yet within the tolerances may be a chord step: the residuals
 // (a walk of each chain, no Hessian) solved with the factors, the K_i and the 6x6 of the last Newton
@@ -247,10 +256,12 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
 // so that a chord step gains about as many digits as a Newton step, for a fifth of its price);
 // elsewhere a Newton step at the current state. Once every chain and the platform meet the nested
 // iteration's tolerances and chord steps no longer contract (the round-off floor), one more Newton
-// step, whose J and H serve the loaded stiffness (loaded_stiffness, eq. 21 at that state). False
-// after 8 Newton steps without converging. `steps` counts the Newton steps (one per chain), not the
-// chord steps.
-bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps) {
+// step, whose Schur complements give K, the loaded platform stiffness at that state (eq. 21), and
+// whose J and H are kept in the chains' states. False after 8 Newton steps without converging, or
+// with `monotone` (the start from rest) after a Newton step that did not reduce the residuals (left
+// to the nested iteration, which backtracks). `steps` counts the Newton steps (one per chain), not
+// the chord steps.
+bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps, bool monotone) {
   constexpr int kMaxNewtonSteps = 8, kMaxChordSteps = 8;
   constexpr double kChordContraction = 0.1;
   const Vec6 w = twist_scale(length_scale_);
@@ -265,7 +276,7 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps
   BorderedVector b;
   Mat6 Ksum = Mat6::Zero();
   Eigen::FullPivLU<Mat6> platform_lu;
-  bool factored = false;
+  bool factored = false, after_newton = false;
   int newton_steps = 0, chord_steps = 0;
   double last_merit = std::numeric_limits<double>::infinity();
   for (;;) {
@@ -283,11 +294,13 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps
     merit = std::max(merit, (ref > 0 ? R.norm() / ref : R.norm()) / 100) / equilibrium_tolerance;
     if (!(merit == merit)) return false;  // NaN
     const bool converged = merit <= 1.0;
+    if (monotone && after_newton && !converged && merit >= last_merit) return false;
     // A chord step while they contract; converged, the last one is a Newton step from the state at
     // which they stop contracting (the round-off floor), so that K is that state's.
     const bool chord = factored && merit < kChordContraction * last_merit && chord_steps < kMaxChordSteps;
     const bool last = converged && !chord;
     last_merit = merit;
+    after_newton = !chord;
     if (chord) {
       ++chord_steps;
       for (int i = 0; i < num_chains; ++i) {
@@ -320,8 +333,8 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps
       platform_lu.compute(w.cwiseInverse().asDiagonal() * Ksum * w.cwiseInverse().asDiagonal());
       if (!platform_lu.isInvertible()) return false;
       factored = true;
+      steps += num_chains;  // newton_iterations counts the factorizations
     }
-    if (!chord) steps += num_chains;  // newton_iterations counts the factorizations
     Vec6 F0 = Vec6::Zero();
     for (int i = 0; i < num_chains; ++i) F0 += states_[i].wrench + sols[i].col(0).tail<6>().cwiseProduct(wc[i]);
     const Vec6 dt = platform_lu.solve((wrench - F0).cwiseQuotient(w)).cwiseQuotient(w);
@@ -341,6 +354,7 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps
     states_[i].H = lin[i].H;
     states_[i].linearized = true;
   }
+  K = Ksum;
   return true;
 }
 
@@ -429,17 +443,20 @@ bool LoadedPlatform::equilibrium(const Vec6* displacement, const Vec6* wrench, b
   have_K = false;
   if (!at_rest) {
     if (displacement) return solve_chains(d = *displacement, steps);
-    return coupled_equilibrium(*wrench, d, steps);
+    return have_K = coupled_equilibrium(*wrench, d, K, steps, false);
   }
-  // The load in n equal increments, each from the previous one's equilibrium: n = 1 first (the
+  // Under a wrench, first the coupled iteration from rest (its first step is the linear response),
+  // kept where every Newton step reduces the residuals.
+  if (wrench && (have_K = coupled_equilibrium(*wrench, d, K, steps, true))) return true;
+  // Then the load in n equal increments, each from the previous one's equilibrium: n = 1 first (the
   // reference's start from rest); where that does not converge, 2, 4 and 8 increments (the natural
   // branch followed from rest, which a far first Newton step can miss). Under a wrench the nested
-  // iteration's answer is then finished by the coupled one, as a warm start is: its Newton steps on
-  // all the unknowns reach the round-off floor (relative residuals ~1e-16, the nested iteration's
-  // ~1e-13), so that the two starts agree to the conditioning of the equilibrium, not to a
-  // tolerance (2e-10 apart in the deflection next to the buckling limit without it).
+  // iteration's answer is then finished by the coupled one: its Newton steps on all the unknowns
+  // reach the round-off floor (relative residuals ~1e-16, the nested iteration's ~1e-13), so that all
+  // starts agree to the conditioning of the equilibrium, not to a tolerance (2e-10 apart in the
+  // deflection next to the buckling limit without it).
   for (int n = 1; n <= 8; n *= 2) {
-    if (n > 1) reset_to_rest();
+    reset_to_rest();
     d.setZero();
     bool ok = true;
     for (int k = 1; k <= n && ok; ++k) {
@@ -447,7 +464,7 @@ bool LoadedPlatform::equilibrium(const Vec6* displacement, const Vec6* wrench, b
       ok = displacement ? solve_chains(d = share * *displacement, steps)
                         : nested_equilibrium(share * *wrench, d, K, steps);
     }
-    if (ok) return displacement || coupled_equilibrium(*wrench, d, steps);
+    if (ok) return displacement || (have_K = coupled_equilibrium(*wrench, d, K, steps, false));
   }
   // Last, under a wrench, the coupled iteration itself from rest, in the same increments: where a
   // chain's own iteration fails on the way (measured: a 3-PRPaR corner under 5 kN, which warm starts
@@ -456,8 +473,9 @@ bool LoadedPlatform::equilibrium(const Vec6* displacement, const Vec6* wrench, b
     reset_to_rest();
     d.setZero();
     bool ok = true;
-    for (int k = 1; k <= n && ok; ++k) ok = coupled_equilibrium(static_cast<double>(k) / n * *wrench, d, steps);
-    if (ok) return true;
+    for (int k = 1; k <= n && ok; ++k)
+      ok = coupled_equilibrium(static_cast<double>(k) / n * *wrench, d, K, steps, false);
+    if (ok) return have_K = true;
   }
   return false;
 }

@@ -8,10 +8,11 @@
 // Differences from the vjm library, which the tests bound: the chain equilibrium is found by
 // Newton-Raphson on all of eq. (11) from the unloaded state (vjm first runs the paper's eq. (15)
 // iteration; both stop at the same 1e-12 residuals), with LU solves where vjm uses rank-revealing
-// decompositions that only matter at singular postures; under a wrench, where vjm's nested iteration
-// fails the load is applied in increments, and the answer is finished by the coupled iteration
-// (all chains and the platform at once, docs/vjm.md "Sweep kernels"), which alone continues a warm
-// start from a neighbouring posture.
+// decompositions that only matter at singular postures; under a wrench the equilibrium is the coupled
+// iteration's (all chains and the platform at once, docs/vjm.md "Sweep kernels"), from rest or from a
+// neighbouring posture's equilibrium, with vjm's nested iteration (in load increments where it fails)
+// as the fallback from rest, and the loaded stiffness is the Schur complement of its last Newton
+// step's matrices (the same eq. 21 by another elimination).
 #pragma once
 
 #include <array>
@@ -97,6 +98,7 @@ class FixedChain {
     Mat3 R = Mat3::Identity();  // constant factor
     Vec3 p = Vec3::Zero();
     Vec3 axis = Vec3::UnitZ();  // motion factor
+    int unit_axis = -1;         // k where axis is the coordinate axis e_k
     double offset = 0.0;
     bool passive = false;  // which coordinate drives it (index < 0: none)
     int index = -1;
@@ -147,7 +149,8 @@ struct LoadedPlatform {
 
  private:
   bool solve_chain(int i, const Pose& target, FixedChainState& s, int& steps) const;
-  bool coupled_equilibrium(const Vec6& wrench, Vec6& d, int& steps);
+  // K: the loaded platform stiffness at the solution, from the last Newton step's Schur complements.
+  bool coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps, bool monotone);
   bool nested_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps);
   // Every chain at the platform displaced by d, from its current state.
   bool solve_chains(const Vec6& d, int& steps);

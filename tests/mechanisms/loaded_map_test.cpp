@@ -115,9 +115,14 @@ TEST(LoadedMap, WarmStartedMapEqualsFromScratchSolves) {
       const Comparison c = compare_with_scratch(o, test_grid());
       EXPECT_EQ(c.compared, 11 * 11 * 6);
       EXPECT_EQ(c.unstable, 0);
-      // The warm start is the point: fewer Newton steps than from rest (measured 6.0-6.1 against
-      // 12.0-20.8 under a wrench, chord steps not counted; 5 against 9 displaced).
-      EXPECT_LT(c.warm_steps, c.scratch_steps);
+      // Displaced, the warm start saves Newton steps (measured 5 against 9). Under a wrench both starts
+      // take two Newton steps of the coupled iteration (6 chain steps: one at the start, whose chord
+      // steps follow, one at the solution for K; chord steps not counted), the warm one fewer chord
+      // steps, and never more Newton steps.
+      if (o.displacement)
+        EXPECT_LT(c.warm_steps, c.scratch_steps);
+      else
+        EXPECT_LE(c.warm_steps, c.scratch_steps);
     }
   }
 }
