@@ -498,7 +498,23 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
   // A prescribed displacement beyond kMaxWarmDeflection is solved from rest (part of the branch test
   // below, decided before the attempt).
   const bool within = !displacement || displacement->cwiseProduct(w).norm() <= kMaxWarmDeflection;
-  if (warm && solved_ && unloaded && within) {
+  // Under a wrench, |W (d - d0)| / (kMaxNonlinearity |W d0|) with d0 = K0^-1 W_ext the linear deflection
+  // (K0 the unloaded stiffness, scaled twists); 0 without a wrench or K0, infinite where K0 is not
+  // positive definite.
+  Vec6 d0 = Vec6::Zero();
+  bool have_d0 = false;
+  const auto nonlinearity = [&](const Vec6& deflection) {
+    if (!wrench || !unloaded) return 0.0;
+    if (!have_d0) {
+      const Mat6 K0t = w.cwiseInverse().asDiagonal() * *unloaded * w.cwiseInverse().asDiagonal();
+      const Eigen::LLT<Mat6> llt(0.5 * (K0t + K0t.transpose()));
+      if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+      d0 = llt.solve(wrench->cwiseQuotient(w));
+      have_d0 = true;
+    }
+    return (deflection.cwiseProduct(w) - d0).norm() / (kMaxNonlinearity * d0.norm());
+  };
+  if (warm && solved_ && unloaded && within && solved_nonlinearity_ <= kWarmNonlinearityShare) {
     // The predictor: the neighbour's equilibrium carried over (each passive joint keeps its deflection
     // from its nominal angle, each spring its deflection, each chain its wrench, the platform its
     // displacement), extrapolated linearly from the two points before when the path goes straight on
@@ -538,11 +554,7 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
       const Mat6 K0t = w.cwiseInverse().asDiagonal() * *unloaded * w.cwiseInverse().asDiagonal();
       const Mat6 margin = 0.5 * (Kt + Kt.transpose()) - kBranchSoftening * 0.5 * (K0t + K0t.transpose());
       if (found && Eigen::LLT<Mat6>(margin).info() != Eigen::Success) found = false;
-      if (found && wrench) {
-        const Eigen::LLT<Mat6> llt(0.5 * (K0t + K0t.transpose()));
-        const Vec6 d0 = llt.solve(wrench->cwiseQuotient(w));
-        found = llt.info() == Eigen::Success && (d.cwiseProduct(w) - d0).norm() <= kMaxNonlinearity * d0.norm();
-      }
+      if (found && wrench) found = nonlinearity(d) <= 1.0;
       for (int i = 0; i < num_chains && found; ++i) {
         const FixedChain& c = chains[i];
         const int m = c.num_virtual();
@@ -588,6 +600,7 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     solved_wrench_[i] = states_[i].wrench;
   }
   solved_d_ = d;
+  solved_nonlinearity_ = nonlinearity(d);
 }
 
 }  // namespace kinestat::mechanisms::fixed_vjm

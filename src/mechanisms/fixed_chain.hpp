@@ -34,6 +34,10 @@ inline constexpr double kBranchSoftening = 0.8;
 // Under a wrench, nor where its deflection d departs from the linear one d0 = K0^-1 W_ext by more
 // than this share, |W (d - d0)| <= kMaxNonlinearity |W d0| (scaled twists).
 inline constexpr double kMaxNonlinearity = 0.05;
+// Nor is a warm start tried after a point whose deflection departed from the linear one by more than
+// this share of that bound: the next point would most likely fail the test and be solved from rest
+// besides (both starts cost about the same).
+inline constexpr double kWarmNonlinearityShare = 0.8;
 // Under a prescribed displacement, none beyond this one (scaled twist: translation / length scale,
 // rotation in rad).
 inline constexpr double kMaxWarmDeflection = 0.01;
@@ -175,6 +179,8 @@ struct LoadedPlatform {
   std::array<CoordinateVector, kMaxChains> solved_deflection_, before_deflection_;
   std::array<Vec6, kMaxChains> solved_wrench_, before_wrench_;
   Vec6 solved_d_ = Vec6::Zero(), before_d_ = Vec6::Zero();
+  // The last kOk posture's departure from the linear deflection (evaluate(), in units of the bound).
+  double solved_nonlinearity_ = 0.0;
 };
 
 }  // namespace kinestat::mechanisms::fixed_vjm
