@@ -186,18 +186,16 @@ class RobotReader : public YamlFields {
 
   // A 6x6 spring: `matrix` (6 rows, file units: N/mm, N/rad, N mm/rad for mm-N-s) or `diagonal`
   // (6 numbers), with optional `axes: {x: [..], y: [..]}` (default: `default_axes`).
-  // A link's may instead be `fea:` (the keys of fea_request, io/yaml_fields.hpp): only what to
-  // compute (mechanisms::resolve_robot_fea_springs); its stiffness is NaN until then. `fea_item`
-  // names it in messages; empty: a joint's spring, which cannot be `fea:`.
+  // Or `fea:` (the keys of fea_request, io/yaml_fields.hpp): only what to compute
+  // (mechanisms::resolve_robot_fea_springs); its stiffness is NaN until then. `fea_item` names it in
+  // messages.
   RobotSpring spring(const YAML::Node& n, const std::string& item, const Mat3& default_axes,
-                     const std::string& fea_item = "") {
+                     const std::string& fea_item) {
     check_map(n, item, {"matrix", "diagonal", "fea", "axes"});
     RobotSpring s;
     s.label = item;
     s.axes = default_axes;
     if (const YAML::Node f = n["fea"]; f.IsDefined()) {
-      if (fea_item.empty())
-        fail(f, item, "a joint's spring is a `matrix` or `diagonal`; `fea:` is a link's (a link's mesh)");
       if (n["matrix"].IsDefined() || n["diagonal"].IsDefined())
         fail(n, item, "give one of 'matrix', 'diagonal' or 'fea'");
       s.fea = fea_request(*this, f, fea_item, u_);
@@ -221,7 +219,7 @@ class RobotReader : public YamlFields {
       return x * u_.force * dscale(i) * dscale(j);
     };
     if (n["matrix"].IsDefined() == n["diagonal"].IsDefined())
-      fail(n, item, fmt::format("give one of 'matrix' or 'diagonal'{}", fea_item.empty() ? "" : " or 'fea'"));
+      fail(n, item, "give one of 'matrix', 'diagonal' or 'fea'");
     s.stiffness.setZero();
     if (const YAML::Node k = n["matrix"]; k.IsDefined()) {
       if (!k.IsSequence() || k.size() != 6) fail(k, item, "'matrix' must be 6 rows of 6 numbers");
@@ -361,7 +359,7 @@ class RobotReader : public YamlFields {
           Sign::kPositive);
     }
     if (const YAML::Node s = n["spring"]; s.IsDefined()) {
-      RobotSpring sp = spring(s, j.label, turn);
+      RobotSpring sp = spring(s, j.label, turn, label + " spring fea");
       if (s["axes"].IsDefined()) sp.axes = turn * sp.axes;
       j.spring = sp;
     }

@@ -1,8 +1,9 @@
-// The `fea:` link springs of a robot description (docs/robots.md): computed after reading, before
-// make_robot_model, through fea::compute_link_stiffness and its cache.
+// The `fea:` springs of a robot description's links and joints (docs/robots.md): computed after
+// reading, before make_robot_model, through fea::compute_link_stiffness and its cache.
 #include <fmt/format.h>
 
 #include <map>
+#include <variant>
 
 #include "kinestat/fea/link_stiffness_request.hpp"
 #include "kinestat/mechanisms/robot_model.hpp"
@@ -14,9 +15,10 @@ Status resolve_robot_fea_springs(RobotDescription& d, const std::function<void(c
   std::map<int, Mat6> computed;  // by file entry: a pattern's copies share their mesh and result
   for (RobotLeg& leg : d.legs)
     for (auto& item : leg.items) {
-      auto* link = std::get_if<RobotLink>(&item);
-      if (link == nullptr || !link->spring || !link->spring->fea) continue;
-      RobotSpring& s = *link->spring;
+      std::optional<RobotSpring>& spring =
+          std::visit([](auto& x) -> std::optional<RobotSpring>& { return x.spring; }, item);
+      if (!spring || !spring->fea) continue;
+      RobotSpring& s = *spring;
       if (s.stiffness.allFinite()) continue;  // resolved already
       if (const auto it = computed.find(s.fea_entry); s.fea_entry >= 0 && it != computed.end()) {
         s.stiffness = it->second;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 
 #include "robot_equations.hpp"
 
@@ -195,15 +196,17 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
     RobotLeg& leg = d.legs[l];
     int joints = 0;
     for (std::size_t i = 0; i < leg.items.size(); ++i) {
+      const std::optional<RobotSpring>& spring =
+          std::visit([](const auto& x) -> const std::optional<RobotSpring>& { return x.spring; }, leg.items[i]);
+      if (spring && !spring->stiffness.allFinite())
+        return Status::Invalid(spring->fea
+                                   ? fmt::format("{}: this `fea:` spring is not computed yet; resolve it first "
+                                                 "(mechanisms::resolve_robot_fea_springs, as the kinestat commands and "
+                                                 "robots.load do)",
+                                                 spring->fea_where)
+                                   : fmt::format("{}: {}: its spring is not finite", src, spring->label));
       if (auto* link = std::get_if<RobotLink>(&leg.items[i])) {
         scale = std::max(scale, link->to.norm());
-        if (link->spring && !link->spring->stiffness.allFinite())
-          return Status::Invalid(
-              link->spring->fea
-                  ? fmt::format("{}: this `fea:` spring is not computed yet; resolve it first "
-                                "(mechanisms::resolve_robot_fea_springs, as the kinestat commands and robots.load do)",
-                                link->spring->fea_where)
-                  : fmt::format("{}: {}: its spring is not finite", src, link->label));
         continue;
       }
       RobotJoint& j = std::get<RobotJoint>(leg.items[i]);

@@ -1,8 +1,8 @@
-// The `fea:` link springs of robot files (docs/robots.md, issue #19 item 1): a planar 3-RPR whose
-// links are the bar of meshes/bar.off, against the same robot with the links as `beam:` (within the
-// FEA-vs-beam tolerance of vjm_fea_spring_test) and with the FEA's 6x6 written in as a `matrix:`
-// (exact: the plumbing), and by the MSA (a coupled joint element); an unresolved spring refused by
-// make_robot_model, a missing mesh at read time, both by FILE:LINE.
+// The `fea:` springs of robot files (docs/robots.md, issue #19 item 1): a planar 3-RPR whose links
+// (then whose platform joints) are the bar of meshes/bar.off, against the same robot with the links
+// as `beam:` (within the FEA-vs-beam tolerance of vjm_fea_spring_test) and with the FEA's 6x6
+// written in as a `matrix:` (exact: the plumbing), and by the MSA (a coupled joint element); an
+// unresolved spring refused by make_robot_model, a missing mesh at read time, both by FILE:LINE.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -36,9 +36,10 @@ fs::path fresh_dir(const std::string& name) {
 }
 
 // A 3-RPR whose links (base joint to platform joint) are 200 mm long, the bar's length; rigid
-// actuators, so that the platform's compliance is the links'. `spring` is the link's `beam:` or
-// `spring:` entry, on line 14.
-std::string robot(const std::string& spring) {
+// actuators, so that the platform's compliance is the links' and the platform joints'. `spring` is
+// the link's `beam:` or `spring:` entry, on line 14 (none: a rigid link); `joint_spring` the platform
+// joint's `spring:` entry.
+std::string robot(const std::string& spring, const std::string& joint_spring = "") {
   return "robot: 3-RPR of bars\n"
          "units: mm-N-s\n"
          "params: {px: 25, py: 43.30127, a: px + sqrt(200^2 - py^2)}\n"
@@ -52,10 +53,11 @@ std::string robot(const std::string& spring) {
          "    chain:\n"
          "      - revolute: {at: [a, 0, 0], axis: [0, 0, 1]}\n"
          "      - prismatic: {at: [a, 0, 0], axis: [px - a, py, 0], actuated: true}\n"
-         "      - link: {to: [px, py, 0], length: 200, " +
-         spring +
+         "      - link: {to: [px, py, 0], length: 200" +
+         (spring.empty() ? "" : ", " + spring) +
          "}\n"
-         "      - revolute: {at: [px, py, 0], axis: [0, 0, 1]}\n";
+         "      - revolute: {at: [px, py, 0], axis: [0, 0, 1]" +
+         (joint_spring.empty() ? "" : ", " + joint_spring) + "}\n";
 }
 constexpr int kLinkLine = 14;
 const std::string kFea =
@@ -103,6 +105,26 @@ const Mat6& link_stiffness(const RobotModel& m, int leg) {
   return none;
 }
 
+// A 6x6 (SI) as a robot file's `spring: {matrix: ...}` in mm-N-s (N/mm, N, N mm/rad).
+std::string matrix_spring(const Mat6& K) {
+  std::string rows;
+  for (int i = 0; i < 6; ++i) {
+    rows += i ? ", [" : "[";
+    for (int j = 0; j < 6; ++j) {
+      const double scale = (i < 3 && j < 3) ? 1e-3 : (i >= 3 && j >= 3) ? 1e3 : 1.0;
+      rows += fmt::format("{}{:.17g}", j ? ", " : "", K(i, j) * scale);
+    }
+    rows += "]";
+  }
+  return "spring: {matrix: [" + rows + "]}";
+}
+
+int count_meshings(const std::vector<std::string>& stages) {
+  int meshings = 0;
+  for (const std::string& s : stages) meshings += s.find("meshing") != std::string::npos;
+  return meshings;
+}
+
 TEST(RobotFeaSpring, MatchesTheBeamRobotAndTheMatrixRobot) {
   const fs::path dir = fresh_dir("robot_fea_spring");
   fs::copy_file(kBar, dir / "bar.off");
@@ -111,9 +133,7 @@ TEST(RobotFeaSpring, MatchesTheBeamRobotAndTheMatrixRobot) {
   StatusOr<RobotModel> fea = build((dir / "fea.yaml").string(), &stages);
   ASSERT_TRUE(fea.ok()) << fea.status().message();
   // The three copies share one entry of the file: one mesh, one solve, the same 6x6.
-  int meshings = 0;
-  for (const std::string& s : stages) meshings += s.find("meshing") != std::string::npos;
-  EXPECT_EQ(meshings, 1) << fmt::format("{}", fmt::join(stages, " | "));
+  EXPECT_EQ(count_meshings(stages), 1) << fmt::format("{}", fmt::join(stages, " | "));
   const Mat6 K_link = link_stiffness(*fea, 0);
   EXPECT_EQ(link_stiffness(*fea, 1), K_link);
   EXPECT_EQ(link_stiffness(*fea, 2), K_link);
@@ -137,16 +157,7 @@ TEST(RobotFeaSpring, MatchesTheBeamRobotAndTheMatrixRobot) {
   }
 
   // The FEA's 6x6 written as the links' `matrix:` (N/mm, N, N mm/rad): the same robot to round-off.
-  std::string rows;
-  for (int i = 0; i < 6; ++i) {
-    rows += i ? ", [" : "[";
-    for (int j = 0; j < 6; ++j) {
-      const double scale = (i < 3 && j < 3) ? 1e-3 : (i >= 3 && j >= 3) ? 1e3 : 1.0;
-      rows += fmt::format("{}{:.17g}", j ? ", " : "", K_link(i, j) * scale);
-    }
-    rows += "]";
-  }
-  std::ofstream(dir / "matrix.yaml") << robot("spring: {matrix: [" + rows + "]}");
+  std::ofstream(dir / "matrix.yaml") << robot(matrix_spring(K_link));
   StatusOr<RobotModel> matrix = io::read_robot_model((dir / "matrix.yaml").string());
   ASSERT_TRUE(matrix.ok()) << matrix.status().message();
   const std::vector<Mat6> K_matrix = stiffness_at_postures(*matrix);
@@ -201,17 +212,42 @@ TEST(RobotFeaSpring, UnresolvedAndMissingMeshNamedByFileAndLine) {
       << missing.status().message();
   EXPECT_NE(missing.status().message().find("missing.off: no such mesh file"), std::string::npos)
       << missing.status().message();
+}
 
-  // A joint's spring is not a mesh's.
-  std::string text = robot("beam: {material: steel, section: bar}");
-  text.replace(text.find("axis: [0, 0, 1]}"), 16,
-               "axis: [0, 0, 1], spring: {fea: {mesh: " + kBar.string() +
-                   ", material: steel, clamp: x=0, "
-                   "reference: x=200}}}");
-  std::ofstream(path, std::ios::trunc) << text;
-  StatusOr<RobotDescription> joint = io::read_robot_description(path);
-  ASSERT_FALSE(joint.ok());
-  EXPECT_NE(joint.status().message().find("a link's"), std::string::npos) << joint.status().message();
+// A joint's `fea:` spring (a flexure hinge's mesh, say) is the mesh's 6x6 at the joint's point, in
+// the joint spring's axes: the 3-RPR with rigid links and the bar as the spring of each platform
+// joint equals the same robot with the FEA's 6x6 written as those joints' `matrix:` (the plumbing:
+// to round-off), by the VJM and by the MSA (a coupled joint element, held to robot_msa_test's 1e-9).
+TEST(RobotFeaSpring, JointSpringIsItsMatrix) {
+  const fs::path dir = fresh_dir("robot_fea_joint_spring");
+  fs::copy_file(kBar, dir / "bar.off");
+  std::ofstream(dir / "fea.yaml") << robot("", kFea);
+  std::vector<std::string> stages;
+  StatusOr<RobotModel> fea = build((dir / "fea.yaml").string(), &stages);
+  ASSERT_TRUE(fea.ok()) << fea.status().message();
+  EXPECT_EQ(count_meshings(stages), 1) << fmt::format("{}", fmt::join(stages, " | "));
+  std::vector<Mat6> K_joint;
+  for (int leg = 0; leg < 3; ++leg)
+    for (const auto& item : fea->description().legs[leg].items)
+      if (const auto* j = std::get_if<RobotJoint>(&item); j && j->spring) K_joint.push_back(j->spring->stiffness);
+  ASSERT_EQ(K_joint.size(), 3u);
+  EXPECT_EQ(K_joint[1], K_joint[0]);
+  EXPECT_EQ(K_joint[2], K_joint[0]);
+  EXPECT_GT(K_joint[0](0, 0), 0.0);
+
+  std::ofstream(dir / "matrix.yaml") << robot("", matrix_spring(K_joint[0]));
+  StatusOr<RobotModel> matrix = io::read_robot_model((dir / "matrix.yaml").string());
+  ASSERT_TRUE(matrix.ok()) << matrix.status().message();
+  const std::vector<Mat6> K_fea = stiffness_at_postures(*fea), K_matrix = stiffness_at_postures(*matrix);
+  const std::vector<Mat6> K_msa = stiffness_at_postures(*fea, true);
+  double worst = 0.0;
+  for (std::size_t p = 0; p < K_fea.size(); ++p) {
+    EXPECT_LT((K_fea[p] - K_matrix[p]).norm() / K_fea[p].norm(), 1e-12) << "posture " << p;
+    const double diff = (K_msa[p] - K_fea[p]).norm() / K_fea[p].norm();
+    EXPECT_LT(diff, 1e-9) << "posture " << p;
+    worst = std::max(worst, diff);
+  }
+  fmt::print("fea joints: worst relative difference MSA - VJM over 3 postures: {:.1e}\n", worst);
 }
 
 }  // namespace

@@ -52,9 +52,9 @@ struct RobotSpring {
   std::string label;             // names it in messages: "leg 2 link 1"
   Mat6 stiffness;                // dofs ux uy uz rx ry rz along `axes`: N/m, N/rad, N m/m, N m/rad
   Mat3 axes = Mat3::Identity();  // columns: the spring's x, y, z in base axes at home (orthonormal)
-  // A link's `fea:` spring (docs/robots.md): the FEA of a mesh whose axes are `axes` and whose
-  // reference point is the link's end; `stiffness` is NaN (refused by make_robot_model) until
-  // resolve_robot_fea_springs computes it.
+  // A `fea:` spring (docs/robots.md): the FEA of a mesh whose axes are `axes` and whose reference
+  // point is the link's end or the joint's point; `stiffness` is NaN (refused by make_robot_model)
+  // until resolve_robot_fea_springs computes it.
   std::optional<fea::LinkStiffnessRequest> fea;
   std::string fea_where;  // "FILE:LINE: ITEM fea", for messages
   int fea_entry = -1;     // the file's `fea:` entry: the same in a leg pattern's copies (computed once)
@@ -238,7 +238,7 @@ class RobotModel {
   int inverse_sign_ = 1, direct_sign_ = 1;
 };
 
-// Computes the links' `fea:` springs not yet computed (fea::compute_link_stiffness: meshing and FEA,
+// Computes the links' and joints' `fea:` springs not yet computed (fea::compute_link_stiffness: meshing and FEA,
 // or the spring's cache), each file entry once (a pattern's copies share it: the turn moves the
 // axes, not the mesh). `progress` (optional) hears the long stages, `warning` (optional) what the
 // user must hear even when quiet ("FILE:LINE: ...: a rejected cache entry, recomputed"). A bad mesh
