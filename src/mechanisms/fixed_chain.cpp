@@ -80,6 +80,29 @@ void FixedChain::add_coupled(const Vec3& axis, int index, double coefficient) {
   add_motion(Kind::kRevolute, axis, 0.0, true, index, coefficient);
 }
 
+bool FixedChain::assign(const vjm::Chain& chain) {
+  clear();
+  if (static_cast<int>(chain.factors().size()) > kMaxFactors || chain.num_coordinates() > kMaxCoordinates) return false;
+  for (const vjm::Factor& f : chain.factors()) {
+    if (!f.is_motion) {
+      add_transform(f.transform.linear(), f.transform.translation());
+      continue;
+    }
+    const Kind kind = f.type == vjm::JointType::kRevolute ? Kind::kRevolute : Kind::kPrismatic;
+    const bool passive = f.variable && f.variable->kind == vjm::VariableKind::kPassive;
+    add_motion(kind, f.axis, f.offset, passive, f.variable ? f.variable->index : -1,
+               f.variable ? f.variable->coefficient : 1.0);
+  }
+  n_ = chain.num_passive();
+  m_ = chain.num_virtual();
+  for (int i = 0; i < n_; ++i) q0_[i] = chain.nominal_passive(i);
+  for (const vjm::Spring& sp : chain.springs()) {
+    const auto size = sp.stiffness.rows();
+    K_.block(sp.first, sp.first, size, size) = sp.stiffness;
+  }
+  return true;
+}
+
 CoordinateVector FixedChain::nominal() const {
   CoordinateVector x = CoordinateVector::Zero(n_ + m_);
   for (int i = 0; i < n_; ++i) x[i] = q0_[i];
@@ -448,6 +471,7 @@ bool LoadedPlatform::equilibrium(const Vec6* displacement, const Vec6* wrench, b
   // Under a wrench, first the coupled iteration from rest (its first step is the linear response),
   // kept where every Newton step reduces the residuals.
   if (wrench && (have_K = coupled_equilibrium(*wrench, d, K, steps, true))) return true;
+  if (!fallbacks) return displacement && solve_chains(d = *displacement, steps);
   // Then the load in n equal increments, each from the previous one's equilibrium: n = 1 first (the
   // reference's start from rest); where that does not converge, 2, 4 and 8 increments (the natural
   // branch followed from rest, which a far first Newton step can miss). Under a wrench the nested

@@ -21,12 +21,15 @@
 
 #include "kinestat/core/types.hpp"
 #include "kinestat/mechanisms/posture_kernel.hpp"
+#include "kinestat/vjm/chain.hpp"
 
 namespace kinestat::mechanisms::fixed_vjm {
 
-inline constexpr int kMaxFactors = 24;
-inline constexpr int kMaxCoordinates = 18;  // passive + virtual
-inline constexpr int kMaxChains = 3;
+// Room for the bundled robot files' legs (a Delta's 13 virtual and 5 passive coordinates, a
+// hexapod's six legs); a larger chain takes the vjm library's path (FixedChain::assign).
+inline constexpr int kMaxFactors = 32;
+inline constexpr int kMaxCoordinates = 24;  // passive + virtual
+inline constexpr int kMaxChains = 6;
 // A warm-started loaded equilibrium is kept where the load leaves more than this share of the
 // unloaded stiffness in every direction, of the platform and of every chain's springs
 // (LoadedPlatform::evaluate).
@@ -78,6 +81,10 @@ class FixedChain {
   int add_passive(const Vec3& axis, double nominal);
   // A revolute factor repeating passive joint `index` times `coefficient` (eq. 22's parallelogram).
   void add_coupled(const Vec3& axis, int index, double coefficient);
+
+  // The same chain as a vjm::Chain at its current posture (its factors, nominal passive coordinates
+  // and springs): false, and this chain unspecified, where it exceeds the capacity above.
+  bool assign(const vjm::Chain& chain);
 
   int num_passive() const { return n_; }
   int num_virtual() const { return m_; }
@@ -134,6 +141,9 @@ struct LoadedPlatform {
   double equilibrium_tolerance = 1e-12;  // vjm::EquilibriumOptions
   int max_iterations = 50;
   double rank_tolerance = 1e-10;  // vjm::StiffnessOptions
+  // From rest, where the first start fails, the nested iteration and the load in increments
+  // (equilibrium()); off, kFailed at once (a caller with a reference path of its own).
+  bool fallbacks = true;
 
   // The loaded stiffness and deflection with the platform displaced by `displacement` or under
   // `wrench` (exactly one given), into r: kFailed where the equilibrium is not found, kSingular

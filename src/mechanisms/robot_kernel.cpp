@@ -6,6 +6,7 @@
 #include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
+#include "mechanisms/fixed_chain.hpp"
 
 namespace kinestat::mechanisms {
 
@@ -73,14 +74,15 @@ class RobotKernel final : public PostureKernel {
     posture_ = start_ = previous_ = o_.model->home();
     if (o_.method == StiffnessMethod::kVjm) {
       chains_ = make_robot_vjm_chains(*o_.model);
-      // Unloaded: the regular path's data (K_theta factored once); a model whose chains do not
-      // validate leaves it empty, and every posture takes the reference path, which says why.
-      if (!o_.wrench && !o_.displacement && !vjm::prepare_regular_stiffness(chains_.chains, regular_).ok())
-        regular_.chains.clear();
+      // The regular path's data (K_theta factored once; loaded, the unloaded stiffness that the warm
+      // start's branch test needs); a model whose chains do not validate leaves it empty, and every
+      // posture takes the reference path, which says why.
+      if (!vjm::prepare_regular_stiffness(chains_.chains, regular_).ok()) regular_.chains.clear();
     }
   }
 
   PostureResult evaluate(const Vec3& point) override {
+    warm_ = false;
     posture_ = o_.model->home();
     set_task(point);
     predictable_ = false;
@@ -127,6 +129,7 @@ class RobotKernel final : public PostureKernel {
 
   // A solved neighbour: start_ (the previous posture) becomes the one before.
   PostureResult next(const Vec3& point, const KinematicsResult& k) {
+    warm_ = true;
     previous_ = start_;
     previous_point_ = point_;
     point_ = point;
@@ -134,7 +137,14 @@ class RobotKernel final : public PostureKernel {
     return finish(k);
   }
 
+  // A loaded warm start continues only a point that ended kOk.
   PostureResult finish(const KinematicsResult& k) {
+    PostureResult r = stiffness(k);
+    if (r.status != PostureStatus::kOk) loaded_.forget();
+    return r;
+  }
+
+  PostureResult stiffness(const KinematicsResult& k) {
     PostureResult r;
     solved_ = k.status == KinematicsStatus::kOk;
     r.singularity_measure = k.singularity_measure;
@@ -163,6 +173,7 @@ class RobotKernel final : public PostureKernel {
       // them, the same on the complement).
       if (K.ok() && K->compliance_defined && !K->stiffness_defined) K->stiffness = pseudo_inverse(K->compliance);
     } else if (o_.wrench || o_.displacement) {
+      if (loaded(r)) return r;
       auto state = o_.wrench ? vjm::platform_equilibrium_under_wrench(chains, *o_.wrench)
                              : vjm::platform_equilibrium(chains, *o_.displacement);
       if (!state.ok()) {
@@ -184,6 +195,31 @@ class RobotKernel final : public PostureKernel {
     return r;
   }
 
+  // The loaded mode by the sweep kernels' equilibrium (fixed_chain.hpp: the coupled iteration,
+  // warm-started along the map's path) on the legs' chains at this posture. Its kOk answers are
+  // kept (they equal the reference's within the equilibrium's conditioning: robot_test.cpp); every
+  // other point, and chains beyond its capacity, take the reference (vjm), whose statuses and rank
+  // decisions are the library's.
+  bool loaded(PostureResult& r) {
+    const std::vector<vjm::Chain>& chains = chains_.chains;
+    if (static_cast<int>(chains.size()) > fixed_vjm::kMaxChains) return false;
+    loaded_.num_chains = static_cast<int>(chains.size());
+    loaded_.fallbacks = false;  // the reference below is the fallback
+    for (std::size_t i = 0; i < chains.size(); ++i)
+      if (!loaded_.chains[i].assign(chains[i])) return false;
+    const bool regular =
+        !regular_.chains.empty() && vjm::regular_platform_unloaded_stiffness(chains, regular_, regular_result_);
+    PostureResult fast = r;
+    loaded_.evaluate(point_, o_.displacement ? &*o_.displacement : nullptr, o_.wrench ? &*o_.wrench : nullptr,
+                     regular ? &regular_result_.stiffness : nullptr, warm_, fast);
+    if (fast.status != PostureStatus::kOk) {
+      loaded_.forget();
+      return false;
+    }
+    r = fast;
+    return true;
+  }
+
   RobotKernelOptions o_;
   std::array<int, 3> axes_;
   RobotData data_;
@@ -197,7 +233,9 @@ class RobotKernel final : public PostureKernel {
   vjm::RegularStiffnessData regular_;
   CartesianStiffness regular_result_;
   bool solved_ = false;
-  msa::Workspace workspace_;  // MSA: the factorization's symbolic analysis, kept across postures
+  bool warm_ = false;                 // the posture continues the previous point's (evaluate_next)
+  fixed_vjm::LoadedPlatform loaded_;  // loaded mode: the legs' chains at each posture
+  msa::Workspace workspace_;          // MSA: the factorization's symbolic analysis, kept across postures
 };
 
 }  // namespace
