@@ -25,8 +25,8 @@
 
 namespace kinestat::mechanisms::fixed_vjm {
 
-// Room for the bundled robot files' legs (a Delta's 13 virtual and 5 passive coordinates, a
-// hexapod's six legs); a larger chain takes the vjm library's path (FixedChain::assign).
+// Room for the bundled robot files' legs (a hexapod's six, a Delta's with two beams each); a larger
+// chain takes the vjm library's path (FixedChain::assign).
 inline constexpr int kMaxFactors = 32;
 inline constexpr int kMaxCoordinates = 24;  // passive + virtual
 inline constexpr int kMaxChains = 6;
