@@ -78,6 +78,7 @@ class RobotKernel final : public PostureKernel {
       // start's branch test needs); a model whose chains do not validate leaves it empty, and every
       // posture takes the reference path, which says why.
       if (!vjm::prepare_regular_stiffness(chains_.chains, regular_).ok()) regular_.chains.clear();
+      loaded_.fallbacks = false;  // loaded(): the reference is the fallback
     }
   }
 
@@ -204,7 +205,6 @@ class RobotKernel final : public PostureKernel {
     const std::vector<vjm::Chain>& chains = chains_.chains;
     if (static_cast<int>(chains.size()) > fixed_vjm::kMaxChains) return false;
     loaded_.num_chains = static_cast<int>(chains.size());
-    loaded_.fallbacks = false;  // the reference below is the fallback
     for (std::size_t i = 0; i < chains.size(); ++i)
       if (!loaded_.chains[i].assign(chains[i])) return false;
     const bool regular =
