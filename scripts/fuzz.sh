@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer harness (fuzz/, built with ASan and UBSan by scripts/sanitize.sh in
-# build-sanitize/) for SECONDS (default 60), one after the other, from seed corpora made of the
+# build-sanitize/) for SECONDS (default 60), as many side by side as there are CPUs, from seed corpora made of the
 # bundled models, meshes and test inputs (docs/reliability.md). A crash, a sanitizer report, an
 # allocation above 1 GB, more than 2 GB of memory or an input running 30 s stops the run with the
 # input saved under build-sanitize/fuzz/artifacts/NAME/: fix the code, then keep the input as a
@@ -30,20 +30,32 @@ seed() {
   esac
 }
 
-status=0
-for name in structure_yaml vjm_yaml identification_yaml surface_mesh option_parsers frame3dd robot_yaml; do
-  seed "$name"
-  log=$root/$name.log
-  echo "fuzz: $name for ${seconds} s"
+# One harness: its report lines are printed when it ends (harnesses run side by side, one per CPU).
+run() {
+  local name=$1 log=$root/$1.log
   if ! build-sanitize/fuzz/fuzz_"$name" "$root/corpus/$name" -max_total_time="$seconds" -timeout=30 \
       -rss_limit_mb=2048 -malloc_limit_mb=1024 -print_final_stats=1 \
       -artifact_prefix="$root/artifacts/$name/" >"$log" 2>&1; then
     echo "fuzz: $name FAILED; the input is in $root/artifacts/$name/, the report in $log:"
     tail -40 "$log"
-    status=1
-    continue
+    return 1
   fi
   # The last status line: runs, coverage (edges) and features, corpus size, executions per second.
   grep -a -E "^#[0-9]+[[:space:]]+DONE" "$log" | tail -1 | sed "s/^/fuzz: $name: /"
+}
+
+jobs=$(scripts/cpus.sh)
+status=0
+pids=()
+for name in structure_yaml vjm_yaml identification_yaml surface_mesh option_parsers frame3dd robot_yaml; do
+  seed "$name"
+  echo "fuzz: $name for ${seconds} s"
+  run "$name" &
+  pids+=($!)
+  if [ ${#pids[@]} -ge "$jobs" ]; then
+    wait "${pids[0]}" || status=1
+    pids=("${pids[@]:1}")
+  fi
 done
+for pid in "${pids[@]}"; do wait "$pid" || status=1; done
 exit $status

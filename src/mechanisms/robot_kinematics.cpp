@@ -412,6 +412,24 @@ RobotJacobians robot_jacobians(const RobotModel& model, const RobotPosture& post
 KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotPosture& posture, RobotData& data,
                                bool continuation) {
   KinematicsResult out;
+  // Beyond a leg's reach (robot_model.hpp) in the task's position components: no closure exists, and
+  // a walk from home would only find that out after many failed Newton solves.
+  for (int l = 0; l < model.num_legs(); ++l) {
+    const RobotModel::Reach& reach = model.leg_reach(l);
+    if (!std::isfinite(reach.radius)) continue;
+    double distance = 0.0;
+    for (std::size_t t = 0; t < model.description().task.size(); ++t) {
+      const int c = static_cast<int>(model.description().task[t]);
+      if (c < 3) distance += std::pow(task(static_cast<int>(t)) - reach.origin(c), 2);
+    }
+    distance = std::sqrt(distance);
+    if (distance > reach.radius + 1e-9 * model.length_scale()) {
+      out.message =
+          fmt::format("beyond the reach of {}: its tool point is {:.6g} m from its first joint, at most {:.6g} m",
+                      model.description().legs[l].name, distance, reach.radius);
+      return out;
+    }
+  }
   auto same_branch = [&] { return sign_of(data.inverse_factors) == model.home_inverse_sign(); };
   if (!continuation) {
     if (!newton(model, task, posture, data, out.iterations) || !same_branch()) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include "robot_equations.hpp"
@@ -84,6 +85,28 @@ void add_spring(vjm::Chain& c, const RobotSpring& s) {
   c.add_transform(R, s.label + " (its axes)");
   c.add_spring(s.stiffness, s.label);
   c.add_transform(R.inverse(), s.label + " (back to base axes)");
+}
+
+// RobotModel::Reach of a kinematic chain: the tool point is origin + a sum of its translations after
+// the first motion, each turned by the rotations before it, so no farther than their lengths summed.
+RobotModel::Reach chain_reach(const vjm::Chain& c) {
+  RobotModel::Reach r;
+  vjm::Transform T = vjm::Transform::Identity();
+  bool moved = false;
+  for (const vjm::Factor& f : c.factors()) {
+    if (!f.is_motion) {
+      if (moved)
+        r.radius += f.transform.translation().norm();
+      else
+        T = T * f.transform;
+      continue;
+    }
+    if (f.type == JointType::kPrismatic)
+      r.radius += f.variable ? std::numeric_limits<double>::infinity() : std::abs(f.offset);
+    moved = true;
+  }
+  r.origin = T.translation();
+  return r;
 }
 
 }  // namespace
@@ -292,6 +315,7 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
   for (int l = 0; l < m.num_legs(); ++l) {
     vjm::Chain c(m.d_.legs[l].name);
     append_leg(m.d_.legs[l], m.home_.q.data() + m.leg_offset(l), true, c, m.d_.tool);
+    m.reach_.push_back(chain_reach(c));
     m.kinematic_.push_back(std::move(c));
   }
   // The Jacobians at home: full rank, else the free motion or the redundant equation is named.

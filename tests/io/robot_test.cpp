@@ -290,6 +290,24 @@ TEST(RobotFiles, FiveBarEqualsBuiltInKernel) {
   EXPECT_GT(ok, 50);
 }
 
+// A leg's reach (robot_model.hpp), from the geometry: the five-bar's left leg turns about A1 = (-r3, 0)
+// with links r1 + r2 = 0.2 m; 1 um beyond it the task is refused before any Newton step, with the
+// leg named. The hexapod's legs have prismatic actuators: no reach.
+TEST(RobotFiles, ReachOfALeg) {
+  const RobotModel m = load("five_bar.yaml");
+  EXPECT_LT((m.leg_reach(0).origin - Vec3(-0.1, 0, 0)).norm(), 1e-15);
+  EXPECT_NEAR(m.leg_reach(0).radius, 0.2, 1e-15);
+  EXPECT_FALSE(std::isfinite(load("hexapod.yaml").leg_reach(0).radius));
+  RobotData data = make_robot_data(m);
+  RobotPosture p = m.home();
+  VecX task(2);
+  task << 0.1 + 1e-6, 0.0;
+  const KinematicsResult k = solve_posture(m, task, p, data);
+  EXPECT_EQ(k.status, KinematicsStatus::kUnreachable);
+  EXPECT_EQ(k.iterations, 0);
+  EXPECT_NE(k.message.find("beyond the reach of left leg"), std::string::npos) << k.message;
+}
+
 // Each check of a robot file fails with its message on a planted fault.
 std::string write_robot(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + "/" + name;

@@ -225,6 +225,15 @@ class RobotModel {
   // is on another working (inverse) or assembly (direct) mode.
   int home_inverse_sign() const { return inverse_sign_; }
   int home_direct_sign() const { return direct_sign_; }
+  // A leg's reach: its tool point stays within `radius` (m) of `origin` (base axes), the point before
+  // its first motion, at every posture (the lengths of its rigid translations summed: rotations keep
+  // them); infinite for a leg with a prismatic or cylindrical coordinate. solve_posture refuses a task
+  // beyond it without a Newton step.
+  struct Reach {
+    Vec3 origin = Vec3::Zero();
+    double radius = 0.0;
+  };
+  const Reach& leg_reach(int leg) const { return reach_[leg]; }
 
  private:
   friend StatusOr<RobotModel> make_robot_model(RobotDescription d);
@@ -233,6 +242,7 @@ class RobotModel {
   std::vector<int> leg_offset_;
   std::vector<Coordinate> coords_;
   std::vector<vjm::Chain> kinematic_;
+  std::vector<Reach> reach_;
   double length_scale_ = 1.0;
   RobotPosture home_;
   int inverse_sign_ = 1, direct_sign_ = 1;
