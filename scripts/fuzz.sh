@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer harness (fuzz/, built with ASan and UBSan by scripts/sanitize.sh in
-# build-sanitize/) for SECONDS (default 60), as many side by side as there are CPUs, from seed corpora made of the
-# bundled models, meshes and test inputs (docs/reliability.md). A crash, a sanitizer report, an
+# build-sanitize/) for SECONDS (default 60), as many side by side as there are CPUs, from seed
+# corpora made of the bundled models, meshes and test inputs (docs/reliability.md). A crash, a sanitizer report, an
 # allocation above 1 GB, more than 2 GB of memory or an input running 30 s stops the run with the
 # input saved under build-sanitize/fuzz/artifacts/NAME/: fix the code, then keep the input as a
 # regression under tests/fuzz/NAME/ (ctest replays that folder in every build).
