@@ -296,18 +296,24 @@ void factor_scaled_inverse(RobotData& data) {
 
 // Damped Newton from `p` to the target; the scaled inverse Jacobian's factors at the solution stay
 // in data.inverse_factors. A residual that does not at least halve after a full (undamped) step,
-// from the third on, is not converging (Newton from a good start converges quadratically): the
-// caller shortens its step instead of iterating on.
+// from the third on, is not converging (Newton from a good start converges quadratically), nor one
+// that has not reached a new low in three iterations: the caller shortens its step instead of
+// iterating on.
 bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& data, int& iterations) {
-  double previous = std::numeric_limits<double>::infinity();
+  double previous = std::numeric_limits<double>::infinity(), best = previous;
   bool damped = true;
-  for (int it = 0; it < kMaxNewton; ++it) {
+  for (int it = 0, stalled = 0; it < kMaxNewton; ++it) {
     evaluate(m, p, task, data);
     if (!data.residual.allFinite()) return false;
     const double r = scaled_norm(m, data.residual, true);
     factor_scaled_inverse(data);
     if (r < kTolerance) return true;
     if (it >= 2 && !damped && r > 0.5 * previous) return false;
+    // Damped steps towards a task beyond the workspace's boundary wander without converging: three
+    // iterations in a row without a new smallest residual end the solve (the walk halves its step).
+    stalled = r < best ? 0 : stalled + 1;
+    if (stalled >= 3) return false;
+    best = std::min(best, r);
     previous = r;
     ++iterations;
     if (!data.inverse_factors.regular) return false;
@@ -469,18 +475,6 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
       }
     }
   }
-  // Joint limits (coordinates from home).
-  for (int k = 0; k < model.num_coordinates(); ++k) {
-    const auto& c = model.coordinates()[k];
-    const RobotJoint& j = model.joint(c);
-    if (j.limits.empty()) continue;
-    const auto [lo, hi] = j.limits[c.index];
-    if (posture.q(k) < lo || posture.q(k) > hi) {
-      out.message =
-          fmt::format("{} at {:.6g}, outside its limits [{:g}, {:g}]", model.coordinate_name(k), posture.q(k), lo, hi);
-      return out;
-    }
-  }
   // Newton's last evaluation is at this posture (a converged Newton returns right after it): its
   // scaled inverse Jacobian and factors are the solution's; the direct Jacobian is its columns.
   const int closure = model.num_legs() * model.equations_per_leg();
@@ -490,14 +484,29 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
   // The reciprocal condition numbers (LAPACK's 1-norm estimate, O(n^2) solves) of the length-scaled
   // Jacobians: a singular value decomposition per posture would cost more than the rest of the
   // kinematics.
-  out.singularity_measure = std::min(block_rcond(data.inverse_factors), block_rcond(data.direct_factors));
-  if (!(out.singularity_measure >= 1e-12)) {
-    out.singularity_measure = 0.0;
+  const double measure = std::min(block_rcond(data.inverse_factors), block_rcond(data.direct_factors));
+  const bool regular = measure >= 1e-12;
+  const bool home_assembly = sign_of(data.direct_factors) == model.home_direct_sign();
+  // Joint limits (coordinates from home) first: a closure beyond them is unreachable, whatever else.
+  for (int k = 0; k < model.num_coordinates(); ++k) {
+    const auto& c = model.coordinates()[k];
+    const RobotJoint& j = model.joint(c);
+    if (j.limits.empty()) continue;
+    const auto [lo, hi] = j.limits[c.index];
+    if (posture.q(k) < lo || posture.q(k) > hi) {
+      out.message =
+          fmt::format("{} at {:.6g}, outside its limits [{:g}, {:g}]", model.coordinate_name(k), posture.q(k), lo, hi);
+      out.beyond_limits = regular && home_assembly;
+      return out;
+    }
+  }
+  if (!regular) {
     out.status = KinematicsStatus::kSingular;
     out.message = "the closure equations lose rank here";
     return out;
   }
-  if (sign_of(data.direct_factors) != model.home_direct_sign()) {
+  out.singularity_measure = measure;
+  if (!home_assembly) {
     out.status = KinematicsStatus::kOtherBranch;
     out.message = "the platform is on another assembly mode than at home";
     return out;

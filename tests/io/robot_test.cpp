@@ -264,6 +264,42 @@ TEST(RobotFiles, DeltaMatchesClosedForm) {
   EXPECT_GT(compared, 100);
 }
 
+// A map crosses the region beyond a joint's limits by Newton from the neighbouring closure, with no
+// walk from home (RobotKernel::evaluate_next, KinematicsResult::beyond_limits): along serpentine rows
+// of two Delta slices reaching past its shoulders' +-80 deg, every point has the status of the walk
+// from home (evaluate), and the same stiffness where kOk (1e-9 relative: the closures agree to
+// Newton's 1e-12 tolerance, measured 1e-10 apart in the stiffness over the file's whole map).
+TEST(RobotFiles, DeltaMapBeyondLimitsEqualsWalksFromHome) {
+  RobotKernelOptions o;
+  o.model = std::make_shared<const RobotModel>(load("delta.yaml"));
+  const auto path = make_robot_kernel(o), single = make_robot_kernel(o);
+  RobotData data = make_robot_data(*o.model);
+  int beyond = 0, ok = 0, points = 0;
+  for (double z : {-0.55, -0.95})
+    for (int j = 0; j <= 16; ++j)
+      for (int n = 0; n <= 16; ++n) {
+        const int i = j % 2 == 0 ? n : 16 - n;
+        const Vec3 point(-0.4 + 0.05 * i, -0.4 + 0.05 * j, z);
+        const PostureResult r = points++ == 0 ? path->evaluate(point) : path->evaluate_next(point);
+        const PostureResult e = single->evaluate(point);
+        ASSERT_EQ(r.status, e.status) << point.transpose();
+        if (e.status == PostureStatus::kOk) {
+          ++ok;
+          EXPECT_LT((r.stiffness - e.stiffness).norm(), 1e-9 * e.stiffness.norm()) << point.transpose();
+        }
+        RobotPosture p = o.model->home();
+        const KinematicsResult k = solve_posture(*o.model, point, p, data);
+        if (k.beyond_limits) {
+          ++beyond;
+          EXPECT_EQ(k.status, KinematicsStatus::kUnreachable);
+          EXPECT_NE(k.message.find("outside its limits"), std::string::npos) << k.message;
+        }
+      }
+  std::printf("Delta slices: %d points, %d ok, %d beyond the shoulders' limits\n", points, ok, beyond);
+  EXPECT_GT(ok, 100);
+  EXPECT_GT(beyond, 20);
+}
+
 // The generic five-bar and the built-in kernel's VJM (working mode +-, assembly up: the file's home
 // drawing) at every point of a grid: the same status, and the same 6x6 to 1e-9 relative.
 TEST(RobotFiles, FiveBarEqualsBuiltInKernel) {

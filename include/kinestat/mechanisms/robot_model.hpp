@@ -191,6 +191,9 @@ struct KinematicsResult {
   // of the inverse kinematics' (legs, Type 1) and the direct kinematics' (platform, Type 2); 0 at a
   // singularity.
   double singularity_measure = 0.0;
+  // kUnreachable only because a joint is beyond its limits: the loop closes at `posture` on home's
+  // working and assembly modes, regular (a start for a neighbouring task's Newton).
+  bool beyond_limits = false;
   std::string message;  // why, when not kOk
 };
 
