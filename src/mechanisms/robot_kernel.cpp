@@ -95,9 +95,10 @@ class RobotKernel final : public PostureKernel {
   // the last one) from the linear extrapolation of the last two postures, whose error is second
   // order in the step (a Newton iteration fewer). A start that fails is retried from the previous
   // posture, then by the walk from home: the same branch tests accept the answer either way. A
-  // closure on home's branch beyond a joint's limits is the point's answer too (unreachable, with no
-  // walk from home, which would end at the same closure) and the next point's start: a map crosses
-  // the region beyond the limits as it crosses the reachable one.
+  // regular closure on home's working mode beyond a joint's limits or on another assembly mode is
+  // the point's answer too (unreachable, with no walk from home, which would end at the same
+  // closure: KinematicsResult::closed) and the next point's start: a map crosses those regions as
+  // it crosses the reachable one.
   PostureResult evaluate_next(const Vec3& point) override {
     if (!solved_) return evaluate(point);
     start_ = posture_;
@@ -109,11 +110,11 @@ class RobotKernel final : public PostureKernel {
       posture_.tool.translation() = 2.0 * start_.tool.translation() - previous_.tool.translation();
       posture_.tool.linear() = start_.tool.linear() * previous_.tool.linear().transpose() * start_.tool.linear();
       const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
-      if (closed(k)) return next(point, k);
+      if (k.closed) return next(point, k);
       posture_ = start_;
     }
     const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
-    if (closed(k)) return next(point, k);
+    if (k.closed) return next(point, k);
     posture_ = start_;
     return evaluate(point);
   }
@@ -130,9 +131,6 @@ class RobotKernel final : public PostureKernel {
     for (int a = 0; a < 3; ++a)
       if (axes_[a] >= 0) task_(axes_[a]) = point(a);
   }
-
-  // A closure on home's branch: kOk, or beyond a joint's limits.
-  static bool closed(const KinematicsResult& k) { return k.status == KinematicsStatus::kOk || k.beyond_limits; }
 
   // A solved neighbour: start_ (the previous posture) becomes the one before.
   PostureResult next(const Vec3& point, const KinematicsResult& k) {
@@ -153,7 +151,7 @@ class RobotKernel final : public PostureKernel {
 
   PostureResult stiffness(const KinematicsResult& k) {
     PostureResult r;
-    solved_ = closed(k);
+    solved_ = k.closed;
     r.singularity_measure = k.singularity_measure;
     if (k.status == KinematicsStatus::kUnreachable || k.status == KinematicsStatus::kOtherBranch) return r;
     r.status = PostureStatus::kSingular;
@@ -238,7 +236,7 @@ class RobotKernel final : public PostureKernel {
   RobotVjmChains chains_;  // VJM: the legs' chains, moved to each posture
   vjm::RegularStiffnessData regular_;
   CartesianStiffness regular_result_;
-  bool solved_ = false;               // posture_ closes on home's branch (closed()): the next start
+  bool solved_ = false;               // posture_ closes on home's working mode: the next start
   bool warm_ = false;                 // the posture continues the previous point's (evaluate_next)
   fixed_vjm::LoadedPlatform loaded_;  // loaded mode: the legs' chains at each posture
   msa::Workspace workspace_;          // MSA: the factorization's symbolic analysis, kept across postures

@@ -485,8 +485,7 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
   // Jacobians: a singular value decomposition per posture would cost more than the rest of the
   // kinematics.
   const double measure = std::min(block_rcond(data.inverse_factors), block_rcond(data.direct_factors));
-  const bool regular = measure >= 1e-12;
-  const bool home_assembly = sign_of(data.direct_factors) == model.home_direct_sign();
+  out.closed = measure >= 1e-12;
   // Joint limits (coordinates from home) first: a closure beyond them is unreachable, whatever else.
   for (int k = 0; k < model.num_coordinates(); ++k) {
     const auto& c = model.coordinates()[k];
@@ -496,17 +495,16 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
     if (posture.q(k) < lo || posture.q(k) > hi) {
       out.message =
           fmt::format("{} at {:.6g}, outside its limits [{:g}, {:g}]", model.coordinate_name(k), posture.q(k), lo, hi);
-      out.beyond_limits = regular && home_assembly;
       return out;
     }
   }
-  if (!regular) {
+  if (!out.closed) {
     out.status = KinematicsStatus::kSingular;
     out.message = "the closure equations lose rank here";
     return out;
   }
   out.singularity_measure = measure;
-  if (!home_assembly) {
+  if (sign_of(data.direct_factors) != model.home_direct_sign()) {
     out.status = KinematicsStatus::kOtherBranch;
     out.message = "the platform is on another assembly mode than at home";
     return out;

@@ -139,8 +139,9 @@ void bind_model(py::module_& m) {
           "singularity_measure", [](const RobotSolution& s) { return s.result.singularity_measure; },
           "in [0, 1], 0 at a singularity (Type 1 or 2)")
       .def_property_readonly(
-          "beyond_limits", [](const RobotSolution& s) { return s.result.beyond_limits; },
-          "unreachable only because a joint is beyond its limits: q closes the loop on home's branch")
+          "closed", [](const RobotSolution& s) { return s.result.closed; },
+          "q closes the loop on home's working mode, regular: status 'ok', or 'unreachable' with a joint "
+          "beyond its limits, or 'other branch' (another assembly mode)")
       .def_property_readonly("iterations", [](const RobotSolution& s) { return s.result.iterations; })
       .def_property_readonly(
           "message", [](const RobotSolution& s) { return s.result.message; }, "why, when not ok")

@@ -103,10 +103,10 @@ legs:
 
 def test_solve_reports_failures_as_statuses(delta):
     s = delta.solve([0, 0, -2.0])  # 2 m below the base: out of reach
-    assert s.status == "unreachable" and not s.ok and s.message and not s.beyond_limits
+    assert s.status == "unreachable" and not s.ok and s.message and not s.closed
     assert s.kinematics_status == mech.KinematicsStatus.UNREACHABLE
     s = delta.solve([0.4, 0.4, -0.55])  # closes, with leg 3's shoulder at 81 deg (limits +-80)
-    assert s.status == "unreachable" and s.beyond_limits and "outside its limits" in s.message
+    assert s.status == "unreachable" and s.closed and "outside its limits" in s.message
     with pytest.raises(ks.InputError, match="3 task coordinates"):
         delta.solve([0, 0])
     with pytest.raises(ks.InputError, match="not finite"):

@@ -191,9 +191,10 @@ struct KinematicsResult {
   // of the inverse kinematics' (legs, Type 1) and the direct kinematics' (platform, Type 2); 0 at a
   // singularity.
   double singularity_measure = 0.0;
-  // kUnreachable only because a joint is beyond its limits: the loop closes at `posture` on home's
-  // working and assembly modes, regular (a start for a neighbouring task's Newton).
-  bool beyond_limits = false;
+  // The loop closes at `posture` on home's working mode (the inverse sign), both Jacobians regular:
+  // kOk, kUnreachable with a joint beyond its limits, or kOtherBranch (another assembly mode). Such
+  // a posture is a start for a neighbouring task's Newton (RobotKernel::evaluate_next).
+  bool closed = false;
   std::string message;  // why, when not kOk
 };
 
