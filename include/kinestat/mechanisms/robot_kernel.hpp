@@ -41,8 +41,9 @@ Status validate(const RobotKernelOptions& options);
 // vjm::platform_equilibrium*), or MSA (msa::cartesian_stiffness of robot_msa_structure at the
 // platform node; kFailed at every reachable point when the model has no MSA structure, e.g. a loop
 // of rigid ties: robot_msa_structure says why), with the kinematics of solve_posture: evaluate() walks from home
-// (continuation), evaluate_next() starts from the previous point (along a row of the path, from the extrapolation
-// of the last two postures) and falls back to evaluate().
+// (continuation), evaluate_next() starts from the previous point's closure (along a row of the path, from the
+// extrapolation of the last two postures; also a closure that was unreachable, KinematicsResult::closed) and
+// falls back to evaluate().
 // kUnreachable: no closure on home's branch (out of reach, joint limit, other working or assembly
 // mode); kSingular: the kinematics or the stiffness lose rank (a free direction); kFailed: no loaded
 // equilibrium. A rigid direction (no spring deforms it, e.g. rigid legs holding the orientation)
