@@ -294,8 +294,13 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
   for (int i = 0; i < num_chains; ++i) wc[i] = twist_scale(chains[i].length_scale());
   std::array<BorderedMatrix, kMaxChains> lu;
   std::array<std::array<int, kMaxCoordinates + 6>, kMaxChains> perm;
-  using Solutions = Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7>;
-  std::array<Solutions, kMaxChains> sols;
+  // Per chain, L^-1 P of the residual (column 0) and of the target's six unit moves (columns 1-6),
+  // and the last six rows of U^-1 of column 0 (the wrench's step): the unit moves' full solutions are
+  // never formed, only their last six rows (the chain's dF/dt, into Ksum) and, once dt is known, the
+  // one solution of column 0 plus the moves times dt.
+  using Forward = Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7>;
+  std::array<Forward, kMaxChains> sols;
+  std::array<Vec6, kMaxChains> wrench_step;
   BorderedVector b;
   Mat6 Ksum = Mat6::Zero();
   Eigen::FullPivLU<Mat6> platform_lu;
@@ -330,9 +335,11 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
         const int N = chains[i].num_passive() + chains[i].num_virtual() + 6;
         b.resize(N);
         b << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
-        gauss_substitute(lu[i], perm[i], b);
-        if (!b.allFinite()) return false;
+        gauss_forward(lu[i], perm[i], b);
         sols[i].col(0) = b;
+        wrench_step[i] = b.tail<6>();
+        gauss_backward(lu[i].bottomRightCorner(6, 6), wrench_step[i], 6);
+        if (!wrench_step[i].allFinite()) return false;
       }
     } else {
       if (!last && newton_steps >= kMaxNewtonSteps) return false;
@@ -345,13 +352,16 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
         c.hessian(lin[i].walk, states_[i].wrench, lin[i].H);
         newton_matrix(c, wc[i], lin[i], lu[i]);
         if (!gauss_factor(lu[i], perm[i])) return false;
-        Solutions& x = sols[i];
+        Forward& x = sols[i];
         x.setZero(N, 7);
         x.col(0) << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
         x.topRightCorner<6, 6>() = wc[i].asDiagonal();  // the target moved by a unit twist
-        gauss_substitute(lu[i], perm[i], x);
-        if (!x.allFinite()) return false;
-        Ksum += wc[i].asDiagonal() * x.bottomRightCorner<6, 6>();
+        gauss_forward(lu[i], perm[i], x);
+        Eigen::Matrix<double, 6, 7> last = x.bottomRows<6>();
+        gauss_backward(lu[i].bottomRightCorner(6, 6), last, 6);
+        if (!last.allFinite()) return false;
+        wrench_step[i] = last.col(0);
+        Ksum += wc[i].asDiagonal() * last.rightCols<6>();
       }
       platform_lu.compute(w.cwiseInverse().asDiagonal() * Ksum * w.cwiseInverse().asDiagonal());
       if (!platform_lu.isInvertible()) return false;
@@ -359,15 +369,17 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
       steps += num_chains;  // newton_iterations counts the factorizations
     }
     Vec6 F0 = Vec6::Zero();
-    for (int i = 0; i < num_chains; ++i) F0 += states_[i].wrench + sols[i].col(0).tail<6>().cwiseProduct(wc[i]);
+    for (int i = 0; i < num_chains; ++i) F0 += states_[i].wrench + wrench_step[i].cwiseProduct(wc[i]);
     const Vec6 dt = platform_lu.solve((wrench - F0).cwiseQuotient(w)).cwiseQuotient(w);
     if (!dt.allFinite()) return false;
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
       const int nm = chains[i].num_passive() + chains[i].num_virtual();
-      const auto& x = sols[i];
-      s.x += x.col(0).head(nm) + x.topRightCorner(nm, 6) * dt;
-      s.wrench += (x.col(0).tail<6>() + x.bottomRightCorner<6, 6>() * dt).cwiseProduct(wc[i]);
+      b = sols[i].col(0) + sols[i].rightCols<6>() * dt;
+      gauss_backward(lu[i], b, b.size());
+      if (!b.allFinite()) return false;
+      s.x += b.head(nm);
+      s.wrench += b.tail<6>().cwiseProduct(wc[i]);
     }
     d = pose_difference(displace(displace(nominal_[0], d), dt), nominal_[0]);
     if (last) break;

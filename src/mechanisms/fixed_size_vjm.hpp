@@ -80,23 +80,37 @@ bool gauss_factor(MatrixA& A, Perm& perm) {
   return true;
 }
 
+// gauss_substitute in two halves: the row exchanges and L^-1 (forward), then U^-1 (backward). With
+// `rows` < n, backward computes only the last `rows` rows of U^-1 B (they involve only U's last rows:
+// the 6 wrench unknowns of a chain's Newton system without the rest).
 template <class MatrixA, class Perm, class MatrixB>
-void gauss_substitute(const MatrixA& LU, const Perm& perm, MatrixB& B) {
+void gauss_forward(const MatrixA& LU, const Perm& perm, MatrixB& B) {
   const Eigen::Index n = LU.rows(), r = B.cols();
   for (Eigen::Index k = 0; k < n; ++k)
     if (perm[k] != k) B.row(perm[k]).swap(B.row(k));
-  for (Eigen::Index j = 0; j < r; ++j) {
+  for (Eigen::Index j = 0; j < r; ++j)
     for (Eigen::Index k = 0; k < n; ++k) {
       const double b = B(k, j);
       if (b != 0.0)
         for (Eigen::Index i = k + 1; i < n; ++i) B(i, j) -= LU(i, k) * b;
     }
-    for (Eigen::Index k = n - 1; k >= 0; --k) {
+}
+
+template <class MatrixA, class MatrixB>
+void gauss_backward(const MatrixA& LU, MatrixB& B, Eigen::Index rows) {
+  const Eigen::Index n = LU.rows(), r = B.cols(), first = n - rows;
+  for (Eigen::Index j = 0; j < r; ++j)
+    for (Eigen::Index k = n - 1; k >= first; --k) {
       const double x = B(k, j) /= LU(k, k);
       if (x != 0.0)
-        for (Eigen::Index i = 0; i < k; ++i) B(i, j) -= LU(i, k) * x;
+        for (Eigen::Index i = first; i < k; ++i) B(i, j) -= LU(i, k) * x;
     }
-  }
+}
+
+template <class MatrixA, class Perm, class MatrixB>
+void gauss_substitute(const MatrixA& LU, const Perm& perm, MatrixB& B) {
+  gauss_forward(LU, perm, B);
+  gauss_backward(LU, B, LU.rows());
 }
 
 template <class MatrixA, class MatrixB>
