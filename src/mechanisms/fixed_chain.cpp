@@ -338,7 +338,7 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
         gauss_forward(lu[i], perm[i], b);
         sols[i].col(0) = b;
         wrench_step[i] = b.tail<6>();
-        gauss_backward(lu[i].bottomRightCorner(6, 6), wrench_step[i], 6);
+        gauss_backward(lu[i].bottomRightCorner(6, 6), wrench_step[i]);
         if (!wrench_step[i].allFinite()) return false;
       }
     } else {
@@ -358,7 +358,7 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
         x.topRightCorner<6, 6>() = wc[i].asDiagonal();  // the target moved by a unit twist
         gauss_forward(lu[i], perm[i], x);
         Eigen::Matrix<double, 6, 7> last = x.bottomRows<6>();
-        gauss_backward(lu[i].bottomRightCorner(6, 6), last, 6);
+        gauss_backward(lu[i].bottomRightCorner(6, 6), last);
         if (!last.allFinite()) return false;
         wrench_step[i] = last.col(0);
         Ksum += wc[i].asDiagonal() * last.rightCols<6>();
@@ -376,7 +376,7 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
       FixedChainState& s = states_[i];
       const int nm = chains[i].num_passive() + chains[i].num_virtual();
       b = sols[i].col(0) + sols[i].rightCols<6>() * dt;
-      gauss_backward(lu[i], b, b.size());
+      gauss_backward(lu[i], b);
       if (!b.allFinite()) return false;
       s.x += b.head(nm);
       s.wrench += b.tail<6>().cwiseProduct(wc[i]);

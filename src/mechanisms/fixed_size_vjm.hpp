@@ -80,9 +80,9 @@ bool gauss_factor(MatrixA& A, Perm& perm) {
   return true;
 }
 
-// gauss_substitute in two halves: the row exchanges and L^-1 (forward), then U^-1 (backward). With
-// `rows` < n, backward computes only the last `rows` rows of U^-1 B (they involve only U's last rows:
-// the 6 wrench unknowns of a chain's Newton system without the rest).
+// gauss_substitute in two halves: the row exchanges and L^-1 (forward), then U^-1 (backward). Given
+// U's bottom-right k x k block and the forward result's last k rows, backward gives the last k rows of
+// A^-1 B alone (upper triangular: they involve only those rows of U), e.g. a chain's wrench step.
 template <class MatrixA, class Perm, class MatrixB>
 void gauss_forward(const MatrixA& LU, const Perm& perm, MatrixB& B) {
   const Eigen::Index n = LU.rows(), r = B.cols();
@@ -96,21 +96,21 @@ void gauss_forward(const MatrixA& LU, const Perm& perm, MatrixB& B) {
     }
 }
 
-template <class MatrixA, class MatrixB>
-void gauss_backward(const MatrixA& LU, MatrixB& B, Eigen::Index rows) {
-  const Eigen::Index n = LU.rows(), r = B.cols(), first = n - rows;
+template <class MatrixU, class MatrixB>
+void gauss_backward(const MatrixU& U, MatrixB& B) {
+  const Eigen::Index n = U.rows(), r = B.cols();
   for (Eigen::Index j = 0; j < r; ++j)
-    for (Eigen::Index k = n - 1; k >= first; --k) {
-      const double x = B(k, j) /= LU(k, k);
+    for (Eigen::Index k = n - 1; k >= 0; --k) {
+      const double x = B(k, j) /= U(k, k);
       if (x != 0.0)
-        for (Eigen::Index i = first; i < k; ++i) B(i, j) -= LU(i, k) * x;
+        for (Eigen::Index i = 0; i < k; ++i) B(i, j) -= U(i, k) * x;
     }
 }
 
 template <class MatrixA, class Perm, class MatrixB>
 void gauss_substitute(const MatrixA& LU, const Perm& perm, MatrixB& B) {
   gauss_forward(LU, perm, B);
-  gauss_backward(LU, B, LU.rows());
+  gauss_backward(LU, B);
 }
 
 template <class MatrixA, class MatrixB>
