@@ -614,15 +614,10 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
   r.status = PostureStatus::kSingular;
   if (!have_K && !platform_stiffness(K)) return;
   // vjm's aggregate: a singular value of the scaled K below rank_tolerance of the largest is a free
-  // direction (the compliance is undefined). sigma_min >= 1 / |K^-1|_F and sigma_max <= |K|_F
-  // certify most postures without the SVD, which decides the others (within a factor 6 of the
-  // tolerance, or K^-1 not finite).
+  // direction (the compliance is undefined).
   const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
-  const Mat6 Ct = Eigen::FullPivLU<Mat6>(Kt).inverse();
-  if (!(1.0 / Ct.norm() > rank_tolerance * Kt.norm())) {
-    const Vec6 sv = Eigen::JacobiSVD<Mat6>(Kt).singularValues();
-    if (!(sv[5] > rank_tolerance * sv[0])) return;
-  }
+  Mat6 Ct;
+  if (!regular_inverse(Kt, rank_tolerance, Ct)) return;
   r.status = PostureStatus::kOk;
   set_stiffness(r, K, w.cwiseInverse().asDiagonal() * Ct * w.cwiseInverse().asDiagonal());
   r.deflection = d;
