@@ -28,12 +28,11 @@ Mat6 transfer_compliance(const Mat6& G, const Vec3& r) {
 bool regular_inverse(const Mat6& Kt, double tolerance, Mat6& C) {
   // A FullPivLU that finds a lower rank would "invert" with the free variables set to zero: finite.
   const Eigen::FullPivLU<Mat6> lu(Kt);
-  if (lu.isInvertible()) {
-    C = lu.inverse();
-    if (1.0 / C.norm() > tolerance * Kt.norm()) return true;
-  }
+  if (!lu.isInvertible()) return false;
+  C = lu.inverse();
+  if (1.0 / C.norm() > tolerance * Kt.norm()) return true;
   const Vec6 sv = Eigen::JacobiSVD<Mat6>(Kt).singularValues();
-  return lu.isInvertible() && sv[5] > tolerance * sv[0];
+  return sv[5] > tolerance * sv[0];
 }
 
 void set_platform_result(const Mat6& K, const Vec6& w, const Vec6& load, PostureResult& r) {

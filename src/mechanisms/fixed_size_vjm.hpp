@@ -155,9 +155,9 @@ inline constexpr double kPivotRatioTolerance = 1e-10;
 
 // vjm's aggregate's rank test on a loaded platform stiffness Kt (scaled twists, not necessarily
 // symmetric): false where a singular value is at or below `tolerance` of the largest (a free
-// direction), else true with C = Kt^-1. sigma_min >= 1 / |Kt^-1|_F and sigma_max <= |Kt|_F certify
-// most matrices without the SVD, which decides the others (a ratio within a factor 6 of the
-// tolerance, or a rank below 6 by the LU's pivots).
+// direction) or the LU's pivots find a rank below 6, else true with C = Kt^-1. sigma_min >=
+// 1 / |Kt^-1|_F and sigma_max <= |Kt|_F certify most matrices without the SVD, which decides the
+// others (a ratio within a factor 6 of the tolerance).
 bool regular_inverse(const Mat6& Kt, double tolerance, Mat6& C);
 
 // Fills `r` from a platform stiffness K: kOk with the stiffness, the compliance (K^-1), the indices
