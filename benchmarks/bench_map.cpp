@@ -200,8 +200,9 @@ void unloaded_tables(const Settings& s) {
 }
 
 // The generic kernel of robot files (make_robot_kernel, models/robots/) along the map's serpentine
-// path: the five-bar and the Orthoglide 3-PUU beside their built-in kernels on the same grids (the
-// same model: tests/io/robot_test.cpp), the Delta and the hexapod over their files' workspaces.
+// path: the five-bar and the Orthoglide 3-PUU and 3-PRPaR beside their built-in kernels on the same
+// grids (the same models: tests/io/robot_test.cpp), the Delta and the hexapod over their files'
+// workspaces.
 void robot_table(const Settings& s) {
   fmt::print(
       "\ngeneric robot kernel (robot files), unloaded, along the serpentine path: postures/s on 1 core (wall, "
@@ -247,6 +248,9 @@ void robot_table(const Settings& s) {
       make_five_bar_kernel(fb).get());
   OrthoglideKernelOptions og;
   row("orthoglide_puu.yaml", grid_path(Vec3::Constant(-0.1), Vec3::Constant(0.1), {21, 21, 21}),
+      make_orthoglide_kernel(og).get());
+  og.architecture = OrthoglideArchitecture::kPRPaR;
+  row("orthoglide_prpar.yaml", grid_path(Vec3::Constant(-0.1), Vec3::Constant(0.1), {21, 21, 21}),
       make_orthoglide_kernel(og).get());
   row("delta.yaml", grid_path(Vec3(-0.4, -0.4, -1.0), Vec3(0.4, 0.4, -0.5), {33, 33, 21}), nullptr);
   row("hexapod.yaml", grid_path(Vec3(-0.15, -0.15, 0.7), Vec3(0.15, 0.15, 0.9), {21, 21, 11}), nullptr);

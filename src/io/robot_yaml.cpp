@@ -260,6 +260,15 @@ class RobotReader : public YamlFields {
     return R;
   }
 
+  BeamTheory beam_theory(const YAML::Node& b, const std::string& label) {
+    const YAML::Node t = b["theory"];
+    if (!t.IsDefined()) return BeamTheory::kEulerBernoulli;
+    const std::string name = text(t, label, "theory");
+    if (name == "timoshenko") return BeamTheory::kTimoshenko;
+    if (name != "euler-bernoulli") fail(t, label, "theory is euler-bernoulli (default) or timoshenko");
+    return BeamTheory::kEulerBernoulli;
+  }
+
   RobotLink link(const YAML::Node& n, const std::string& label, const Vec3& from, const Mat3& turn) {
     check_map(n, label, {"to", "length", "beam", "spring"});
     RobotLink l;
@@ -279,14 +288,7 @@ class RobotReader : public YamlFields {
       check_map(b, label + " beam", {"material", "section", "theory", "roll", "length", "x", "count"});
       const Material m = named(materials_, require(b, label, "material"), label, "material");
       const Section s = named(sections_, require(b, label, "section"), label, "section");
-      BeamTheory theory = BeamTheory::kEulerBernoulli;
-      if (const YAML::Node t = b["theory"]; t.IsDefined()) {
-        const std::string name = text(t, label, "theory");
-        if (name == "timoshenko")
-          theory = BeamTheory::kTimoshenko;
-        else if (name != "euler-bernoulli")
-          fail(t, label, "theory is euler-bernoulli (default) or timoshenko");
-      }
+      const BeamTheory theory = beam_theory(b, label);
       // `x` and `length`: an equivalent cantilever off the drawing (e.g. a foot whose compliance
       // stands for a carriage and its guide), at the link's end.
       const Vec3 x = b["x"].IsDefined() ? Vec3(turn * axis(b["x"], label, "x")) : dir;
@@ -327,7 +329,7 @@ class RobotReader : public YamlFields {
     RobotJoint j;
     j.type = kTypes.at(kind);
     j.label = fmt::format("{} ({}, {})", label, kind, source(n));
-    check_map(n, label, {"at", "axis", "axes", "to", "actuated", "stiffness", "spring", "limits"});
+    check_map(n, label, {"at", "axis", "axes", "to", "actuated", "stiffness", "spring", "limits", "bars"});
     j.at = turn * point(require(n, label, "at"), label, "at");
     const int naxes = j.type == RobotJointType::kSpherical ? 3 : j.type == RobotJointType::kUniversal ? 2 : 1;
     if (naxes == 1) {
@@ -346,6 +348,21 @@ class RobotReader : public YamlFields {
       j.to = turn * point(require(n, label, "to"), label, "to");
     else if (n["to"].IsDefined())
       fail(n["to"], label, "'to' belongs to a parallelogram");
+    if (const YAML::Node b = n["bars"]; b.IsDefined()) {
+      // Two bars from `at` to `to`, `width` apart, pinned about the axis at both plates.
+      if (j.type != RobotJointType::kParallelogram) fail(b, label, "'bars' belong to a parallelogram");
+      const std::string it = label + " bars";
+      check_map(b, it, {"material", "section", "theory", "width"});
+      RobotParallelogramBars bars;
+      bars.beam = RobotBeam{named(materials_, require(b, it, "material"), it, "material"),
+                            named(sections_, require(b, it, "section"), it, "section"), (j.to - j.at).norm(),
+                            beam_theory(b, it)};
+      bars.width = quantity(require(b, it, "width"), it, "width", Quantity::kLength, Sign::kPositive);
+      if (!(bars.beam.length > 0.0)) fail(b, it, "the bars have no length: `to` is at `at`");
+      bars.stiffness =
+          vjm::cantilever_spring(bars.beam.material, bars.beam.section, bars.beam.length, bars.beam.theory);
+      j.bars = bars;
+    }
     if (const YAML::Node a = n["actuated"]; a.IsDefined()) {
       if (!a.IsScalar() || (a.Scalar() != "true" && a.Scalar() != "false")) fail(a, label, "actuated: true or false");
       j.actuated = a.Scalar() == "true";

@@ -25,6 +25,36 @@ Mat6 transfer_compliance(const Mat6& G, const Vec3& r) {
   return out;
 }
 
+bool parallelogram_stiffness(const Mat6& bar, double length, double width, double c, double s, Mat6& K) {
+  Mat3 Ry;
+  Ry << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
+  const Vec3 t = length * Ry.col(0), y = Vec3::UnitY();
+  const Mat6 G = rotate6(bar, Ry);
+  K.setZero();
+  for (double side : {0.5, -0.5}) {
+    const Vec3 o2 = side * width * Vec3::UnitZ() + t;  // the distal pin
+    Eigen::Matrix<double, 6, 4> N;
+    N << line_force(Ry.col(0), o2, t), line_force(y, o2, t), couple(Vec3::UnitX()), couple(Vec3::UnitZ());
+    Mat6 Kb;
+    if (!chain_stiffness<4>(N, transfer_compliance(G, t - o2), Kb)) return false;
+    K += Kb;
+  }
+  Vec6 u;
+  u << Ry.col(2), Vec3::Zero();
+  K += K.topLeftCorner<3, 3>().trace() * u * u.transpose();
+  // At q = +-90 deg the bars lie on one line and nothing holds the plate's turn about y (its
+  // stiffness goes as cos^2 q): a pivot of the length-scaled K (twist_scale(length)) below
+  // kPivotRatioTolerance of its largest diagonal entry, as the kernels' singularity test.
+  const Vec6 w = twist_scale(length);
+  const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
+  const Eigen::LLT<Mat6> llt(Kt);
+  if (llt.info() != Eigen::Success) return false;
+  const double floor = kPivotRatioTolerance * Kt.diagonal().maxCoeff();
+  for (int i = 0; i < 6; ++i)
+    if (!(std::pow(llt.matrixLLT()(i, i), 2) > floor)) return false;
+  return true;
+}
+
 bool regular_inverse(const Mat6& Kt, double tolerance, Mat6& C) {
   // A FullPivLU that finds a lower rank would "invert" with the free variables set to zero: finite.
   const Eigen::FullPivLU<Mat6> lu(Kt);

@@ -35,6 +35,18 @@ inline Vec6 couple(const Vec3& m) {
   return w;
 }
 
+// The spring between a parallelogram's plates (the Pa joint of eq. 22) at bar angle q (c = cos q,
+// s = sin q): two bars of length L, `width` apart along z, pinned about y at both plates, each of
+// compliance `bar` in its own axes (x along the bar, y the pins' axis) as a cantilever. In the plates'
+// axes (x: the bars at q = 0, y: the pins, z = x y), about the distal plate's centre L R_y(q) e_x:
+// each bar transmits forces along itself and y and moments about x and z through its distal pin,
+// and the two add; along the plates' free translation u = R_y(q) e_z it adds k0 u u^T, k0 the
+// trace of the translational block (the passive q takes that motion, so k0 does not matter). This
+// is what mechanisms::parallelogram_spring derives by the VJM of the two bars. False where K is
+// singular (a pivot of the length-scaled K below kPivotRatioTolerance of its largest diagonal entry):
+// at q = +-90 deg the bars lie on one line and the plate turns freely about y.
+bool parallelogram_stiffness(const Mat6& bar, double length, double width, double c, double s, Mat6& K);
+
 // Twist scaling of vjm::twist_scale: W = diag(I/L, I).
 inline Vec6 twist_scale(double length_scale) {
   Vec6 w;

@@ -24,12 +24,6 @@ using fixed_vjm::transfer_compliance;
 
 Mat6 inverse_spd(const Mat6& K) { return fixed_vjm::spd_inverse<6>(Eigen::LLT<Mat6>(K)); }
 
-Mat3 rotation_y(double c, double s) {
-  Mat3 R;
-  R << c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c;
-  return R;
-}
-
 class OrthoglideKernel final : public PostureKernel {
  public:
   explicit OrthoglideKernel(const OrthoglideKernelOptions& o) : o_(o) {
@@ -169,30 +163,10 @@ class OrthoglideKernel final : public PostureKernel {
     return fixed_vjm::chain_stiffness<3>(N, S, K);
   }
 
-  // parallelogram_spring(model, q) for cos q = c, sin q = s: its two pinned bars (proximal pin at
-  // +-w/2 e_z, bar spring at the distal pin in the bar's axes R_y(q), distal plate centre
-  // L R_y(q) e_x), summed, plus k0 u u^T along the free translation u = R_y(q) e_z with k0 the trace
-  // of the translational block.
+  // parallelogram_spring(model, q) for cos q = c, sin q = s (fixed_size_vjm.hpp).
   bool parallelogram_stiffness(double c, double s, Mat6& K) const {
-    const double L = o_.model.link_length, width = o_.model.parallelogram_width;
-    const Mat3 Ry = rotation_y(c, s);
-    const Vec3 t = L * Ry.col(0), y = Vec3::UnitY();
-    const Mat6 bar = rotate6(bar_compliance_, Ry);
-    K.setZero();
-    for (double side : {0.5, -0.5}) {
-      // A bar pinned about y at both ends transmits forces along itself and y and moments about x
-      // and z, all through its distal pin o2.
-      const Vec3 o2 = side * width * Vec3::UnitZ() + t;
-      Eigen::Matrix<double, 6, 4> N;
-      N << line_force(Ry.col(0), o2, t), line_force(y, o2, t), couple(Vec3::UnitX()), couple(Vec3::UnitZ());
-      Mat6 Kb;
-      if (!fixed_vjm::chain_stiffness<4>(N, transfer_compliance(bar, t - o2), Kb)) return false;
-      K += Kb;
-    }
-    Vec6 u;
-    u << Ry.col(2), Vec3::Zero();
-    K += K.topLeftCorner<3, 3>().trace() * u * u.transpose();
-    return true;
+    return fixed_vjm::parallelogram_stiffness(bar_compliance_, o_.model.link_length, o_.model.parallelogram_width, c, s,
+                                              K);
   }
 
   PostureResult loaded(const Vec3& p, const Vec3& rho, const Mat6* unloaded, bool warm, PostureResult& r);

@@ -24,6 +24,11 @@ constexpr double kMinContinuationStep = 1e-3;
 
 int platform_components(const RobotModel& m) { return m.description().planar ? 3 : 6; }
 int platform_component(const RobotModel& m, int i) { return m.description().planar ? kPlanarComponents[i] : i; }
+// The platform unknown of a pose component (its inverse).
+int platform_unknown(const RobotModel& m, int component) {
+  return m.description().planar ? (component == 5 ? 2 : component) : component;
+}
+int closure_count(const RobotModel& m) { return m.closure_offset(m.num_legs()); }
 bool is_angle(TaskCoordinate c) { return c >= TaskCoordinate::kRx; }
 
 // Rotation angles (rx, ry, rz) of R = Rz(rz) Ry(ry) Rx(rx) and E with omega = E (rx', ry', rz').
@@ -49,31 +54,36 @@ bool unknown_is_length(const RobotModel& m, int u) {
   return t == RobotJointType::kPrismatic || (t == RobotJointType::kCylindrical && c.index == 1);
 }
 bool equation_is_length(const RobotModel& m, int r) {
-  const int e = m.equations_per_leg(), closure = m.num_legs() * e;
-  if (r < closure) return platform_component(m, r % e) < 3;
+  const int closure = closure_count(m);
+  if (r < closure) return m.closure_equations()[r].component < 3;
   return !is_angle(m.description().task[r - closure]);
 }
 
 // Residual and inverse Jacobian at (posture, task) into data.residual and data.jacobian.
 void evaluate(const RobotModel& m, const RobotPosture& p, const VecX& task, RobotData& data) {
-  const int n = m.num_coordinates(), e = m.equations_per_leg(), np = platform_components(m);
+  const int n = m.num_coordinates(), np = platform_components(m);
   const auto& d = m.description();
   data.residual.setZero();
   data.jacobian.setZero();
+  data.redundant_residual = 0.0;
   for (int l = 0; l < m.num_legs(); ++l) {
     const int off = m.leg_offset(l), nl = m.leg_coordinates(l);
     data.leg_q[l] = p.q.segment(off, nl);
     vjm::ChainJacobians& J = data.leg_jacobians[l];
     vjm::jacobians(m.kinematic_chain(l), data.leg_q[l], data.no_theta, J);
     const Vec6 diff = vjm::pose_difference(J.pose, p.tool);
-    for (int i = 0; i < e; ++i) {
-      const int comp = d.planar ? kPlanarComponents[i] : i;
-      data.residual(l * e + i) = diff(comp);
-      data.jacobian.row(l * e + i).segment(off, nl) = J.Jq.row(comp);
-      data.jacobian(l * e + i, n + i) = -1.0;
+    for (int r = m.closure_offset(l); r < m.closure_offset(l + 1); ++r) {
+      const int comp = m.closure_equations()[r].component;
+      data.residual(r) = diff(comp);
+      data.jacobian.row(r).segment(off, nl) = J.Jq.row(comp);
+      data.jacobian(r, n + platform_unknown(m, comp)) = -1.0;
     }
+    for (const RobotModel::ClosureEquation& c : m.redundant_equations())
+      if (c.leg == l)
+        data.redundant_residual =
+            std::max(data.redundant_residual, std::abs(diff(c.component)) / (c.component < 3 ? m.length_scale() : 1.0));
   }
-  const int closure = m.num_legs() * e;
+  const int closure = closure_count(m);
   const Vec3 a = angles(p.tool.linear());
   Mat3 Einv = Mat3::Identity();
   bool need_rates = false;
@@ -116,12 +126,14 @@ void apply_step(const RobotModel& m, const VecX& dx, RobotPosture& p) {
 // The block factorization of RobotBlockFactors (robot_model.hpp) of a matrix A of its structure.
 // Its equations are A's: the same unknowns, the same solution to round-off, a cost linear in the
 // legs (a dense LU of the Delta's 21 or the hexapod's 42 unknowns was a quarter of a map's time).
-void block_layout(RobotBlockFactors& f, int equations, int platform, const std::vector<int>& counts) {
-  f.equations = equations;
+void block_layout(RobotBlockFactors& f, const RobotModel& m, int platform, const std::vector<int>& counts) {
   f.platform = platform;
   f.legs.assign(counts.size(), {});
   int column = 0;
   for (std::size_t l = 0; l < counts.size(); ++l) {
+    const int leg = static_cast<int>(l);
+    f.legs[l].row = m.closure_offset(leg);
+    f.legs[l].equations = m.closure_offset(leg + 1) - m.closure_offset(leg);
     f.legs[l].column = column;
     f.legs[l].count = counts[l];
     column += counts[l];
@@ -134,13 +146,12 @@ void block_layout(RobotBlockFactors& f, int equations, int platform, const std::
 
 // False (and f.regular false) when a pivot is zero: A is singular (det A = +-prod det R det S).
 bool block_factor(const MatX& A, RobotBlockFactors& f) {
-  const int e = f.equations, np = f.platform, pc = f.size - np;
-  const int closure = static_cast<int>(f.legs.size()) * e;
+  const int np = f.platform, pc = f.size - np;
+  const int closure = f.legs.back().row + f.legs.back().equations;
   f.regular = false;
   int row = 0;
-  for (std::size_t l = 0; l < f.legs.size(); ++l) {
-    RobotBlockFactors::Leg& g = f.legs[l];
-    const int k = g.count, r0 = static_cast<int>(l) * e;
+  for (RobotBlockFactors::Leg& g : f.legs) {
+    const int k = g.count, r0 = g.row, e = g.equations;
     if (k > e || row + e - k > np) return false;  // not a valid model's structure (refused at home)
     g.R.setZero();
     g.R.topLeftCorner(e, k) = A.block(r0, g.column, e, k);
@@ -165,15 +176,14 @@ bool block_factor(const MatX& A, RobotBlockFactors& f) {
 
 // A x = b, x into b.
 void block_solve(RobotBlockFactors& f, VecX& b) {
-  const int e = f.equations, np = f.platform;
-  const int closure = static_cast<int>(f.legs.size()) * e;
+  const int np = f.platform;
+  const int closure = f.legs.back().row + f.legs.back().equations;
   RobotBlockFactors::SmallVector rhs(np);
   int row = 0;
   // Q^T b per leg: the first count rows stay in b's leg rows (they become the leg's unknowns), the
   // others are S's right-hand side.
-  for (std::size_t l = 0; l < f.legs.size(); ++l) {
-    RobotBlockFactors::Leg& g = f.legs[l];
-    const int k = g.count, r0 = static_cast<int>(l) * e;
+  for (RobotBlockFactors::Leg& g : f.legs) {
+    const int k = g.count, r0 = g.row, e = g.equations;
     for (int i = 0; i < e; ++i) {
       double t = 0.0;
       for (int j = 0; j < e; ++j) t += g.Q(j, i) * b(r0 + j);
@@ -185,9 +195,8 @@ void block_solve(RobotBlockFactors& f, VecX& b) {
   rhs.tail(np - row) = b.segment(closure, np - row);
   const RobotBlockFactors::SmallVector xp = f.lu.solve(rhs);
   b.tail(np) = xp;
-  for (std::size_t l = 0; l < f.legs.size(); ++l) {
-    RobotBlockFactors::Leg& g = f.legs[l];
-    const int k = g.count, r0 = static_cast<int>(l) * e;
+  for (RobotBlockFactors::Leg& g : f.legs) {
+    const int k = g.count, r0 = g.row;
     double y[6];
     for (int i = k - 1; i >= 0; --i) {  // R x_l = Q1^T b_l - G1 x_p
       double t = f.v(r0 + i);
@@ -202,12 +211,11 @@ void block_solve(RobotBlockFactors& f, VecX& b) {
 // A^T y = c, y into c: per leg R^T z1 = c_l, then S^T (z2 per leg, y_task) = c_p - sum G1^T z1,
 // and y_l = Q z.
 void block_solve_transpose(RobotBlockFactors& f, VecX& c) {
-  const int e = f.equations, np = f.platform;
-  const int closure = static_cast<int>(f.legs.size()) * e;
+  const int np = f.platform;
+  const int closure = f.legs.back().row + f.legs.back().equations;
   RobotBlockFactors::SmallVector cp = c.tail(np);
-  for (std::size_t l = 0; l < f.legs.size(); ++l) {
-    RobotBlockFactors::Leg& g = f.legs[l];
-    const int k = g.count, r0 = static_cast<int>(l) * e;
+  for (RobotBlockFactors::Leg& g : f.legs) {
+    const int k = g.count, r0 = g.row;
     double z[6];
     for (int i = 0; i < k; ++i) {  // R^T z1 = c_l
       double t = c(g.column + i);
@@ -220,9 +228,8 @@ void block_solve_transpose(RobotBlockFactors& f, VecX& c) {
   }
   const RobotBlockFactors::SmallVector w = f.lu.transpose().solve(cp);
   int row = 0;
-  for (std::size_t l = 0; l < f.legs.size(); ++l) {
-    RobotBlockFactors::Leg& g = f.legs[l];
-    const int k = g.count, r0 = static_cast<int>(l) * e;
+  for (RobotBlockFactors::Leg& g : f.legs) {
+    const int k = g.count, r0 = g.row, e = g.equations;
     double z[6];
     for (int i = 0; i < e; ++i) z[i] = i < k ? f.v(r0 + i) : w(row + i - k);
     row += e - k;
@@ -242,7 +249,7 @@ int block_det_sign(const RobotBlockFactors& f) {
   int sign = 1, later = 0;
   for (auto g = f.legs.rbegin(); g != f.legs.rend(); ++g) {
     if (g->reflections % 2) sign = -sign;
-    if (((f.equations - g->count) * later) % 2) sign = -sign;
+    if (((g->equations - g->count) * later) % 2) sign = -sign;
     later += g->count;
     for (int i = 0; i < g->count; ++i)
       if (g->R(i, i) < 0) sign = -sign;
@@ -348,11 +355,13 @@ int sign_of(const RobotBlockFactors& f) { return f.regular ? block_det_sign(f) :
 }  // namespace
 
 RobotData make_robot_data(const RobotModel& model) {
+  // Square but while make_robot_model chooses an overconstrained robot's equations.
   const int size = model.num_coordinates() + platform_components(model);
+  const int closure = closure_count(model), rows = closure + static_cast<int>(model.description().task.size());
   RobotData d;
-  d.residual = VecX::Zero(size);
+  d.residual = VecX::Zero(rows);
   d.step = VecX::Zero(size);
-  d.jacobian = MatX::Zero(size, size);
+  d.jacobian = MatX::Zero(rows, size);
   std::vector<int> coordinates, passive;
   for (int l = 0; l < model.num_legs(); ++l) {
     d.leg_q.push_back(VecX::Zero(model.leg_coordinates(l)));
@@ -364,18 +373,18 @@ RobotData make_robot_data(const RobotModel& model) {
     for (int k = model.leg_offset(l); k < model.leg_offset(l + 1); ++k)
       if (!model.actuated(model.coordinates()[k])) ++passive.back();
   }
-  d.row_scale.resize(size);
+  d.row_scale.resize(rows);
   d.column_scale.resize(size);
+  for (int i = 0; i < rows; ++i) d.row_scale(i) = equation_is_length(model, i) ? 1.0 / model.length_scale() : 1.0;
   for (int i = 0; i < size; ++i) {
-    d.row_scale(i) = equation_is_length(model, i) ? 1.0 / model.length_scale() : 1.0;
     d.column_scale(i) = unknown_is_length(model, i) ? model.length_scale() : 1.0;
     if (i >= model.num_coordinates() || !model.actuated(model.coordinates()[i])) d.direct_columns.push_back(i);
   }
-  const int closure = model.num_legs() * model.equations_per_leg(), direct = static_cast<int>(d.direct_columns.size());
-  d.scaled_inverse = MatX::Zero(size, size);
+  const int direct = static_cast<int>(d.direct_columns.size());
+  d.scaled_inverse = MatX::Zero(rows, size);
   d.direct = MatX::Zero(closure, direct);
-  block_layout(d.inverse_factors, model.equations_per_leg(), platform_components(model), coordinates);
-  block_layout(d.direct_factors, model.equations_per_leg(), platform_components(model), passive);
+  block_layout(d.inverse_factors, model, platform_components(model), coordinates);
+  block_layout(d.direct_factors, model, platform_components(model), passive);
   const int tasks = static_cast<int>(model.description().task.size());
   d.start = d.delta = d.target = VecX::Zero(tasks);
   d.trial = model.home();
@@ -408,7 +417,7 @@ void scaled_jacobians(const RobotModel& model, const RobotPosture& posture, Robo
   evaluate(model, posture, task, data);
   // Length-scaled, so that singular values compare m and rad.
   data.scaled_inverse.noalias() = data.row_scale.asDiagonal() * data.jacobian * data.column_scale.asDiagonal();
-  const int closure = model.num_legs() * model.equations_per_leg();
+  const int closure = closure_count(model);
   for (std::size_t k = 0; k < data.direct_columns.size(); ++k)
     data.direct.col(static_cast<int>(k)) = data.scaled_inverse.col(data.direct_columns[k]).head(closure);
 }
@@ -489,7 +498,16 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
   }
   // Newton's last evaluation is at this posture (a converged Newton returns right after it): its
   // scaled inverse Jacobian and factors are the solution's; the direct Jacobian is its columns.
-  const int closure = model.num_legs() * model.equations_per_leg();
+  // An overconstrained robot's redundant equations hold by its geometry, to the closure's tolerance
+  // (the equations solved fix the posture); a geometry that breaks one away from home is reported.
+  if (!(data.redundant_residual < 1e3 * kTolerance)) {
+    out.message = fmt::format(
+        "the legs close here but for their redundant constraints (off by {:.3g}, length-scaled): the robot's "
+        "over-constraint does not hold away from the drawing",
+        data.redundant_residual);
+    return out;
+  }
+  const int closure = closure_count(model);
   for (std::size_t k = 0; k < data.direct_columns.size(); ++k)
     data.direct.col(static_cast<int>(k)) = data.scaled_inverse.col(data.direct_columns[k]).head(closure);
   block_factor(data.direct, data.direct_factors);

@@ -9,6 +9,9 @@
 #include <limits>
 #include <variant>
 
+#include <Eigen/QR>
+
+#include "fixed_size_vjm.hpp"
 #include "robot_equations.hpp"
 
 namespace kinestat::mechanisms {
@@ -75,16 +78,24 @@ namespace {
 using vjm::JointType;
 
 // A spring in `axes` (columns in the current frame): turn into its frame, spring, turn back.
-void add_spring(vjm::Chain& c, const RobotSpring& s) {
+// A parallelogram's bars at q, NaN where they coincide (the VJM refuses it, naming the spring).
+Mat6 bars_spring(const RobotJoint& j, double q) {
+  const StatusOr<Mat6> K = robot_parallelogram_spring(j, q);
+  return K.ok() ? *K : Mat6::Constant(std::numeric_limits<double>::quiet_NaN());
+}
+
+// Returns the spring's index in the chain's springs().
+int add_spring(vjm::Chain& c, const RobotSpring& s) {
   if (s.axes.isIdentity(0.0)) {
     c.add_spring(s.stiffness, s.label);
-    return;
+  } else {
+    vjm::Transform R = vjm::Transform::Identity();
+    R.linear() = s.axes;
+    c.add_transform(R, s.label + " (its axes)");
+    c.add_spring(s.stiffness, s.label);
+    c.add_transform(R.inverse(), s.label + " (back to base axes)");
   }
-  vjm::Transform R = vjm::Transform::Identity();
-  R.linear() = s.axes;
-  c.add_transform(R, s.label + " (its axes)");
-  c.add_spring(s.stiffness, s.label);
-  c.add_transform(R.inverse(), s.label + " (back to base axes)");
+  return static_cast<int>(c.springs().size()) - 1;
 }
 
 // RobotModel::Reach of a kinematic chain: the tool point is origin + a sum of its translations after
@@ -173,6 +184,15 @@ void append_leg(const RobotLeg& leg, const double* q, bool kinematic, vjm::Chain
         chain.add_translation(j.to - j.at, j.label + " (bars)");
         chain.add_coupled(JointType::kRevolute, j.axes[0], v, -1.0, j.label + " (distal hinges, -q)");
         at = j.to;
+        if (!kinematic && j.bars) {
+          // The bars' spring at the distal plate, set per posture (set_robot_vjm_posture).
+          RobotSpring bars;
+          bars.label = j.label + " bars";
+          bars.stiffness = bars_spring(j, q[k - 1]);
+          bars.axes = robot_parallelogram_axes(j);
+          const int index = add_spring(chain, bars);
+          if (vjm_leg) vjm_leg->posture_springs.push_back({index, k - 1, static_cast<int>(&item - leg.items.data())});
+        }
         break;
       }
     }
@@ -203,7 +223,7 @@ std::vector<RobotItemFrames> robot_leg_frames(const RobotModel& model, int leg, 
 }
 
 StatusOr<RobotModel> make_robot_model(RobotDescription d) {
-  const std::string& src = d.source;
+  const std::string src = d.source;  // a copy: d moves into the model before the last checks
   auto invalid = [&](const std::string& what) { return Status::Invalid(fmt::format("{}: {}", src, what)); };
   if (d.legs.empty()) return invalid("a robot needs legs; add `legs:`");
   if (d.task.empty()) return invalid("`task:` names no coordinate; give e.g. [x, y, z]");
@@ -255,6 +275,16 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
               fmt::format("{}: a parallelogram cannot be actuated here; actuate the joint "
                           "before it",
                           j.label));
+        if (j.bars) {
+          if (std::abs((j.to - j.at).normalized().dot(j.axes[0])) > 1e-9)
+            return invalid(fmt::format("{}: its bars (`at` to `to`) must be normal to its axis", j.label));
+          if (!(j.bars->width > 0.0) || !std::isfinite(j.bars->width))
+            return invalid(fmt::format("{}: the bars' width {:g} must be positive", j.label, j.bars->width));
+          if (!j.bars->stiffness.allFinite() || Eigen::LLT<Mat6>(j.bars->stiffness).info() != Eigen::Success)
+            return invalid(fmt::format("{}: a bar's spring is not positive definite", j.label));
+        }
+      } else if (j.bars) {
+        return invalid(fmt::format("{}: only a parallelogram has bars", j.label));
       }
       if (j.actuated) {
         ++actuated;
@@ -299,14 +329,17 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
   m.num_q_ = static_cast<int>(m.coords_.size());
   const int e = d.planar ? 3 : 6;
   const int unknowns = m.num_q_ + e, equations = static_cast<int>(d.legs.size()) * e + static_cast<int>(d.task.size());
-  if (unknowns != equations)
+  if (unknowns > equations)
     return invalid(fmt::format(
         "the legs have {} joint coordinates and the platform {} pose components ({} unknowns), but the legs' closure "
-        "gives {} x {} equations and the task {} ({}): {}",
-        m.num_q_, e, unknowns, d.legs.size(), e, d.task.size(), equations,
-        unknowns > equations ? "the robot has idle motions (e.g. a leg with two spherical joints spins about itself); "
-                               "use a universal joint at one end"
-                             : "the legs over-constrain the platform; remove a constraint or add a joint"));
+        "gives {} x {} equations and the task {} ({}): the robot has idle motions (e.g. a leg with two spherical "
+        "joints spins about itself); use a universal joint at one end",
+        m.num_q_, e, unknowns, d.legs.size(), e, d.task.size(), equations));
+  for (int l = 0; l < static_cast<int>(d.legs.size()); ++l) {
+    m.closure_offset_.push_back(static_cast<int>(m.closure_.size()));
+    for (int i = 0; i < e; ++i) m.closure_.push_back({l, d.planar ? (i == 2 ? 5 : i) : i});
+  }
+  m.closure_offset_.push_back(static_cast<int>(m.closure_.size()));
   m.length_scale_ = scale > 0.0 ? scale : 1.0;
   m.home_.q = VecX::Zero(m.num_q_);
   m.home_.tool = vjm::Transform::Identity();
@@ -317,6 +350,38 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
     append_leg(m.d_.legs[l], m.home_.q.data() + m.leg_offset(l), true, c, m.d_.tool);
     m.reach_.push_back(chain_reach(c));
     m.kinematic_.push_back(std::move(c));
+  }
+  // An overconstrained robot: the closure equations whose rows of the direct Jacobian (passive joints
+  // and platform) at home are independent, by a column-pivoted QR of its transpose. The others must
+  // depend on them with the actuators' columns too, else the legs leave the platform fewer motions
+  // than task coordinates. A rank-deficient direct Jacobian keeps every equation: the check below
+  // names its free motion.
+  if (equations > unknowns) {
+    RobotData all = make_robot_data(m);
+    const RobotJacobians J = robot_jacobians(m, m.home_, all, m.home_task());
+    const int closure = static_cast<int>(m.closure_.size()), needed = static_cast<int>(J.direct.cols());
+    Eigen::ColPivHouseholderQR<MatX> direct(J.direct.rows(), J.direct.cols()), full(closure, J.inverse.cols());
+    direct.setThreshold(1e-9).compute(J.direct.transpose());
+    full.setThreshold(1e-9).compute(J.inverse.topRows(closure).transpose());
+    if (direct.rank() == needed && full.rank() > needed)
+      return invalid(
+          fmt::format("the legs over-constrain the platform: at home they leave it {} motion{} for {} task "
+                      "coordinate{}; remove a constraint or add a joint",
+                      J.inverse.cols() - full.rank(), J.inverse.cols() - full.rank() == 1 ? "" : "s", m.d_.task.size(),
+                      m.d_.task.size() == 1 ? "" : "s"));
+    if (direct.rank() == needed) {
+      std::vector<bool> keep(closure, false);
+      for (int i = 0; i < needed; ++i) keep[direct.colsPermutation().indices()(i)] = true;
+      const std::vector<RobotModel::ClosureEquation> rows = std::move(m.closure_);
+      m.closure_.clear();
+      m.closure_offset_.clear();
+      for (int l = 0; l < m.num_legs(); ++l) {
+        m.closure_offset_.push_back(static_cast<int>(m.closure_.size()));
+        for (int r = 0; r < closure; ++r)
+          if (rows[r].leg == l) (keep[r] ? m.closure_ : m.redundant_).push_back(rows[r]);
+      }
+      m.closure_offset_.push_back(static_cast<int>(m.closure_.size()));
+    }
   }
   // The Jacobians at home: full rank, else the free motion or the redundant equation is named.
   RobotData data = make_robot_data(m);
@@ -338,9 +403,32 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
                     "singular posture, or a motion is free or constrained twice; the motion involves {}",
                     name, s(s.size() - 1) / s(0), moving));
   }
+  if (J.inverse.rows() != J.inverse.cols())
+    return invalid(
+        fmt::format("the legs over-constrain the platform ({} equations for {} unknowns) and their "
+                    "constraints at home cannot be told apart from a loss of rank; remove a constraint",
+                    equations, unknowns));
   m.inverse_sign_ = J.inverse.partialPivLu().determinant() > 0 ? 1 : -1;
   m.direct_sign_ = J.direct.partialPivLu().determinant() > 0 ? 1 : -1;
   return m;
+}
+
+Mat3 robot_parallelogram_axes(const RobotJoint& j) {
+  Mat3 R;
+  R.col(0) = (j.to - j.at).normalized();
+  R.col(1) = j.axes[0];
+  R.col(2) = R.col(0).cross(R.col(1));
+  return R;
+}
+
+StatusOr<Mat6> robot_parallelogram_spring(const RobotJoint& j, double q) {
+  if (!j.bars) return Status::Invalid(fmt::format("{}: no bars", j.label));
+  Mat6 K;
+  if (!fixed_vjm::parallelogram_stiffness(fixed_vjm::spd_inverse<6>(Eigen::LLT<Mat6>(j.bars->stiffness)),
+                                          (j.to - j.at).norm(), j.bars->width, std::cos(q), std::sin(q), K))
+    return Status::Singular(fmt::format("{}: its bars lie on one line at {:.6g} deg: nothing holds the plate's turn",
+                                        j.label, q * 180.0 / M_PI));
+  return K;
 }
 
 RobotVjmChains make_robot_vjm_chains(const RobotModel& model) {
@@ -375,6 +463,9 @@ void set_robot_vjm_posture(const RobotModel& model, const RobotPosture& posture,
       leg.passive(static_cast<Eigen::Index>(i)) = q[leg.passive_coordinate[i]];
     c.set_nominal_passive(leg.passive);
     c.set_transform(leg.tool_factor, back);
+    for (const RobotVjmChains::Leg::PostureSpring& p : leg.posture_springs)  // indices of the builder's: Ok
+      (void)c.set_spring_stiffness(
+          p.spring, bars_spring(std::get<RobotJoint>(model.description().legs[l].items[p.item]), q[p.coordinate]));
   }
 }
 

@@ -200,7 +200,7 @@ class Builder {
   Status walk_leg(int l) {
     const RobotLeg& leg = m_.description().legs[l];
     const std::vector<RobotItemFrames> frames = robot_leg_frames(m_, l, p_);
-    int cur = kBase;
+    int cur = kBase, coordinate = m_.leg_offset(l);
     for (std::size_t i = 0; i < leg.items.size(); ++i) {
       const RobotItemFrames& f = frames[i];
       if (const auto* link = std::get_if<RobotLink>(&leg.items[i])) {
@@ -224,6 +224,8 @@ class Builder {
         continue;
       }
       const RobotJoint& j = std::get<RobotJoint>(leg.items[i]);
+      const double q = p_.q(coordinate);
+      coordinate += coordinate_count(j.type);
       JointElement e = joint_element(j, f);
       if (j.spring) {
         const Mat3 axes = f.at.linear() * j.spring->axes;
@@ -245,6 +247,14 @@ class Builder {
       c.frame = e.frame;
       c.stiffness = e.stiffness;
       conn_.push_back(c);
+      if (j.bars) {  // the bars' spring at the distal plate, after the plate's slide
+        const StatusOr<Mat6> K = robot_parallelogram_spring(j, q);
+        if (!K.ok()) return invalid(K.status().message());
+        RobotSpring bars;
+        bars.label = j.label + " bars";
+        bars.stiffness = *K;
+        cur = spring(cur, f.after.translation(), f.after.linear() * robot_parallelogram_axes(j), bars);
+      }
     }
     // The leg's end is the platform.
     const int end = find(cur);

@@ -264,7 +264,8 @@ Status prepare_regular_stiffness(const std::vector<Chain>& chains, RegularStiffn
     RegularStiffnessData::ChainData& d = data.chains[i];
     d.passive = chains[i].num_passive();
     d.virtual_ = chains[i].num_virtual();
-    if (d.virtual_ > 0) d.spring_factor.compute(chains[i].spring_stiffness());
+    d.spring_stiffness = chains[i].spring_stiffness();
+    if (d.virtual_ > 0) d.spring_factor.compute(d.spring_stiffness);
     d.q = VecX::Zero(d.passive);
     d.theta = VecX::Zero(d.virtual_);
     d.J.Jq = MatX::Zero(6, d.passive);
@@ -272,6 +273,20 @@ Status prepare_regular_stiffness(const std::vector<Chain>& chains, RegularStiffn
     d.compliance_rhs = MatX::Zero(d.virtual_, 6);
   }
   return Status::Ok();
+}
+
+// K_theta factored again where a spring changed since it was (Chain::set_spring_stiffness per posture:
+// a robot file's parallelogram bars); false where it is not positive definite.
+bool refresh_spring_factor(const Chain& chain, RegularStiffnessData::ChainData& d) {
+  bool changed = false;
+  for (const Spring& s : chain.springs()) {
+    auto block = d.spring_stiffness.block(s.first, s.first, s.stiffness.rows(), s.stiffness.cols());
+    if (block == s.stiffness) continue;
+    block = s.stiffness;
+    changed = true;
+  }
+  if (changed) d.spring_factor.compute(d.spring_stiffness);
+  return d.virtual_ == 0 || d.spring_factor.info() == Eigen::Success;
 }
 
 bool regular_platform_unloaded_stiffness(const std::vector<Chain>& chains, RegularStiffnessData& data,
@@ -282,6 +297,7 @@ bool regular_platform_unloaded_stiffness(const std::vector<Chain>& chains, Regul
   for (std::size_t i = 0; i < chains.size(); ++i) {
     RegularStiffnessData::ChainData& d = data.chains[i];
     if (chains[i].num_passive() != d.passive || chains[i].num_virtual() != d.virtual_) return false;
+    if (!refresh_spring_factor(chains[i], d)) return false;
     Mat6 Ki;
     if (!regular_chain_stiffness(chains[i], d, tol, Ki)) return false;
     // validate_platform's assembly check on the walks just made.

@@ -14,8 +14,11 @@
 #include "kinestat/io/robot_yaml.hpp"
 #include "kinestat/io/vjm_yaml.hpp"
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
+#include "kinestat/mechanisms/orthoglide_frame.hpp"
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
 #include "kinestat/mechanisms/robot_kernel.hpp"
+#include "kinestat/mechanisms/robot_msa.hpp"
+#include "kinestat/msa/static_analysis.hpp"
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 
@@ -41,8 +44,8 @@ double param(const RobotModel& m, const std::string& name) {
 
 // Every bundled robot closes at home: each leg's chain ends at the tool pose to round-off.
 TEST(RobotFiles, HomeClosesEveryLeg) {
-  for (const char* name :
-       {"hexapod.yaml", "delta.yaml", "five_bar.yaml", "planar_3rpr.yaml", "prs_head.yaml", "orthoglide_puu.yaml"}) {
+  for (const char* name : {"hexapod.yaml", "delta.yaml", "five_bar.yaml", "planar_3rpr.yaml", "prs_head.yaml",
+                           "orthoglide_puu.yaml", "orthoglide_prpar.yaml"}) {
     SCOPED_TRACE(name);
     const RobotModel m = load(name);
     for (int l = 0; l < m.num_legs(); ++l) {
@@ -98,7 +101,8 @@ TEST(RobotFiles, RegularStiffnessEqualsReference) {
   for (RobotLeg& leg : rigid_delta.legs)
     for (auto& item : leg.items)
       if (auto* link = std::get_if<RobotLink>(&item)) link->spring.reset();
-  for (const char* name : {"delta.yaml", "hexapod.yaml", "orthoglide_puu.yaml", "five_bar.yaml", "rigid delta"}) {
+  for (const char* name :
+       {"delta.yaml", "hexapod.yaml", "orthoglide_puu.yaml", "orthoglide_prpar.yaml", "five_bar.yaml", "rigid delta"}) {
     SCOPED_TRACE(name);
     const bool rigid = std::string(name) == "rigid delta";
     auto built = rigid ? make_robot_model(rigid_delta) : StatusOr<RobotModel>(load(name));
@@ -158,7 +162,7 @@ TEST(RobotFiles, RegularStiffnessEqualsReference) {
 // map's serpentine path part of the Orthoglide's are not (docs/robots.md).
 TEST(RobotFiles, LoadedKernelEqualsTheReference) {
   const Vec6 wrench = (Vec6() << 10.0, -20.0, -30.0, 0.5, -0.2, 0.3).finished();
-  for (const char* name : {"hexapod.yaml", "planar_3rpr.yaml", "orthoglide_puu.yaml"}) {
+  for (const char* name : {"hexapod.yaml", "planar_3rpr.yaml", "orthoglide_puu.yaml", "orthoglide_prpar.yaml"}) {
     SCOPED_TRACE(name);
     const auto model = std::make_shared<const RobotModel>(load(name));
     RobotKernelOptions o;
@@ -430,11 +434,23 @@ TEST(RobotFiles, GoodPlanarFileReads) {
   EXPECT_EQ(m->num_coordinates(), 9);
 }
 
+// `good` with `from` replaced by `to` is refused, the message saying `message` and naming the file.
+struct PlantedFault {
+  std::string from, to, message;
+};
+void expect_refused(const std::string& good, const PlantedFault& c) {
+  std::string text = good;
+  const auto at = text.find(c.from);
+  ASSERT_NE(at, std::string::npos) << c.from;
+  text.replace(at, c.from.size(), c.to);
+  auto m = io::read_robot_model(write_robot("bad.yaml", text));
+  ASSERT_FALSE(m.ok()) << c.message;
+  EXPECT_NE(m.status().message().find(c.message), std::string::npos) << m.status().message();
+  EXPECT_NE(m.status().message().find("bad.yaml"), std::string::npos) << m.status().message();
+}
+
 TEST(RobotFiles, PlantedFaultsNamed) {
-  struct Case {
-    std::string from, to, message;
-  };
-  const Case cases[] = {
+  const PlantedFault cases[] = {
       {"      - link: {to: [px, py, 0]}", "      - link: {to: [px, py, 0], length: 20}",
        "between its ends in the drawing, `length` says 20 mm"},
       {", actuated: true, stiffness: 1e4", "", "0 actuated joints for 3 task coordinates"},
@@ -447,16 +463,7 @@ TEST(RobotFiles, PlantedFaultsNamed) {
       {"copies: 3", "copies: 2.5", "whole number"},
       {"revolute: {at: [a, 0, 0]", "revolute: {at: [b, 0, 0]", "cannot evaluate"},
   };
-  for (const Case& c : cases) {
-    std::string text = kGoodPlanar;
-    const auto at = text.find(c.from);
-    ASSERT_NE(at, std::string::npos) << c.from;
-    text.replace(at, c.from.size(), c.to);
-    auto m = io::read_robot_model(write_robot("bad.yaml", text));
-    ASSERT_FALSE(m.ok()) << c.message;
-    EXPECT_NE(m.status().message().find(c.message), std::string::npos) << m.status().message();
-    EXPECT_NE(m.status().message().find("bad.yaml"), std::string::npos) << m.status().message();
-  }
+  for (const PlantedFault& c : cases) expect_refused(kGoodPlanar, c);
   // A parameter set from outside must exist.
   auto m = io::read_robot_model(write_robot("good.yaml", kGoodPlanar), {{"b", 1.0}});
   ASSERT_FALSE(m.ok());
@@ -488,23 +495,28 @@ namespace {
 
 using namespace mechanisms;
 
-// The generic Orthoglide 3-PUU and the built-in kernel on the same model file's inputs: the same
-// status at every point, the 6x6 unloaded to 1e-9 (measured 2.3e-13, printed: round-off), and in
-// loaded mode (a prescribed displacement; an external wrench) to 1e-5. Loaded, the two routes stop
-// their equilibrium iterations at the same relative residuals (1e-12 static, 1e-10 on the wrench)
-// from different passive parameterizations of the same joints, and the gap between the two
-// solutions is those residuals amplified by the conditioning of the loaded system (the platform's
-// rotation ~1e4 times softer than its translation in length-scaled units): measured 1.0e-6
-// (displacement) and 3.7e-6 (wrench with moments), largest at the workspace corners, 1e-12 at Q0.
-TEST(RobotFiles, OrthoglideEqualsBuiltInKernel) {
-  auto vjm_model = io::read_vjm_model_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/orthoglide_puu.yaml");
+// The generic Orthoglide 3-PUU and 3-PRPaR and the built-in kernel on the same model file's inputs:
+// the same status at every point, the 6x6 unloaded to 1e-9 (measured 2.0e-13 and 8.3e-15, printed:
+// round-off), and in loaded mode (a prescribed displacement; an external wrench) to 1e-5. Loaded,
+// the two routes stop their equilibrium iterations at the same relative residuals (1e-12 static,
+// 1e-10 on the wrench) from different passive parameterizations of the same joints, and the gap
+// between the two solutions is those residuals amplified by the conditioning of the loaded system
+// (the platform's rotation ~1e4 times softer than its translation in length-scaled units): measured
+// 1.0e-6 and 3.0e-6 (displacement), 3.7e-6 and 5.2e-7 (wrench with moments), largest at the
+// workspace corners, 1e-12 at Q0. The 3-PRPaR's legs over-constrain the platform (three of the
+// closure equations are redundant) and its parallelograms' spring follows their angle.
+class OrthoglideFiles : public testing::TestWithParam<const char*> {};
+INSTANTIATE_TEST_SUITE_P(RobotFiles, OrthoglideFiles, testing::Values("orthoglide_puu.yaml", "orthoglide_prpar.yaml"));
+
+TEST_P(OrthoglideFiles, EqualBuiltInKernel) {
+  const std::string name = GetParam();
+  auto vjm_model = io::read_vjm_model_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/" + name);
   ASSERT_TRUE(vjm_model.ok() && vjm_model->orthoglide);
-  auto robot = io::read_robot_model(std::string(KINESTAT_SOURCE_DIR) + "/models/robots/orthoglide_puu.yaml");
-  ASSERT_TRUE(robot.ok()) << robot.status().message();
-  const auto shared = std::make_shared<const RobotModel>(std::move(*robot));
+  const auto shared = std::make_shared<const RobotModel>(load(name));
   for (int mode = 0; mode < 3; ++mode) {
     OrthoglideKernelOptions b;
     b.model = *vjm_model->orthoglide;
+    b.architecture = vjm_model->architecture;
     if (mode == 1) b.displacement = (Vec6() << 1e-4, -2e-4, 1e-4, 1e-3, -2e-3, 1e-3).finished();
     if (mode == 2) b.wrench = (Vec6() << 30, -20, -50, 1, 2, -1).finished();
     RobotKernelOptions g;
@@ -527,7 +539,7 @@ TEST(RobotFiles, OrthoglideEqualsBuiltInKernel) {
           EXPECT_LE((r.deflection - e.deflection).norm(), tol * e.deflection.norm()) << mode << ": " << p.transpose();
           ++ok;
         }
-    std::printf("Orthoglide 3-PUU, %s: generic - built-in stiffness up to %.1e relative over %d points\n",
+    std::printf("%s, %s: generic - built-in stiffness up to %.1e relative over %d points\n", name.c_str(),
                 mode == 0   ? "unloaded"
                 : mode == 1 ? "loaded by a displacement"
                             : "loaded under a wrench",
@@ -571,6 +583,75 @@ TEST(RobotFiles, DeltaLoadedStiffnessIsTheDerivativeOfTheEquilibrium) {
   const double rel = (K->stiffness - numeric).norm() / numeric.norm();
   std::printf("Delta loaded stiffness against central differences: %.2e relative\n", rel);
   EXPECT_LT(rel, 1e-8);
+}
+
+}  // namespace
+}  // namespace kinestat
+
+namespace kinestat {
+namespace {
+
+using namespace mechanisms;
+
+// The 3-PRPaR file by MSA (its parallelogram: the bars' spring, robot_parallelogram_spring) against
+// the built-in frame (orthoglide_frame: the two bars as beams pinned at both plates, an independent
+// route to that spring) over a grid of the workspace: both are exact for beams, linear springs and
+// ideal joints, so they agree to round-off (measured 5.7e-13 relative, printed; bound 1e-9). The
+// legs over-constrain the platform (six constraint moments for three rotations): the file's
+// kinematics solves the independent closure equations, three are redundant.
+TEST(RobotFiles, PrparFileMsaEqualsBuiltInFrame) {
+  auto vjm_model = io::read_vjm_model_yaml(std::string(KINESTAT_SOURCE_DIR) + "/models/orthoglide_prpar.yaml");
+  ASSERT_TRUE(vjm_model.ok() && vjm_model->orthoglide);
+  auto model = io::read_robot_model(std::string(KINESTAT_SOURCE_DIR) + "/models/robots/orthoglide_prpar.yaml");
+  ASSERT_TRUE(model.ok()) << model.status().message();
+  EXPECT_EQ(model->redundant_equations().size(), 3u);
+  RobotData data = make_robot_data(*model);
+  double worst = 0.0;
+  int points = 0;
+  for (double x = -0.1; x <= 0.1001; x += 0.1)
+    for (double y = -0.1; y <= 0.1001; y += 0.1)
+      for (double z = -0.1; z <= 0.1001; z += 0.1) {
+        const Vec3 p(x, y, z);
+        RobotPosture posture = model->home();
+        ASSERT_EQ(solve_posture(*model, p, posture, data).status, KinematicsStatus::kOk) << p.transpose();
+        auto file = robot_msa_structure(*model, posture);
+        ASSERT_TRUE(file.ok()) << file.status().message();
+        auto frame = orthoglide_frame(*vjm_model->orthoglide, OrthoglideArchitecture::kPRPaR, p);
+        ASSERT_TRUE(frame.ok()) << frame.status().message();
+        msa::Workspace ws1, ws2;
+        const auto Kf = msa::cartesian_stiffness(*file, ws1, *file->report_node());
+        const auto Kb = msa::cartesian_stiffness(*frame, ws2, *frame->report_node());
+        ASSERT_TRUE(Kf.ok() && Kb.ok() && Kf->stiffness_defined && Kb->stiffness_defined) << p.transpose();
+        const double d = (Kf->stiffness - Kb->stiffness).norm() / Kb->stiffness.norm();
+        EXPECT_LT(d, 1e-9) << p.transpose();
+        worst = std::max(worst, d);
+        ++points;
+      }
+  std::printf("3-PRPaR file by MSA - built-in frame: up to %.1e relative over %d points\n", worst, points);
+}
+
+// A parallelogram's bars checked when read, each fault named with the file (the 3-PRPaR file, changed).
+TEST(RobotFiles, ParallelogramBarsChecked) {
+  std::ifstream in(std::string(KINESTAT_SOURCE_DIR) + "/models/robots/orthoglide_prpar.yaml");
+  const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const PlantedFault cases[] = {
+      {"axis: [0, -1, 0],", "axis: [0.1, -1, 0],", "must be normal to its axis"},
+      {"width: w}", "width: 0}", "width"},
+      {"width: w}", "width: w, colour: red}", "colour"},
+      {"axis: [0, 0, 1]}\n      - parallelogram",
+       "axis: [0, 0, 1], bars: {material: steel, section: bar, width: w}}\n"
+       "      - parallelogram",
+       "'bars' belong to a parallelogram"},
+  };
+  for (const PlantedFault& c : cases) expect_refused(good, c);
+  // At 90 deg the two bars lie on one line: no spring, said so.
+  const RobotModel model = load("orthoglide_prpar.yaml");
+  const RobotJoint& pa = std::get<RobotJoint>(model.description().legs[0].items[3]);
+  ASSERT_EQ(pa.type, RobotJointType::kParallelogram);
+  const auto K = robot_parallelogram_spring(pa, M_PI / 2);
+  ASSERT_FALSE(K.ok());
+  EXPECT_EQ(K.status().code(), StatusCode::kSingular);
+  EXPECT_TRUE(robot_parallelogram_spring(pa, 0.3).ok());
 }
 
 }  // namespace

@@ -60,6 +60,25 @@ struct RobotSpring {
   int fea_entry = -1;     // the file's `fea:` entry: the same in a leg pattern's copies (computed once)
 };
 
+// The beam a link's spring is the cantilever of (vjm::cantilever_spring): kept so that MSA models
+// the beam itself (robot_msa.hpp). Its local axes are the spring's axes (x along the beam, y and z
+// the section's); the beam ends at the link's end and starts `length` before it along x.
+struct RobotBeam {
+  Material material;
+  Section section;
+  double length = 0.0;  // m
+  BeamTheory theory = BeamTheory::kEulerBernoulli;
+};
+
+// A parallelogram's two bars (the flexibility of a Pa joint, as the Orthoglide 3-PRPaR's): beams
+// from hinge to hinge (`to - at`), `width` apart across the joint, pinned about its axis at both
+// plates. Their spring between the plates depends on the joint's angle (robot_parallelogram_spring).
+struct RobotParallelogramBars {
+  RobotBeam beam;                 // one bar: its section's y along the hinges' axis, z = x y
+  double width = 0.0;             // m between the two bars' axes
+  Mat6 stiffness = Mat6::Zero();  // one bar's cantilever spring (vjm::cantilever_spring) in its axes
+};
+
 struct RobotJoint {
   std::string label;  // "leg 2 joint 3 (universal)"
   RobotJointType type = RobotJointType::kRevolute;
@@ -74,17 +93,18 @@ struct RobotJoint {
   std::optional<RobotSpring> spring;
   // Per coordinate, measured from home; empty: no limits.
   std::vector<std::pair<double, double>> limits;
+  // kParallelogram: its bars; without, a rigid parallelogram.
+  std::optional<RobotParallelogramBars> bars;
 };
 
-// The beam a link's spring is the cantilever of (vjm::cantilever_spring): kept so that MSA models
-// the beam itself (robot_msa.hpp). Its local axes are the spring's axes (x along the beam, y and z
-// the section's); the beam ends at the link's end and starts `length` before it along x.
-struct RobotBeam {
-  Material material;
-  Section section;
-  double length = 0.0;  // m
-  BeamTheory theory = BeamTheory::kEulerBernoulli;
-};
+// The spring of a parallelogram joint's bars between its plates at its coordinate q (rad), about
+// `to` in the axes (x along to - at, y the joint's axis, z = x y) of the frame before the joint
+// (the plate does not turn): each bar's cantilever pinned at both plates, the two summed, plus a
+// stiffness along the plates' free translation that the joint's motion makes irrelevant
+// (fixed_size_vjm.hpp, parallelogram_stiffness; eq. 22 of Pashkevich et al. 2009). Its axes are
+// robot_parallelogram_axes(j). kSingular where it is singular (the bars on one line: q = +-90 deg).
+StatusOr<Mat6> robot_parallelogram_spring(const RobotJoint& j, double q);
+Mat3 robot_parallelogram_axes(const RobotJoint& j);
 
 // A link from the chain's current point to `to`. Its spring, if any, sits at `to` (the free end of
 // a cantilever clamped at the link's start): a beam of the link or a given 6x6.
@@ -133,9 +153,9 @@ struct RobotPosture {
 };
 
 // A Jacobian of the loop closure's structure factored leg by leg (robot_kinematics.cpp): leg l's
-// e equations (rows l e ..) involve only its own columns (`column` .. + `count`) and the platform's
-// np (the last columns); the rows after the legs' (the task's) the platform's only. Each leg's
-// e x count block is factored by a Householder QR, B = Q [R; 0]: its first `count` transformed rows
+// e equations (rows `row` .. + `equations`) involve only its own columns (`column` .. + `count`) and
+// the platform's np (the last columns); the rows after the legs' (the task's) the platform's only.
+// Each leg's e x count block is factored by a Householder QR, B = Q [R; 0]: its first `count` transformed rows
 // give the leg's unknowns from the platform's, the other e - count rows join the task's rows in
 // the np x np Schur complement S (S x_p = ..., an LU). The inverse kinematics Jacobian and the
 // direct one (the passive columns and the platform) have this structure. Solves (and solves with
@@ -144,12 +164,12 @@ struct RobotBlockFactors {
   using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
   using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
   struct Leg {
-    int column = 0, count = 0, reflections = 0;
+    int row = 0, equations = 6, column = 0, count = 0, reflections = 0;
     Mat6 Q, R;  // R: the top-left count x count
     Mat6 G;     // Q^T times the leg's platform columns (e x np)
   };
   std::vector<Leg> legs;
-  int equations = 6, platform = 6, size = 0;
+  int platform = 6, size = 0;
   Small S;
   Eigen::PartialPivLU<Small> lu;
   bool regular = false;       // every R and S of non-zero pivots
@@ -162,6 +182,7 @@ struct RobotBlockFactors {
 struct RobotData {
   VecX residual, step;
   MatX jacobian;
+  double redundant_residual = 0.0;                 // the largest of the redundant equations' (length-scaled)
   std::vector<VecX> leg_q;                         // each leg's coordinates
   std::vector<vjm::ChainJacobians> leg_jacobians;  // each leg's kinematic chain at them
   VecX no_theta;                                   // the kinematic chains have no springs
@@ -215,8 +236,18 @@ class RobotModel {
   bool actuated(const Coordinate& c) const { return c.index == 0 && joint(c).actuated; }
   // "leg 2 joint 3 (universal) coordinate 2"
   std::string coordinate_name(int k) const;
-  // Leg closure equations per leg (6, or 3 when planar) and platform unknowns (6 or 3).
-  int equations_per_leg() const { return d_.planar ? 3 : 6; }
+  // The closure equations the kinematics solves, legs in order: a leg's end minus the tool pose in
+  // one pose component (0..5: x y z rx ry rz). Every leg's six (planar: x, y, rz) unless the legs
+  // over-constrain the platform (an overconstrained robot, e.g. the Orthoglide 3-PRPaR: the
+  // constraint moments of its three legs span three rotations twice): then as many independent
+  // ones as the unknowns need, chosen at home; the others (redundant_components) hold by the
+  // geometry, and solve_posture checks them at every solution.
+  struct ClosureEquation {
+    int leg = 0, component = 0;
+  };
+  const std::vector<ClosureEquation>& closure_equations() const { return closure_; }
+  int closure_offset(int leg) const { return closure_offset_[leg]; }  // leg's first; leg = num_legs(): the count
+  const std::vector<ClosureEquation>& redundant_equations() const { return redundant_; }
   // The largest distance from the base origin to a joint or the tool (m): the scale that makes m and
   // rad comparable.
   double length_scale() const { return length_scale_; }
@@ -247,6 +278,8 @@ class RobotModel {
   std::vector<Coordinate> coords_;
   std::vector<vjm::Chain> kinematic_;
   std::vector<Reach> reach_;
+  std::vector<ClosureEquation> closure_, redundant_;
+  std::vector<int> closure_offset_;
   double length_scale_ = 1.0;
   RobotPosture home_;
   int inverse_sign_ = 1, direct_sign_ = 1;
@@ -296,15 +329,23 @@ std::vector<RobotItemFrames> robot_leg_frames(const RobotModel& model, int leg, 
 std::vector<vjm::Chain> robot_vjm_chains(const RobotModel& model, const RobotPosture& posture);
 
 // The same chains built once (make_robot_vjm_chains: at home) and moved to a posture in place
-// (set_robot_vjm_posture: the actuators' values, the passive joints' nominal values and the tool
-// transform; no allocation), as a posture kernel keeps them. robot_vjm_chains is the two in a row.
+// (set_robot_vjm_posture: the actuators' values, the passive joints' nominal values, the tool
+// transform and the springs that depend on the posture; no allocation), as a posture kernel keeps
+// them. robot_vjm_chains is the two in a row. A parallelogram whose bars lie on one line gets a NaN
+// spring, which the VJM refuses (vjm::Chain::validate).
 struct RobotVjmChains {
   std::vector<vjm::Chain> chains;
   struct Leg {
     std::vector<int> actuator_factor, actuator_coordinate;  // the leg's coordinate index of each actuator
     std::vector<int> passive_coordinate;                    // of each passive joint, in the chain's order
-    int tool_factor = -1;                                   // the transform back to base axes
-    VecX passive;                                           // scratch: the passive joints' values
+    // Springs that depend on the posture (a parallelogram's bars): the chain's spring index, the
+    // leg's coordinate index of the joint and the joint's item index in the leg.
+    struct PostureSpring {
+      int spring = 0, coordinate = 0, item = 0;
+    };
+    std::vector<PostureSpring> posture_springs;
+    int tool_factor = -1;  // the transform back to base axes
+    VecX passive;          // scratch: the passive joints' values
   };
   std::vector<Leg> legs;
 };

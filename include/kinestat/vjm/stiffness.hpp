@@ -61,6 +61,7 @@ StatusOr<CartesianStiffness> platform_unloaded_stiffness(const std::vector<Chain
 struct RegularStiffnessData {
   struct ChainData {
     int passive = 0, virtual_ = 0;
+    MatX spring_stiffness;           // K_theta as factored: a spring changed since is factored again
     Eigen::LLT<MatX> spring_factor;  // of K_theta
     VecX q, theta;
     ChainJacobians J;
