@@ -108,7 +108,14 @@ class RobotKernel final : public PostureKernel {
     if (predict) {
       posture_.q = 2.0 * start_.q - previous_.q;
       posture_.tool.translation() = 2.0 * start_.tool.translation() - previous_.tool.translation();
-      posture_.tool.linear() = start_.tool.linear() * previous_.tool.linear().transpose() * start_.tool.linear();
+      // R1 R0^T R1 is a rotation to round-off only, and extrapolating from it again multiplies its
+      // departure from one by 1 + sqrt 2 per point, which Newton's steps (exp(w) R) keep and its
+      // residual does not see: 1e-7 after 20 points of a row, enough to stall a loaded equilibrium
+      // on the chains' tool factor R^T. Made a rotation again.
+      posture_.tool.linear() =
+          Eigen::Quaterniond(start_.tool.linear() * previous_.tool.linear().transpose() * start_.tool.linear())
+              .normalized()
+              .toRotationMatrix();
       const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
       if (k.closed) return next(point, k);
       posture_ = start_;

@@ -144,10 +144,13 @@ void block_layout(RobotBlockFactors& f, const RobotModel& m, int platform, const
   f.x = f.v = f.sign = f.old_sign = VecX::Zero(f.size);
 }
 
+// The legs' rows (the task's follow).
+int closure_rows(const RobotBlockFactors& f) { return f.legs.back().row + f.legs.back().equations; }
+
 // False (and f.regular false) when a pivot is zero: A is singular (det A = +-prod det R det S).
 bool block_factor(const MatX& A, RobotBlockFactors& f) {
   const int np = f.platform, pc = f.size - np;
-  const int closure = f.legs.back().row + f.legs.back().equations;
+  const int closure = closure_rows(f);
   f.regular = false;
   int row = 0;
   for (RobotBlockFactors::Leg& g : f.legs) {
@@ -177,7 +180,7 @@ bool block_factor(const MatX& A, RobotBlockFactors& f) {
 // A x = b, x into b.
 void block_solve(RobotBlockFactors& f, VecX& b) {
   const int np = f.platform;
-  const int closure = f.legs.back().row + f.legs.back().equations;
+  const int closure = closure_rows(f);
   RobotBlockFactors::SmallVector rhs(np);
   int row = 0;
   // Q^T b per leg: the first count rows stay in b's leg rows (they become the leg's unknowns), the
@@ -212,7 +215,7 @@ void block_solve(RobotBlockFactors& f, VecX& b) {
 // and y_l = Q z.
 void block_solve_transpose(RobotBlockFactors& f, VecX& c) {
   const int np = f.platform;
-  const int closure = f.legs.back().row + f.legs.back().equations;
+  const int closure = closure_rows(f);
   RobotBlockFactors::SmallVector cp = c.tail(np);
   for (RobotBlockFactors::Leg& g : f.legs) {
     const int k = g.count, r0 = g.row;

@@ -77,14 +77,14 @@ namespace {
 
 using vjm::JointType;
 
-// A spring in `axes` (columns in the current frame): turn into its frame, spring, turn back.
-// A parallelogram's bars at q, NaN where they coincide (the VJM refuses it, naming the spring).
+// A parallelogram's bars at q, NaN where they lie on one line (the VJM refuses it, naming the spring).
 Mat6 bars_spring(const RobotJoint& j, double q) {
   const StatusOr<Mat6> K = robot_parallelogram_spring(j, q);
   return K.ok() ? *K : Mat6::Constant(std::numeric_limits<double>::quiet_NaN());
 }
 
-// Returns the spring's index in the chain's springs().
+// A spring in `axes` (columns in the current frame): turn into its frame, spring, turn back. Returns
+// its index in the chain's springs().
 int add_spring(vjm::Chain& c, const RobotSpring& s) {
   if (s.axes.isIdentity(0.0)) {
     c.add_spring(s.stiffness, s.label);
@@ -360,7 +360,7 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
     RobotData all = make_robot_data(m);
     const RobotJacobians J = robot_jacobians(m, m.home_, all, m.home_task());
     const int closure = static_cast<int>(m.closure_.size()), needed = static_cast<int>(J.direct.cols());
-    Eigen::ColPivHouseholderQR<MatX> direct(J.direct.rows(), J.direct.cols()), full(closure, J.inverse.cols());
+    Eigen::ColPivHouseholderQR<MatX> direct, full;
     direct.setThreshold(1e-9).compute(J.direct.transpose());
     full.setThreshold(1e-9).compute(J.inverse.topRows(closure).transpose());
     if (direct.rank() == needed && full.rank() > needed)

@@ -169,6 +169,17 @@ void bind_model(py::module_& m) {
                                for (const RobotLeg& leg : r.description().legs) names.push_back(leg.name);
                                return names;
                              })
+      .def_property_readonly(
+          "redundant_equations",
+          [](const RobotModel& r) {
+            static constexpr const char* kNames[] = {"x", "y", "z", "rx", "ry", "rz"};
+            std::vector<std::string> out;
+            for (const auto& e : r.redundant_equations())
+              out.push_back(r.description().legs[e.leg].name + " " + kNames[e.component]);
+            return out;
+          },
+          "the closure equations that hold by the geometry of an overconstrained robot, e.g. ['leg 2 ry'] "
+          "(docs/robots.md, 'Overconstrained robots'); empty for most robots")
       .def_property_readonly("num_coordinates", &RobotModel::num_coordinates, "joint coordinates, all legs")
       .def_property_readonly("coordinate_names",
                              [](const RobotModel& r) {

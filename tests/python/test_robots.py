@@ -71,6 +71,20 @@ def test_hexapod_solves_at_home():
     assert t.status == "ok"
 
 
+def test_overconstrained_robot_names_its_redundant_equations():
+    # The 3-PRPaR's legs each hold the platform against two rotations: three of the nine constraint
+    # equations on rotations are redundant; its solutions close every equation (the kinematics checks
+    # the redundant ones), so the platform keeps its orientation.
+    p = ks.robots.load(ROBOTS / "orthoglide_prpar.yaml")
+    assert len(p.redundant_equations) == 3
+    assert all(e.split()[-1] in ("rx", "ry", "rz") for e in p.redundant_equations)
+    assert ks.robots.load(ROBOTS / "hexapod.yaml").redundant_equations == []
+    s = p.solve([0.05, -0.03, 0.02])
+    assert s.status == "ok"
+    np.testing.assert_allclose(s.tool[:3, :3], np.eye(3), atol=1e-12)
+    np.testing.assert_allclose(s.tool[:3, 3], [0.05, -0.03, 0.02], atol=1e-12)
+
+
 def test_load_computes_fea_link_springs(tmp_path):
     # A 3-RPR whose links are meshes/bar.off (docs/robots.md, `fea:` link springs): robots.load meshes
     # and solves it (coarse: a fraction of a second) between reading and building; a missing mesh is
