@@ -260,6 +260,14 @@ class RobotReader : public YamlFields {
     return R;
   }
 
+  // A leg pattern's copy is the first leg turned: its link axes too, not the convention's axes of the
+  // turned direction `dir`, which differ about x unless the turn is about z (the Orthoglide's about
+  // (1, 1, 1)). The VJM's loaded mode sees that roll even for a symmetric section (its springs'
+  // rotation coordinates are elementary rotations about their axes: second order).
+  static Mat3 copy_axes(const Mat3& turn, const Vec3& dir, double roll) {
+    return turn * beam_axes(turn.transpose() * dir, roll);
+  }
+
   BeamTheory beam_theory(const YAML::Node& b, const std::string& label) {
     const YAML::Node t = b["theory"];
     if (!t.IsDefined()) return BeamTheory::kEulerBernoulli;
@@ -309,12 +317,12 @@ class RobotReader : public YamlFields {
       RobotSpring cantilever;
       cantilever.label = l.label;
       cantilever.stiffness = vjm::cantilever_spring(m, bars, L, theory);
-      cantilever.axes = beam_axes(x, roll);
+      cantilever.axes = copy_axes(turn, x, roll);
       l.spring = cantilever;
       l.beam = RobotBeam{m, bars, L, theory};
     } else if (const YAML::Node sp = n["spring"]; sp.IsDefined()) {
       const Vec3 x = dir.norm() > 0.0 ? dir : Vec3::UnitX();
-      RobotSpring s = spring(sp, l.label, beam_axes(x, 0.0), label + " spring fea");
+      RobotSpring s = spring(sp, l.label, copy_axes(turn, x, 0.0), label + " spring fea");
       if (sp["axes"].IsDefined()) s.axes = turn * s.axes;
       l.spring = s;
     }
