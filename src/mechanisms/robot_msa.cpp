@@ -296,7 +296,7 @@ class Builder {
           if (used[c]) continue;
           used[c] = true;
           const int v = conn_[c].body1 == u ? conn_[c].body2 : conn_[c].body1;
-          if (seen[v]) return loop(conn_[c]);
+          if (seen[v]) continue;  // closes a loop of ties: msa eliminates it as a constraint (dof_map.hpp)
           seen[v] = true;
           incoming_[v] = c;
           queue.push_back(v);

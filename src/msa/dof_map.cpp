@@ -1,8 +1,11 @@
 #include "msa/dof_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
+
+#include <Eigen/QR>
 
 #include <fmt/format.h>
 
@@ -20,6 +23,89 @@ Mat6 mask_projector(const DofMask& mask, bool value) {
   for (int i = 0; i < 6; ++i)
     if (mask[i] == value) P(i, i) = 1.0;
   return P;
+}
+
+// The loops' ties: each tied component's constraint e_i^T R^T (u_s - A u_m) = 0 over the tree's
+// unknowns q (rows G), length-scaled (rotations times the structure's size) so that one threshold
+// ranks them; the independent rows (a column-pivoted QR of G^T) solved for as many unknowns (the
+// pivots of a column-pivoted QR of those rows), q_p = -F q_rest, so that u = C T q_rest.
+void eliminate_loops(const Structure& s, const std::vector<int>& loop_ties, const std::vector<NodeRows>& rows,
+                     DofMap& map) {
+  const int n = static_cast<int>(map.C.cols());
+  const double L = s.length_scale();
+  auto dense = [&](int node) {
+    MatX D = MatX::Zero(6, n);
+    for (int row = 0; row < 6; ++row)
+      for (const auto& [col, v] : rows[node][row]) D(row, col) += v;
+    return D;
+  };
+  std::vector<DofMap::LoopRow> all;
+  std::vector<VecX> g;
+  for (int t : loop_ties) {
+    const auto& tie = map.ties[t];
+    const Mat6 A = rigid_transfer(s.nodes()[tie.slave].position - s.nodes()[tie.master].position);
+    const MatX D = rotation6(tie.frame).transpose() * (dense(tie.slave) - A * dense(tie.master));
+    for (int i = 0; i < 6; ++i)
+      if (tie.mask[i]) {
+        all.push_back({t, i});
+        g.push_back(D.row(i).transpose());
+      }
+  }
+  VecX column_scale(n);
+  for (int j = 0; j < n; ++j) column_scale(j) = map.reduced[j].component >= 3 ? 1.0 / L : 1.0;
+  MatX G(static_cast<int>(all.size()), n), scaled(static_cast<int>(all.size()), n);
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    G.row(static_cast<int>(k)) = g[k].transpose();
+    scaled.row(static_cast<int>(k)) = (all[k].component >= 3 ? L : 1.0) * g[k].cwiseProduct(column_scale).transpose();
+  }
+  Eigen::ColPivHouseholderQR<MatX> by_rows;
+  by_rows.setThreshold(1e-10).compute(scaled.transpose());
+  const int r = static_cast<int>(by_rows.rank());
+  if (r == 0) return;  // every loop constraint holds already (redundant ties)
+  std::vector<int> independent(r);
+  for (int k = 0; k < r; ++k) independent[k] = by_rows.colsPermutation().indices()(k);
+  std::sort(independent.begin(), independent.end());
+  MatX Gs(r, n);
+  for (int k = 0; k < r; ++k) Gs.row(k) = scaled.row(independent[k]);
+  Eigen::ColPivHouseholderQR<MatX> by_columns;
+  by_columns.setThreshold(1e-10).compute(Gs);
+  std::vector<bool> pivot(n, false);
+  std::vector<int> pivots(r), rest;
+  for (int k = 0; k < r; ++k) pivot[pivots[k] = by_columns.colsPermutation().indices()(k)] = true;
+  for (int j = 0; j < n; ++j)
+    if (!pivot[j]) rest.push_back(j);
+  MatX Gp(r, r), Gr(r, static_cast<int>(rest.size()));
+  for (int k = 0; k < r; ++k) Gp.col(k) = Gs.col(pivots[k]);
+  for (std::size_t k = 0; k < rest.size(); ++k) Gr.col(static_cast<int>(k)) = Gs.col(rest[k]);
+  const MatX F = Gp.partialPivLu().solve(Gr);  // scaled: q~_p = -F q~_rest, q = q~ .* column_scale
+  // u = C q with q_rest the new unknowns: C T, T's pivot rows -F (unscaled), its other rows the identity.
+  std::vector<int> new_index(n, -1), pivot_row(n, -1);
+  for (std::size_t k = 0; k < rest.size(); ++k) new_index[rest[k]] = static_cast<int>(k);
+  for (int k = 0; k < r; ++k) pivot_row[pivots[k]] = k;
+  std::vector<Eigen::Triplet<double>> trip;
+  for (int col = 0; col < n; ++col)
+    for (solver::SparseMatrix::InnerIterator it(map.C, col); it; ++it) {
+      if (new_index[col] >= 0) {
+        trip.emplace_back(static_cast<int>(it.row()), new_index[col], it.value());
+        continue;
+      }
+      const int k = pivot_row[col];
+      for (std::size_t j = 0; j < rest.size(); ++j)
+        if (F(k, static_cast<int>(j)) != 0.0)
+          trip.emplace_back(static_cast<int>(it.row()), static_cast<int>(j),
+                            -it.value() * column_scale(col) * F(k, static_cast<int>(j)) / column_scale(rest[j]));
+    }
+  map.tree_C = map.C;
+  map.C = solver::SparseMatrix(map.C.rows(), static_cast<int>(rest.size()));
+  map.C.setFromTriplets(trip.begin(), trip.end());
+  std::vector<ReducedDof> reduced;
+  for (int j : rest) reduced.push_back(map.reduced[j]);
+  map.reduced = std::move(reduced);
+  map.loop_G.resize(r, n);
+  for (int k = 0; k < r; ++k) {
+    map.loop_rows.push_back(all[independent[k]]);
+    map.loop_G.row(k) = G.row(independent[k]);
+  }
 }
 
 }  // namespace
@@ -79,14 +165,18 @@ StatusOr<DofMap> build_dof_map(const Structure& s) {
                                                               jt.id)));
     map.ties.push_back({master, slave, mask, jt.frame, static_cast<int>(j), jt.source});
   }
+  // A tie whose slave is tied already, or whose master hangs from its slave through the masters'
+  // ties, closes a loop of ties: a constraint on the tree's unknowns (below).
+  std::vector<int> loop_ties;
   for (size_t t = 0; t < map.ties.size(); ++t) {
     const auto& tie = map.ties[t];
-    if (map.slave_of_tie[tie.slave] >= 0)
-      return Status::Invalid(at_source(tie.source, fmt::format("node '{}' is tied rigidly to two nodes (rigid links "
-                                                               "or rigid joint components); tie it to one and "
-                                                               "connect the others to it",
-                                                               s.nodes()[tie.slave].id)));
-    map.slave_of_tie[tie.slave] = static_cast<int>(t);
+    bool loop = map.slave_of_tie[tie.slave] >= 0;
+    for (int m = tie.master; !loop && m >= 0; m = map.slave_of_tie[m] >= 0 ? map.ties[map.slave_of_tie[m]].master : -1)
+      loop = m == tie.slave;
+    if (loop)
+      loop_ties.push_back(static_cast<int>(t));
+    else
+      map.slave_of_tie[tie.slave] = static_cast<int>(t);
   }
 
   // Independent unknowns: the free components of every node, in the node's support or tie frame.
@@ -146,7 +236,25 @@ StatusOr<DofMap> build_dof_map(const Structure& s) {
   }
   map.C.resize(6 * nn, static_cast<int>(map.reduced.size()));
   map.C.setFromTriplets(trip.begin(), trip.end());
+  if (!loop_ties.empty()) eliminate_loops(s, loop_ties, rows, map);
   return map;
+}
+
+VecX remove_loop_forces(const Structure& s, const DofMap& map, const VecX& residual, VecX& forces) {
+  forces = VecX::Zero(static_cast<int>(map.loop_rows.size()));
+  if (map.loop_rows.empty()) return residual;
+  // tree_C^T r = loop_G^T forces: the loops' forces are what the tree's unknowns do not balance.
+  const VecX b = map.tree_C.transpose() * residual;
+  forces = MatX(map.loop_G.transpose()).colPivHouseholderQr().solve(b);
+  VecX out = residual;
+  for (std::size_t k = 0; k < map.loop_rows.size(); ++k) {
+    const auto& tie = map.ties[map.loop_rows[k].tie];
+    const Vec6 on_slave = rotation6(tie.frame).col(map.loop_rows[k].component) * forces(static_cast<int>(k));
+    const Mat6 A = rigid_transfer(s.nodes()[tie.slave].position - s.nodes()[tie.master].position);
+    out.segment<6>(6 * tie.slave) -= on_slave;
+    out.segment<6>(6 * tie.master) += A.transpose() * on_slave;
+  }
+  return out;
 }
 
 VecX prescribed_displacements(const Structure& s, const LoadCase& lc) {

@@ -1,6 +1,9 @@
 // Reduction of the 6N nodal dofs to the independent unknowns: u = C q + u0.
 // C removes supported dofs (also in a rotated support frame) and eliminates rigid links and the rigid
 // components of joints (master-slave elimination, exact, no penalty); u0 holds prescribed displacements.
+// Ties that close a loop of ties (a node tied twice, or a cycle; the legs of a robot rigid but for
+// their joints) are linear constraints on the other ties' unknowns, eliminated after them: their
+// independent rows solved for as many unknowns (a pivoted LU), the dependent ones dropped.
 #pragma once
 
 #include <vector>
@@ -30,10 +33,23 @@ struct DofMap {
     std::string source;  // that item's source ("file:line"), for messages
   };
   std::vector<Tie> ties;
+  // The loops' independent constraints: tie ties[tie]'s component `component` (in its frame), whose
+  // rows over the tree's unknowns (C before the loops' elimination: tree_C) are loop_G. Their forces
+  // (Lagrange multipliers) are recovered from the residual (loop_forces) for reactions and joint forces.
+  struct LoopRow {
+    int tie = -1, component = 0;
+  };
+  std::vector<LoopRow> loop_rows;
+  solver::SparseMatrix tree_C;
+  MatX loop_G;
   int num_free() const { return static_cast<int>(C.cols()); }
 };
 
 StatusOr<DofMap> build_dof_map(const Structure& s);
+
+// The residual K u - f (6N) with the loops' constraint forces taken out, and those forces (one per
+// loop_rows entry, in its tie's frame: the force on the slave); the residual as it is without loops.
+VecX remove_loop_forces(const Structure& s, const DofMap& map, const VecX& residual, VecX& forces);
 
 // Prescribed nodal displacements of a load case (6N, global axes).
 VecX prescribed_displacements(const Structure& s, const LoadCase& lc);

@@ -70,8 +70,10 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
 // force the tie exerts on it; by virtual work (u_s = M u_m in the tied components) the tie exerts
 // -M' of it on the master, so the support of a master balances residual_m + M' residual_s. Without
 // this a supported master of a rigid link reported no reaction at all. Deepest slaves go first, so
-// a chain of ties carries its share all the way to the supported end.
-VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& residual) {
+// a chain of ties carries its share all the way to the supported end. `tie_forces` (per tie, its
+// frame, the tied components): the force the tie exerts on its slave, its own slaves' shares included.
+VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& residual, std::vector<Vec6>& tie_forces) {
+  tie_forces.assign(map.ties.size(), Vec6::Zero());
   VecX carried = residual;
   const int nn = static_cast<int>(s.nodes().size());
   std::vector<int> depth(nn, 0), order;
@@ -86,6 +88,7 @@ VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& re
     Vec6 tied = R.transpose() * carried.segment<6>(6 * n);
     for (int i = 0; i < 6; ++i)
       if (!tie.mask[i]) tied(i) = 0.0;  // the free components are the slave's own (zero at equilibrium)
+    tie_forces[map.slave_of_tie[n]] = tied;
     const Vec6 on_slave = R * tied;
     const Mat6 A = rigid_transfer(s.nodes()[n].position - s.nodes()[tie.master].position);
     carried.segment<6>(6 * tie.master) += A.transpose() * on_slave;
@@ -107,7 +110,10 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   const VecX pdelta = g ? VecX(g->global * u) : VecX::Zero(u.size());  // K_G u
   const VecX applied = f - pdelta;
   const VecX residual = sys.K * u + pdelta - f;  // reactions at supports, constraint forces at tied nodes
-  const VecX support_residual = carry_ties_to_masters(s, sys.map, residual);
+  VecX loop_forces;
+  const VecX tree_residual = remove_loop_forces(s, sys.map, residual, loop_forces);
+  std::vector<Vec6> tie_forces;
+  const VecX support_residual = carry_ties_to_masters(s, sys.map, tree_residual, tie_forces);
   r.displacement.resize(nn);
   r.reaction.assign(nn, Vec6::Zero());
   // Scale of the loads and reactions, each term taken on its own (not their net sum at a node, which
@@ -155,13 +161,23 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
     const Vec6 rel = R6.transpose() * (u.segment<6>(6 * jt.node2) - u.segment<6>(6 * jt.node1));
     Vec6 force = jt.coupling * rel;  // k (u2 - u1) in the joint frame: positive in tension
     for (int i = 0; i < 6; ++i) force(i) = std::isinf(jt.stiffness(i)) ? 0.0 : force(i) + jt.stiffness(i) * rel(i);
-    // Rigid components carry a constraint force: read it off the tied node's equilibrium.
-    for (const auto& tie : sys.map.ties) {
+    // Rigid components carry a constraint force: the tied node's equilibrium, its own slaves' shares
+    // included (carry_ties_to_masters), or, for a tie that closes a loop, its own (a loop's dependent
+    // constraints carry none: their share of the force is not determined).
+    for (std::size_t t = 0; t < sys.map.ties.size(); ++t) {
+      const auto& tie = sys.map.ties[t];
       if (tie.joint != static_cast<int>(j)) continue;
-      const Vec6 on_slave = R6.transpose() * residual.segment<6>(6 * tie.slave);
       const double sign = tie.slave == jt.node2 ? -1.0 : 1.0;
+      if (sys.map.slave_of_tie[tie.slave] != static_cast<int>(t)) {
+        for (int i = 0; i < 6; ++i)
+          if (tie.mask[i]) force(i) = 0.0;
+        for (std::size_t k = 0; k < sys.map.loop_rows.size(); ++k)
+          if (sys.map.loop_rows[k].tie == static_cast<int>(t))
+            force(sys.map.loop_rows[k].component) = sign * loop_forces(static_cast<int>(k));
+        continue;
+      }
       for (int i = 0; i < 6; ++i)
-        if (tie.mask[i]) force(i) = sign * on_slave(i);
+        if (tie.mask[i]) force(i) = sign * tie_forces[t](i);
     }
     r.joint_forces.push_back(force);
   }

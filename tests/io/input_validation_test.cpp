@@ -127,17 +127,6 @@ constexpr const char* kThreeNodes =
 TEST(InputValidation, ChecksAfterReadingNameFileAndLine) {
   const std::string nodes = kThreeNodes;
   expect_solve_error(nodes +
-                         "rigid_links:\n"                        // 5
-                         "  - {id: r1, master: A, slave: B}\n"   // 6
-                         "  - {id: r2, master: B, slave: C}\n"   // 7
-                         "  - {id: r3, master: C, slave: A}\n",  // 8
-                     "model.yaml:", "closed loop");
-  expect_solve_error(nodes +
-                         "rigid_links:\n"                        // 5
-                         "  - {id: r1, master: A, slave: C}\n"   // 6
-                         "  - {id: r2, master: B, slave: C}\n",  // 7
-                     "model.yaml:7: ", "node 'C' is tied rigidly to two nodes");
-  expect_solve_error(nodes +
                          "supports:\n"                                                         // 5
                          "  - {node: A, fixed: [ux]}\n"                                        // 6
                          "  - {node: A, fixed: [uy], frame: {x: [0, 1, 0], z: [0, 0, 1]}}\n",  // 7

@@ -59,7 +59,9 @@ TEST(RobotFiles, HomeClosesEveryLeg) {
 // The hexapod with axial leg springs only: K = J^T diag(k) J, J's rows (u_i, r_i x u_i) from the
 // unit leg directions u_i and the platform joints r_i relative to the tool point (Gosselin 1990).
 // The two routes share no code beyond the solved posture's joint positions, which are recomputed
-// here from the platform pose. Round-off of the VJM's SVD-based stiffness: ~1e-12; bound 1e-9.
+// here from the platform pose. Round-off of the VJM's SVD-based stiffness: ~1e-12; bound 1e-9. MSA
+// too: its legs, rigid but for their joints, close loops of exact ties, which msa eliminates as
+// constraints after the trees of ties (msa/dof_map.hpp); measured MEASURED relative.
 TEST(RobotFiles, HexapodMatchesGosselin) {
   auto model = std::make_shared<const RobotModel>(load("hexapod.yaml"));
   const double k = param(*model, "leg_stiffness") * 1e3;  // N/mm -> N/m
@@ -86,6 +88,14 @@ TEST(RobotFiles, HexapodMatchesGosselin) {
     }
     const Mat6 expected = k * J.transpose() * J;
     EXPECT_LT((K->stiffness - expected).norm(), 1e-9 * expected.norm());
+    const auto s = robot_msa_structure(*model, p);
+    ASSERT_TRUE(s.ok()) << s.status().message();
+    msa::Workspace ws;
+    const auto Km = msa::cartesian_stiffness(*s, ws, *s->report_node());
+    ASSERT_TRUE(Km.ok() && Km->stiffness_defined) << (Km.ok() ? Km->note : Km.status().message());
+    const double d = (Km->stiffness - expected).norm() / expected.norm();
+    EXPECT_LT(d, 1e-9);
+    std::printf("hexapod at (%g, %g, %g): MSA - J^T diag(k) J %.1e relative\n", pose(0), pose(1), pose(2), d);
   }
 }
 
