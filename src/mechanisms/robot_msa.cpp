@@ -269,6 +269,8 @@ class Builder {
 
   // Each tie makes one of its nodes a slave: orient the ties as trees from the base, the platform
   // and then any body, so that every body has at most one incoming tie (whose node is its master).
+  // A tie that reaches a body already reached closes a loop: it stays as it is, and msa eliminates it
+  // as a constraint on the trees' unknowns (msa/dof_map.hpp).
   Status orient_ties() {
     const int nb = static_cast<int>(parent_.size());
     std::vector<std::vector<int>> adj(nb);
@@ -296,7 +298,7 @@ class Builder {
           if (used[c]) continue;
           used[c] = true;
           const int v = conn_[c].body1 == u ? conn_[c].body2 : conn_[c].body1;
-          if (seen[v]) continue;  // closes a loop of ties: msa eliminates it as a constraint (dof_map.hpp)
+          if (seen[v]) continue;  // a loop (above)
           seen[v] = true;
           incoming_[v] = c;
           queue.push_back(v);
@@ -307,11 +309,10 @@ class Builder {
   }
 
   Status loop(const Connection& c) const {
-    return invalid(fmt::format(
-        "{} closes a loop of rigid constraints: in MSA a joint's rigid components are exact ties, which cannot close "
-        "a loop base - legs - platform; every leg but one needs an element between the base and the platform (a link "
-        "with a `beam:` or a `spring:`, or a joint `spring:`), or use the VJM (--method vjm)",
-        c.label));
+    return invalid(
+        fmt::format("{} ties a rigid body of the MSA model to itself (both its sides are one body): give the joint a "
+                    "`spring:` or the links between its sides a `beam:`, or use the VJM (--method vjm)",
+                    c.label));
   }
 
   int add_node(const Vec3& p, const std::string& what) {

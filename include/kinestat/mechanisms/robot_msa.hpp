@@ -15,8 +15,9 @@ namespace kinestat::mechanisms {
 // - a link's `beam` is a beam element with the beam's material, section, theory and axes (the
 //   spring's: x along the beam, y the section's y), from `length` before the link's end to its end:
 //   the cantilever of the VJM spring, clamped on the body before it;
-// - a 6x6 spring (a link's `spring:` at its end, a joint's before its motion) is a joint element
-//   between coincident nodes in the spring's axes, which must make it diagonal;
+// - a 6x6 spring (a link's `spring:` at its end, a joint's before its motion; a parallelogram's
+//   bars' at its `to`, at the posture's angle) is a joint element between coincident nodes in the
+//   spring's axes, its off-diagonal terms the element's coupling (msa::Joint::coupling);
 // - each robot joint is a joint element between coincident nodes (a parallelogram's at its `to`)
 //   in a frame that splits its motion: the free components released (0), an actuated coordinate
 //   its actuator's stiffness (through the frame: k / sin^2 of the angle between a universal
@@ -24,11 +25,11 @@ namespace kinestat::mechanisms {
 //   a joint's spring and the joint are one element when both are diagonal in the spring's axes
 //   (components in series: the built-in five-bar's joints), else two about a node between them;
 // - the platform node at the tool point, the report node (Structure::report_node()).
-// Rigid components are exact: the structure's ties (master-slave elimination), which must form
-// trees, so every closed loop base - legs - platform must pass through an element (a beam or a
-// spring); a robot whose legs are rigid but for their joints' free and actuated motions (the
-// bundled hexapod) has loops of ties and is refused. kInvalidInput naming the item: such a loop, a
-// 6x6 spring with couplings in its axes, a leg locked from the base to the platform.
+// Rigid components are exact: the structure's ties (master-slave elimination along trees from the
+// base and the platform); a tie that closes a loop base - legs - platform (a robot whose legs are
+// rigid but for their joints' motions: the bundled hexapod) is a constraint that msa eliminates
+// after the trees (msa/dof_map.hpp). kInvalidInput naming the item: a leg locked from the base to
+// the platform, a tie between the two sides of one body.
 StatusOr<msa::Structure> robot_msa_structure(const RobotModel& model, const RobotPosture& posture);
 
 }  // namespace kinestat::mechanisms
