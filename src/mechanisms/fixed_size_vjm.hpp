@@ -38,7 +38,7 @@ inline Vec6 couple(const Vec3& m) {
 // The spring between a parallelogram's plates (the Pa joint of eq. 22) at bar angle q (c = cos q,
 // s = sin q): two bars of length L, `width` apart along z, pinned about y at both plates, each of
 // compliance `bar` in its own axes (x along the bar, y the pins' axis) as a cantilever. In the plates'
-// axes (x: the bars at q = 0, y: the pins, z = x y), about the distal plate's centre L R_y(q) e_x:
+// axes (x: the bars at q = 0, y: the pins, z = x cross y), about the distal plate's centre L R_y(q) e_x:
 // each bar transmits forces along itself and y and moments about x and z through its distal pin,
 // and the two add; along the plates' free translation u = R_y(q) e_z it adds k0 u u^T, k0 the
 // trace of the translational block (the passive q takes that motion, so k0 does not matter). This

@@ -74,7 +74,7 @@ struct RobotBeam {
 // from hinge to hinge (`to - at`), `width` apart across the joint, pinned about its axis at both
 // plates. Their spring between the plates depends on the joint's angle (robot_parallelogram_spring).
 struct RobotParallelogramBars {
-  RobotBeam beam;                 // one bar: its section's y along the hinges' axis, z = x y
+  RobotBeam beam;                 // one bar: its section's y along the hinges' axis, z = x cross y
   double width = 0.0;             // m between the two bars' axes
   Mat6 stiffness = Mat6::Zero();  // one bar's cantilever spring (vjm::cantilever_spring) in its axes
 };
@@ -98,7 +98,7 @@ struct RobotJoint {
 };
 
 // The spring of a parallelogram joint's bars between its plates at its coordinate q (rad), about
-// `to` in the axes (x along to - at, y the joint's axis, z = x y) of the frame before the joint
+// `to` in the axes (x along to - at, y the joint's axis, z = x cross y) of the frame before the joint
 // (the plate does not turn): each bar's cantilever pinned at both plates, the two summed, plus a
 // stiffness along the plates' free translation that the joint's motion makes irrelevant
 // (fixed_size_vjm.hpp, parallelogram_stiffness; eq. 22 of Pashkevich et al. 2009). Its axes are
@@ -240,7 +240,7 @@ class RobotModel {
   // one pose component (0..5: x y z rx ry rz). Every leg's six (planar: x, y, rz) unless the legs
   // over-constrain the platform (an overconstrained robot, e.g. the Orthoglide 3-PRPaR: the
   // constraint moments of its three legs span three rotations twice): then as many independent
-  // ones as the unknowns need, chosen at home; the others (redundant_components) hold by the
+  // ones as the unknowns need, chosen at home; the others (redundant_equations) hold by the
   // geometry, and solve_posture checks them at every solution.
   struct ClosureEquation {
     int leg = 0, component = 0;
