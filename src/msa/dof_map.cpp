@@ -257,15 +257,41 @@ VecX remove_loop_forces(const Structure& s, const DofMap& map, const VecX& resid
   return out;
 }
 
-VecX prescribed_displacements(const Structure& s, const LoadCase& lc) {
+VecX prescribed_displacements(const Structure& s, const DofMap& map, const LoadCase& lc) {
   VecX u0 = VecX::Zero(s.num_dofs());
+  if (lc.prescribed.empty()) return u0;
   for (const auto& p : lc.prescribed) {
     Mat3 f = Mat3::Identity();
     for (const auto& sup : s.supports())
       if (sup.node == p.node) f = sup.frame;
     u0.segment<6>(6 * p.node) += rotation6(f).col(p.dof) * p.value;
   }
-  return u0;
+  // Down the trees of ties, masters before their slaves (by depth).
+  const int nn = static_cast<int>(s.nodes().size());
+  std::vector<std::pair<int, int>> order;  // (depth, node) of the tied nodes
+  for (int n = 0; n < nn; ++n) {
+    int depth = 0;
+    for (int m = n; map.slave_of_tie[m] >= 0; m = map.ties[map.slave_of_tie[m]].master) ++depth;
+    if (depth > 0) order.emplace_back(depth, n);
+  }
+  std::sort(order.begin(), order.end());
+  for (const auto& [depth, n] : order) {
+    const auto& tie = map.ties[map.slave_of_tie[n]];
+    const Mat6 R = rotation6(tie.frame);
+    const Mat6 M = R * mask_projector(tie.mask, true) * R.transpose() *
+                   rigid_transfer(s.nodes()[n].position - s.nodes()[tie.master].position);
+    u0.segment<6>(6 * n) += M * u0.segment<6>(6 * tie.master);
+  }
+  if (map.loop_rows.empty()) return u0;
+  VecX c(static_cast<int>(map.loop_rows.size()));
+  for (std::size_t k = 0; k < map.loop_rows.size(); ++k) {
+    const auto& tie = map.ties[map.loop_rows[k].tie];
+    const Mat6 A = rigid_transfer(s.nodes()[tie.slave].position - s.nodes()[tie.master].position);
+    const Vec6 gap = u0.segment<6>(6 * tie.slave) - A * u0.segment<6>(6 * tie.master);
+    c(static_cast<int>(k)) = rotation6(tie.frame).col(map.loop_rows[k].component).dot(gap);
+  }
+  const VecX dq = map.loop_G.colPivHouseholderQr().solve(-c);
+  return u0 + map.tree_C * dq;
 }
 
 VecX nodal_loads(const Structure& s, const LoadCase& lc) {

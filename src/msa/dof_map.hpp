@@ -51,8 +51,11 @@ StatusOr<DofMap> build_dof_map(const Structure& s);
 // loop_rows entry, in its tie's frame: the force on the slave); the residual as it is without loops.
 VecX remove_loop_forces(const Structure& s, const DofMap& map, const VecX& residual, VecX& forces);
 
-// Prescribed nodal displacements of a load case (6N, global axes).
-VecX prescribed_displacements(const Structure& s, const LoadCase& lc);
+// Prescribed nodal displacements of a load case (6N, global axes): at the supported nodes, and
+// carried by the ties to their slaves (a slave's tied components follow its master's prescribed
+// motion) and by the loops' constraints (u0 + tree_C dq with loop_G dq = -(the constraints at u0)),
+// so that u = C q + u0 satisfies every tie for any q.
+VecX prescribed_displacements(const Structure& s, const DofMap& map, const LoadCase& lc);
 
 // Nodal loads of a load case (6N, global axes).
 VecX nodal_loads(const Structure& s, const LoadCase& lc);

@@ -109,7 +109,8 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   const int nn = static_cast<int>(s.nodes().size());
   const VecX pdelta = g ? VecX(g->global * u) : VecX::Zero(u.size());  // K_G u
   const VecX applied = f - pdelta;
-  const VecX residual = sys.K * u + pdelta - f;  // reactions at supports, constraint forces at tied nodes
+  const VecX residual = sys.K * u + pdelta - f;        // reactions at supports, constraint forces at tied nodes
+  const VecX terms = sys.K.cwiseAbs() * u.cwiseAbs();  // the size of the members' force terms summed in K u
   VecX loop_forces;
   const VecX tree_residual = remove_loop_forces(s, sys.map, residual, loop_forces);
   std::vector<Vec6> tie_forces;
@@ -119,7 +120,9 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
   // Scale of the loads and reactions, each term taken on its own (not their net sum at a node, which
   // is zero where a support takes a load directly), forces times the structure size so that forces
   // and moments share one unit (N m): a pure-moment case then compares the round-off in its
-  // resultant force with its moments, not with the round-off reactions themselves.
+  // resultant force with its moments, not with the round-off reactions themselves. The terms of K u
+  // count too (|K| |u|): a rigid settlement leaves loads, reactions and K u at the round-off of
+  // those terms, which is what it is measured against.
   const double size = s.length_scale();
   double scale = 0.0;
   for (int n = 0; n < nn; ++n) {
@@ -137,6 +140,8 @@ LoadCaseResult post_process(const Structure& s, const System& sys, const LoadCas
       r.resultant.tail<3>() += w.tail<3>() + x.cross(w.head<3>());
       scale += w.tail<3>().norm() + (size + x.norm()) * w.head<3>().norm();
     }
+    const Vec6 e = terms.segment<6>(6 * n);
+    scale += e.tail<3>().norm() + (size + x.norm()) * e.head<3>().norm();
   }
   const double unbalance = size * r.resultant.head<3>().norm() + r.resultant.tail<3>().norm();
   r.equilibrium_error = scale > 0 ? unbalance / scale : 0.0;
@@ -190,12 +195,12 @@ struct CaseLoads {
   VecX F, U0;
   std::vector<Vec12> fef;
 };
-StatusOr<CaseLoads> case_loads(const Structure& s, const LoadCase& lc) {
+StatusOr<CaseLoads> case_loads(const Structure& s, const DofMap& map, const LoadCase& lc) {
   auto fef = fixed_end_forces(s, lc);
   if (!fef.ok()) return fef.status();
   CaseLoads c;
   c.F = nodal_loads(s, lc) + equivalent_nodal_loads(s, *fef);
-  c.U0 = prescribed_displacements(s, lc);
+  c.U0 = prescribed_displacements(s, map, lc);
   c.fef = std::move(*fef);
   return c;
 }
@@ -266,7 +271,7 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   MatX F(s.num_dofs(), nc), U0(s.num_dofs(), nc);
   std::vector<std::vector<Vec12>> fef(nc);  // per case: member loads' fixed-end forces per beam
   for (int c = 0; c < nc; ++c) {
-    auto loads = case_loads(s, s.load_cases()[c]);
+    auto loads = case_loads(s, sys->map, s.load_cases()[c]);
     if (!loads.ok()) {
       sol.status = loads.status();
       return sol;
@@ -349,7 +354,7 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
   const int nc = static_cast<int>(s.load_cases().size());
   for (int c = 0; c < nc; ++c) {
     const LoadCase& lc = s.load_cases()[c];
-    auto loads = case_loads(s, lc);
+    auto loads = case_loads(s, sys->map, lc);
     if (!loads.ok()) return fail(loads.status());
     VecX u_prev(s.num_dofs());
     for (int n = 0; n < static_cast<int>(s.nodes().size()); ++n)

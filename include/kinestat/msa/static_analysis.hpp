@@ -64,7 +64,7 @@ struct LoadCaseResult {
   // Sum of loads and reactions (force, moment about origin): ~0. Second order: of loads, reactions and
   // the P-Delta forces -K_G u (their moment is that of the axial forces on the deflected members).
   Vec6 resultant = Vec6::Zero();
-  double equilibrium_error = 0.0;  // |resultant| / (|loads| + |reactions|), forces times the model size
+  double equilibrium_error = 0.0;  // |resultant| / (|loads| + |reactions| + |K| |u|), forces times the model size
   double free_dof_residual = 0.0;  // ||C'(K u - f)|| / ||C' f||
   double max_translation = 0.0;
   int max_translation_node = -1;
