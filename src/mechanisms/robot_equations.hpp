@@ -9,6 +9,10 @@
 
 namespace kinestat::mechanisms {
 
+// A planar robot's pose components (x y rz of x y z rx ry rz): its closure equations and platform
+// unknowns.
+inline constexpr int kPlanarComponents[3] = {0, 1, 5};
+
 // Unknowns: the joint coordinates (model.coordinates() order), then the platform's twist
 // components (x y z rx ry rz; planar: x y rz). Equations: each leg's closure (its end minus the
 // tool pose: 6, planar 3), then the task coordinates minus their targets.

@@ -15,7 +15,6 @@
 namespace kinestat::mechanisms {
 namespace {
 
-constexpr int kPlanarComponents[3] = {0, 1, 5};
 constexpr double kTolerance = 1e-12;  // scaled residual (m / length scale, rad): ~1e4 eps
 constexpr int kMaxNewton = 25;
 constexpr double kMaxNewtonStep = 0.3;      // scaled: a larger step is shortened (damped Newton)

@@ -337,7 +337,7 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
         m.num_q_, e, unknowns, d.legs.size(), e, d.task.size(), equations));
   for (int l = 0; l < static_cast<int>(d.legs.size()); ++l) {
     m.closure_offset_.push_back(static_cast<int>(m.closure_.size()));
-    for (int i = 0; i < e; ++i) m.closure_.push_back({l, d.planar ? (i == 2 ? 5 : i) : i});
+    for (int i = 0; i < e; ++i) m.closure_.push_back({l, d.planar ? kPlanarComponents[i] : i});
   }
   m.closure_offset_.push_back(static_cast<int>(m.closure_.size()));
   m.length_scale_ = scale > 0.0 ? scale : 1.0;

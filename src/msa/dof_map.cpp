@@ -43,8 +43,7 @@ void eliminate_loops(const Structure& s, const std::vector<int>& loop_ties, cons
   std::vector<VecX> g;
   for (int t : loop_ties) {
     const auto& tie = map.ties[t];
-    const Mat6 A = rigid_transfer(s.nodes()[tie.slave].position - s.nodes()[tie.master].position);
-    const MatX D = rotation6(tie.frame).transpose() * (dense(tie.slave) - A * dense(tie.master));
+    const MatX D = rotation6(tie.frame).transpose() * (dense(tie.slave) - tie_transfer(s, tie) * dense(tie.master));
     for (int i = 0; i < 6; ++i)
       if (tie.mask[i]) {
         all.push_back({t, i});
@@ -109,6 +108,28 @@ void eliminate_loops(const Structure& s, const std::vector<int>& loop_ties, cons
 }
 
 }  // namespace
+
+Mat6 tie_transfer(const Structure& s, const DofMap::Tie& tie) {
+  return rigid_transfer(s.nodes()[tie.slave].position - s.nodes()[tie.master].position);
+}
+
+Mat6 tied_transfer(const Structure& s, const DofMap::Tie& tie) {
+  const Mat6 R = rotation6(tie.frame);
+  return R * mask_projector(tie.mask, true) * R.transpose() * tie_transfer(s, tie);
+}
+
+std::vector<int> tied_nodes_by_depth(const DofMap& map) {
+  std::vector<std::pair<int, int>> order;  // (depth, node)
+  for (int n = 0; n < static_cast<int>(map.slave_of_tie.size()); ++n) {
+    int depth = 0;
+    for (int m = n; map.slave_of_tie[m] >= 0; m = map.ties[map.slave_of_tie[m]].master) ++depth;
+    if (depth > 0) order.emplace_back(depth, n);
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<int> nodes;
+  for (const auto& [depth, n] : order) nodes.push_back(n);
+  return nodes;
+}
 
 StatusOr<DofMap> build_dof_map(const Structure& s) {
   const int nn = static_cast<int>(s.nodes().size());
@@ -215,9 +236,7 @@ StatusOr<DofMap> build_dof_map(const Structure& s) {
     if (t >= 0) {
       const auto& tie = map.ties[t];
       if (Status st = resolve(tie.master); !st.ok()) return st;
-      // u_s = R P_tied R^T A u_m + (own free components), A: rigid transfer from master to slave.
-      const Mat6 M = R * mask_projector(tie.mask, true) * R.transpose() *
-                     rigid_transfer(s.nodes()[n].position - s.nodes()[tie.master].position);
+      const Mat6 M = tied_transfer(s, tie);
       for (int row = 0; row < 6; ++row)
         for (int k = 0; k < 6; ++k)
           if (M(row, k) != 0.0)
@@ -250,9 +269,8 @@ VecX remove_loop_forces(const Structure& s, const DofMap& map, const VecX& resid
   for (std::size_t k = 0; k < map.loop_rows.size(); ++k) {
     const auto& tie = map.ties[map.loop_rows[k].tie];
     const Vec6 on_slave = rotation6(tie.frame).col(map.loop_rows[k].component) * forces(static_cast<int>(k));
-    const Mat6 A = rigid_transfer(s.nodes()[tie.slave].position - s.nodes()[tie.master].position);
     out.segment<6>(6 * tie.slave) -= on_slave;
-    out.segment<6>(6 * tie.master) += A.transpose() * on_slave;
+    out.segment<6>(6 * tie.master) += tie_transfer(s, tie).transpose() * on_slave;
   }
   return out;
 }
@@ -266,28 +284,15 @@ VecX prescribed_displacements(const Structure& s, const DofMap& map, const LoadC
       if (sup.node == p.node) f = sup.frame;
     u0.segment<6>(6 * p.node) += rotation6(f).col(p.dof) * p.value;
   }
-  // Down the trees of ties, masters before their slaves (by depth).
-  const int nn = static_cast<int>(s.nodes().size());
-  std::vector<std::pair<int, int>> order;  // (depth, node) of the tied nodes
-  for (int n = 0; n < nn; ++n) {
-    int depth = 0;
-    for (int m = n; map.slave_of_tie[m] >= 0; m = map.ties[map.slave_of_tie[m]].master) ++depth;
-    if (depth > 0) order.emplace_back(depth, n);
-  }
-  std::sort(order.begin(), order.end());
-  for (const auto& [depth, n] : order) {
+  for (int n : tied_nodes_by_depth(map)) {  // down the trees of ties
     const auto& tie = map.ties[map.slave_of_tie[n]];
-    const Mat6 R = rotation6(tie.frame);
-    const Mat6 M = R * mask_projector(tie.mask, true) * R.transpose() *
-                   rigid_transfer(s.nodes()[n].position - s.nodes()[tie.master].position);
-    u0.segment<6>(6 * n) += M * u0.segment<6>(6 * tie.master);
+    u0.segment<6>(6 * n) += tied_transfer(s, tie) * u0.segment<6>(6 * tie.master);
   }
   if (map.loop_rows.empty()) return u0;
   VecX c(static_cast<int>(map.loop_rows.size()));
   for (std::size_t k = 0; k < map.loop_rows.size(); ++k) {
     const auto& tie = map.ties[map.loop_rows[k].tie];
-    const Mat6 A = rigid_transfer(s.nodes()[tie.slave].position - s.nodes()[tie.master].position);
-    const Vec6 gap = u0.segment<6>(6 * tie.slave) - A * u0.segment<6>(6 * tie.master);
+    const Vec6 gap = u0.segment<6>(6 * tie.slave) - tie_transfer(s, tie) * u0.segment<6>(6 * tie.master);
     c(static_cast<int>(k)) = rotation6(tie.frame).col(map.loop_rows[k].component).dot(gap);
   }
   const VecX dq = map.loop_G.colPivHouseholderQr().solve(-c);

@@ -47,6 +47,14 @@ struct DofMap {
 
 StatusOr<DofMap> build_dof_map(const Structure& s);
 
+// A tie's rigid transfer from its master's motion to its slave's point (core/frame.hpp), A, and the
+// tie itself in global axes, R P_tied R^T A: u_s = that u_m + the slave's own free components.
+Mat6 tie_transfer(const Structure& s, const DofMap::Tie& tie);
+Mat6 tied_transfer(const Structure& s, const DofMap::Tie& tie);
+
+// The trees' slaves (nodes with slave_of_tie >= 0), masters before their slaves (by depth).
+std::vector<int> tied_nodes_by_depth(const DofMap& map);
+
 // The residual K u - f (6N) with the loops' constraint forces taken out, and those forces (one per
 // loop_rows entry, in its tie's frame: the force on the slave); the residual as it is without loops.
 VecX remove_loop_forces(const Structure& s, const DofMap& map, const VecX& residual, VecX& forces);

@@ -75,14 +75,9 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
 VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& residual, std::vector<Vec6>& tie_forces) {
   tie_forces.assign(map.ties.size(), Vec6::Zero());
   VecX carried = residual;
-  const int nn = static_cast<int>(s.nodes().size());
-  std::vector<int> depth(nn, 0), order;
-  for (int n = 0; n < nn; ++n) {
-    for (int m = n; map.slave_of_tie[m] >= 0; m = map.ties[map.slave_of_tie[m]].master) ++depth[n];
-    if (depth[n] > 0) order.push_back(n);
-  }
-  std::sort(order.begin(), order.end(), [&depth](int a, int b) { return depth[a] > depth[b]; });
-  for (int n : order) {
+  const std::vector<int> order = tied_nodes_by_depth(map);
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {  // the deepest slaves first
+    const int n = *it;
     const auto& tie = map.ties[map.slave_of_tie[n]];
     const Mat6 R = rotation6(tie.frame);
     Vec6 tied = R.transpose() * carried.segment<6>(6 * n);
@@ -90,8 +85,7 @@ VecX carry_ties_to_masters(const Structure& s, const DofMap& map, const VecX& re
       if (!tie.mask[i]) tied(i) = 0.0;  // the free components are the slave's own (zero at equilibrium)
     tie_forces[map.slave_of_tie[n]] = tied;
     const Vec6 on_slave = R * tied;
-    const Mat6 A = rigid_transfer(s.nodes()[n].position - s.nodes()[tie.master].position);
-    carried.segment<6>(6 * tie.master) += A.transpose() * on_slave;
+    carried.segment<6>(6 * tie.master) += tie_transfer(s, tie).transpose() * on_slave;
     carried.segment<6>(6 * n) -= on_slave;
   }
   return carried;
