@@ -11,6 +11,10 @@ namespace kinestat::mechanisms::fixed_vjm {
 
 namespace {
 
+// A chord step is kept while it divides the largest residual (in units of its tolerance) by this at
+// least, and not below kFloor of the tolerances, the round-off floor (relative residuals of 1e-15).
+constexpr double kChordContraction = 0.1, kFloor = 1e-3;
+
 using BorderedMatrix =
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxCoordinates + 6, kMaxCoordinates + 6>;
 using BorderedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxCoordinates + 6, 1>;
@@ -35,8 +39,8 @@ Pose displace(const Pose& T, const Vec6& d) {
 }  // namespace
 
 void FixedChain::clear() {
+  K_.topLeftCorner(m_, m_).setZero();  // the rest is zero already: the springs fill only this corner
   size_ = n_ = m_ = 0;
-  K_.setZero();
 }
 
 void FixedChain::add_transform(const Mat3& R, const Vec3& p) {
@@ -177,13 +181,13 @@ Pose FixedChain::kinematics(const CoordinateVector& x, ChainJacobian& J, const V
 
 namespace {
 
-// A chain's residuals of eq. (11) at (x, F) for a target pose, with the Jacobian and H (a Newton
-// step needs both, a chord step only the residuals; the last Newton step's serve the loaded
-// stiffness: one walk of the chain per iterate).
+// A chain's residuals of eq. (11) at (x, F) for a target pose, with the walk and the Jacobian, and H
+// where a Newton step or the loaded stiffness needs it (a chord step needs only the residuals): one
+// walk of the chain per iterate.
 struct Linearization {
   ChainWalk walk;
   ChainJacobian J;
-  CoordinateMatrix H;  // when linearize() computed it (with_hessian), or FixedChain::hessian from walk
+  CoordinateMatrix H;  // FixedChain::hessian from walk, where a Newton step needs it
   Vec6 r;              // target - f(x) as a twist
   CoordinateVector g;  // (J_q^T F, J_theta^T F - K_theta theta)
   double kin = 0, stat = 0;
@@ -192,10 +196,9 @@ struct Linearization {
 
 // vjm::chain_equilibrium's residuals and scaling (w: the chain's twist scale).
 void linearize(const FixedChain& c, const Pose& target, const Vec6& w, const CoordinateVector& x, const Vec6& F,
-               Linearization& l, bool with_hessian = true) {
+               Linearization& l) {
   const int n = c.num_passive(), m = c.num_virtual();
   c.walk(x, l.walk, l.J);
-  if (with_hessian) c.hessian(l.walk, F, l.H);
   l.r = pose_difference(target, l.walk.T);
   l.kin = l.r.cwiseProduct(w).norm();
   l.g = l.J.transpose() * F;
@@ -217,50 +220,110 @@ void newton_matrix(const FixedChain& c, const Vec6& w, const Linearization& l, B
   A.bottomRightCorner(n + m, 6) = l.J.transpose() * w.asDiagonal();
 }
 
+using Forward = Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7>;
+
+// A Newton step's condensation of chain c at l (its H included): the Newton matrix factored into
+// lu and perm; x = L^-1 P of the residual (column 0) and of the target's six unit moves (columns 1-6);
+// the wrench rows of their solutions, which need only the last six rows of U: the wrench step
+// (column 0) and the chain's dF/dt, K (eq. 21 as the Schur complement of the Newton matrix). False
+// at a zero pivot or a value not finite.
+template <class Perm>
+bool condense(const FixedChain& c, const Vec6& w, const Linearization& l, BorderedMatrix& lu, Perm& perm, Forward& x,
+              Vec6& wrench_step, Mat6& K) {
+  newton_matrix(c, w, l, lu);
+  if (!gauss_factor(lu, perm)) return false;
+  x.setZero(lu.rows(), 7);
+  x.col(0) << l.r.cwiseProduct(w), -l.g;
+  x.topRightCorner<6, 6>() = w.asDiagonal();  // the target moved by a unit twist
+  gauss_forward(lu, perm, x);
+  Eigen::Matrix<double, 6, 7> last = x.bottomRows<6>();
+  gauss_backward(lu.bottomRightCorner(6, 6), last);
+  if (!last.allFinite()) return false;
+  wrench_step = last.col(0);
+  K = w.asDiagonal() * last.rightCols<6>();
+  return true;
+}
+
 }  // namespace
 
 // Eq. (11) by Newton-Raphson from s, with vjm::chain_equilibrium's residuals, scaling, tolerance and
-// backtracking; s is the converged state on return (true) or unspecified (false).
+// backtracking; s is the converged state on return (true) or unspecified (false). After a Newton step a
+// step may be a chord step (the residuals solved with that step's factors), kept where it divides the
+// merit by kChordContraction at least, as in coupled_equilibrium; elsewhere a Newton step. Once within
+// the tolerances, chord steps go on to the round-off floor (the first that no longer contracts is
+// dropped), where the loaded stiffness is evaluated, as in coupled_equilibrium. The Hessian at the
+// solution, which that stiffness needs, is computed once at the end.
 bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, int& steps) const {
   const FixedChain& c = chains[i];
   const int n = c.num_passive(), m = c.num_virtual(), N = n + m + 6;
   const Vec6 w = twist_scale(c.length_scale());
-  const auto done = [&](const Linearization& l) {
-    return l.kin <= equilibrium_tolerance && l.stat <= equilibrium_tolerance;
+  const auto within = [&](const Linearization& l, double share) {
+    return l.kin <= share * equilibrium_tolerance && l.stat <= share * equilibrium_tolerance;
   };
+  const auto done = [&](const Linearization& l) { return within(l, 1.0); };
   Linearization lin, trial;
-  s.linearized = false;
+  s.linearized = s.condensed = false;
   linearize(c, target, w, s.x, s.wrench, lin);
   BorderedMatrix A(N, N);
+  std::array<int, kMaxCoordinates + 6> perm;
   BorderedVector b(N);
+  bool factored = false;
+  const auto take = [&](const BorderedVector& d, double step) {
+    linearize(c, target, w, s.x + step * d.head(n + m), s.wrench + step * d.tail<6>().cwiseProduct(w), trial);
+  };
+  const auto accept = [&](const BorderedVector& d, double step) {
+    s.x += step * d.head(n + m);
+    s.wrench += step * d.tail<6>().cwiseProduct(w);
+    std::swap(lin, trial);
+  };
   // At least one step: under a prescribed wrench the outer iteration moves the target by less than
   // the tolerance near convergence, and a chain left where it was would stall it.
-  for (int it = 0; it == 0 || !done(lin); ++it) {
+  bool floor = false;
+  for (int it = 0; it == 0 || !done(lin) || (factored && !floor && !within(lin, kFloor)); ++it) {
     if (it >= max_iterations) return false;
-    ++steps;
-    newton_matrix(c, w, lin, A);
     b << lin.r.cwiseProduct(w), -lin.g;
-    if (!gauss_solve(A, b) || !b.allFinite()) return false;
-    const BorderedVector& d = b;
+    if (factored) {
+      gauss_substitute(A, perm, b);
+      if (b.allFinite()) {
+        take(b, 1.0);
+        if (trial.merit() < kChordContraction * lin.merit()) {
+          accept(b, 1.0);
+          continue;
+        }
+      }
+      if (done(lin)) {
+        floor = true;
+        continue;
+      }
+      b << lin.r.cwiseProduct(w), -lin.g;
+    }
+    ++steps;
+    c.hessian(lin.walk, s.wrench, lin.H);
+    newton_matrix(c, w, lin, A);
+    if (!gauss_factor(A, perm)) return false;
+    factored = true;
+    gauss_substitute(A, perm, b);
+    if (!b.allFinite()) return false;
     double step = 1.0;
     for (int k = 0; k < 20; ++k, step *= 0.5) {
-      const CoordinateVector x = s.x + step * d.head(n + m);
-      const Vec6 F = s.wrench + step * d.tail<6>().cwiseProduct(w);
-      linearize(c, target, w, x, F, trial);
+      take(b, step);
       // Backtracking is for steps from afar: a step taken from a state that already meets the
       // tolerances (the first step of a warm or nested re-solve) is kept, since at the round-off floor
       // the merit need not decrease and 20 halvings would each walk the chain for nothing.
       if (trial.merit() < lin.merit() || done(lin) || k == 19) {
-        s.x = x;
-        s.wrench = F;
-        std::swap(lin, trial);
+        accept(b, step);
         break;
       }
     }
   }
+  // The chain's loaded stiffness at the solution, as a Newton step there condenses it.
+  c.hessian(lin.walk, s.wrench, lin.H);
+  Forward x;
+  Vec6 wrench_step;
+  if (!condense(c, w, lin, A, perm, x, wrench_step, s.K)) return false;
   s.J = lin.J;
   s.H = lin.H;
-  s.linearized = true;
+  s.linearized = s.condensed = true;
   return true;
 }
 
@@ -286,7 +349,6 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
 // the chord steps.
 bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps, bool monotone) {
   constexpr int kMaxNewtonSteps = 8, kMaxChordSteps = 8;
-  constexpr double kChordContraction = 0.1;
   const Vec6 w = twist_scale(length_scale_);
   const double ref = wrench.cwiseQuotient(w).norm();
   std::array<Linearization, kMaxChains> lin;
@@ -314,7 +376,7 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
     Vec6 total = Vec6::Zero();
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
-      linearize(chains[i], displace(nominal_[i], d), wc[i], s.x, s.wrench, lin[i], false);
+      linearize(chains[i], displace(nominal_[i], d), wc[i], s.x, s.wrench, lin[i]);
       merit = std::max({merit, lin[i].kin, lin[i].stat});
       total += s.wrench;
     }
@@ -324,8 +386,12 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
     const bool converged = merit <= 1.0;
     if (monotone && after_newton && !converged && merit >= last_merit) return false;
     // A chord step while they contract; converged, the last one is a Newton step from the state at
-    // which they stop contracting (the round-off floor), so that K is that state's.
-    const bool chord = factored && merit < kChordContraction * last_merit && chord_steps < kMaxChordSteps;
+    // which they stop contracting or are within kFloor of the tolerances (the round-off floor: 1e-15
+    // relative residuals), so that K is that state's: at a posture of condition number 1e7 a state
+    // within the tolerances but not at the floor moves K's smallest eigenvalue by 1e-6
+    // (tests/mechanisms/posture_kernels_test.cpp).
+    const bool chord =
+        factored && merit < kChordContraction * last_merit && chord_steps < kMaxChordSteps && merit > kFloor;
     const bool last = converged && !chord;
     last_merit = merit;
     after_newton = !chord;
@@ -347,21 +413,10 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
       // Condensed platform system: sum K_i dt = W_ext - sum (F_i + dF_i0), in the platform's scaling.
       Ksum.setZero();
       for (int i = 0; i < num_chains; ++i) {
-        const FixedChain& c = chains[i];
-        const int N = c.num_passive() + c.num_virtual() + 6;
-        c.hessian(lin[i].walk, states_[i].wrench, lin[i].H);
-        newton_matrix(c, wc[i], lin[i], lu[i]);
-        if (!gauss_factor(lu[i], perm[i])) return false;
-        Forward& x = sols[i];
-        x.setZero(N, 7);
-        x.col(0) << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
-        x.topRightCorner<6, 6>() = wc[i].asDiagonal();  // the target moved by a unit twist
-        gauss_forward(lu[i], perm[i], x);
-        Eigen::Matrix<double, 6, 7> last = x.bottomRows<6>();
-        gauss_backward(lu[i].bottomRightCorner(6, 6), last);
-        if (!last.allFinite()) return false;
-        wrench_step[i] = last.col(0);
-        Ksum += wc[i].asDiagonal() * last.rightCols<6>();
+        FixedChainState& s = states_[i];
+        chains[i].hessian(lin[i].walk, s.wrench, lin[i].H);
+        if (!condense(chains[i], wc[i], lin[i], lu[i], perm[i], sols[i], wrench_step[i], s.K)) return false;
+        Ksum += s.K;
       }
       platform_lu.compute(w.cwiseInverse().asDiagonal() * Ksum * w.cwiseInverse().asDiagonal());
       if (!platform_lu.isInvertible()) return false;
@@ -374,11 +429,10 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
     if (!dt.allFinite()) return false;
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
-      const int nm = chains[i].num_passive() + chains[i].num_virtual();
       b = sols[i].col(0) + sols[i].rightCols<6>() * dt;
       gauss_backward(lu[i], b);
       if (!b.allFinite()) return false;
-      s.x += b.head(nm);
+      s.x += b.head(chains[i].num_passive() + chains[i].num_virtual());
       s.wrench += b.tail<6>().cwiseProduct(wc[i]);
     }
     d = pose_difference(displace(displace(nominal_[0], d), dt), nominal_[0]);
@@ -387,15 +441,20 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
   for (int i = 0; i < num_chains; ++i) {
     states_[i].J = lin[i].J;
     states_[i].H = lin[i].H;
-    states_[i].linearized = true;
+    states_[i].linearized = states_[i].condensed = true;
   }
   K = Ksum;
   return true;
 }
 
-// Eq. (21) at a regular posture, as vjm::loaded_stiffness computes it (no rigid direction, so its
+// Eq. (21) at a regular posture: the condensation the equilibrium left (solve_chain,
+// coupled_equilibrium); else as vjm::loaded_stiffness computes it (no rigid direction, so its
 // complement basis is the identity): K = W X W with X the 6x6 top-left block of A^-1.
 bool LoadedPlatform::loaded_stiffness(int i, const FixedChainState& s, Mat6& K) const {
+  if (s.condensed) {
+    K = s.K;
+    return true;
+  }
   const FixedChain& c = chains[i];
   const int n = c.num_passive(), m = c.num_virtual();
   const Vec6 w = twist_scale(c.length_scale());
@@ -469,7 +528,7 @@ void LoadedPlatform::reset_to_rest() {
   for (int i = 0; i < num_chains; ++i) {
     states_[i].x = rest_[i];
     states_[i].wrench.setZero();
-    states_[i].linearized = false;
+    states_[i].linearized = states_[i].condensed = false;
   }
 }
 
@@ -550,24 +609,32 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     }
     return (deflection.cwiseProduct(w) - d0).norm() / (kMaxNonlinearity * d0.norm());
   };
-  if (warm && solved_ && unloaded && within && solved_nonlinearity_ <= kWarmNonlinearityShare) {
+  if (warm && num_solved_ > 0 && unloaded && within && solved_nonlinearity_ <= kWarmNonlinearityShare) {
     // The predictor: the neighbour's equilibrium carried over (each passive joint keeps its deflection
     // from its nominal angle, each spring its deflection, each chain its wrench, the platform its
-    // displacement), extrapolated linearly from the two points before when the path goes straight on
-    // (the secant through them: its error is second order in the step).
-    const bool secant =
-        solved_before_ && (point - 2 * solved_point_ + before_point_).norm() <= 1e-6 * (point - solved_point_).norm();
+    // displacement), extrapolated from the points before where the path goes straight on at their
+    // spacing: the secant through two (its error second order in the step) or the parabola through
+    // three (third order: on the 3-PUU's 5 mm grid under 500 N its residuals start at ~1e-5 where the
+    // secant's were ~2e-4, which saves a chord step).
+    const auto straight = [&](const Vec3& next, int k) {
+      return (next - 2 * solved(k).point + solved(k + 1).point).norm() <= 1e-6 * (next - solved(k).point).norm();
+    };
+    int order = 1;
+    if (num_solved_ >= 2 && straight(point, 0)) order = num_solved_ >= 3 && straight(solved(0).point, 1) ? 3 : 2;
+    static constexpr std::array<std::array<double, 3>, 3> kWeights{{{1, 0, 0}, {2, -1, 0}, {3, -3, 1}}};
+    const std::array<double, 3>& c = kWeights[order - 1];
+    d.setZero();
+    for (int k = 0; k < order; ++k) d += c[k] * solved(k).d;
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
-      s.x = nominal[i] + solved_deflection_[i];
-      s.wrench = solved_wrench_[i];
-      if (secant) {
-        s.x += solved_deflection_[i] - before_deflection_[i];
-        s.wrench += solved_wrench_[i] - before_wrench_[i];
+      s.x = nominal[i];
+      s.wrench.setZero();
+      for (int k = 0; k < order; ++k) {
+        s.x += c[k] * solved(k).deflection[i];
+        s.wrench += c[k] * solved(k).wrench[i];
       }
-      s.linearized = false;
+      s.linearized = s.condensed = false;
     }
-    d = secant ? Vec6(2 * solved_d_ - before_d_) : solved_d_;
     found = equilibrium(displacement, wrench, false, d, K, have_K, r.newton_iterations);
     // The branch test: a warm start follows the neighbour's equilibrium branch, the start from rest
     // may find another where the load softens the robot much (next to a buckling limit, beyond which
@@ -605,10 +672,10 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     d.setZero();
     found = equilibrium(displacement, wrench, true, d, K, have_K, r.newton_iterations);
   }
-  // A secant needs the two points before on this path: not across a start from scratch (a path
+  // An extrapolation needs the points before on this path: not across a start from scratch (a path
   // chunk's first point), whose predecessor in this clone belongs to another chunk.
-  const bool had_solved = warm && solved_;
-  solved_ = solved_before_ = false;
+  const int had_solved = warm ? num_solved_ : 0;
+  num_solved_ = 0;
   r.status = PostureStatus::kFailed;
   if (!found) return;
   r.status = PostureStatus::kSingular;
@@ -621,20 +688,15 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
   r.status = PostureStatus::kOk;
   set_stiffness(r, K, w.cwiseInverse().asDiagonal() * Ct * w.cwiseInverse().asDiagonal());
   r.deflection = d;
-  solved_before_ = had_solved;
-  if (had_solved) {
-    before_point_ = solved_point_;
-    before_deflection_ = solved_deflection_;
-    before_wrench_ = solved_wrench_;
-    before_d_ = solved_d_;
-  }
-  solved_ = true;
-  solved_point_ = point;
+  num_solved_ = std::min<int>(had_solved + 1, kHistory);
+  latest_ = (latest_ + 1) % kHistory;  // over the oldest
+  Solved& latest = solved(0);
+  latest.point = point;
   for (int i = 0; i < num_chains; ++i) {
-    solved_deflection_[i] = states_[i].x - nominal[i];
-    solved_wrench_[i] = states_[i].wrench;
+    latest.deflection[i] = states_[i].x - nominal[i];
+    latest.wrench[i] = states_[i].wrench;
   }
-  solved_d_ = d;
+  latest.d = d;
   solved_nonlinearity_ = nonlinearity(d);
 }
 

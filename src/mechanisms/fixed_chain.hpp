@@ -6,13 +6,14 @@
 // regular postures. A kernel rebuilds its chains in place at every posture: no heap allocation.
 //
 // Differences from the vjm library, which the tests bound: the chain equilibrium is found by
-// Newton-Raphson on all of eq. (11) from the unloaded state (vjm first runs the paper's eq. (15)
-// iteration; both stop at the same 1e-12 residuals), with LU solves where vjm uses rank-revealing
-// decompositions that only matter at singular postures; under a wrench the equilibrium is the coupled
-// iteration's (all chains and the platform at once, docs/vjm.md "Sweep kernels"), from rest or from a
-// neighbouring posture's equilibrium, with vjm's nested iteration (in load increments where it fails)
-// as the fallback from rest, and the loaded stiffness is the Schur complement of its last Newton
-// step's matrices (the same eq. 21 by another elimination).
+// Newton-Raphson (with chord steps) on all of eq. (11) from the unloaded state (vjm first runs the
+// paper's eq. (15) iteration and stops at 1e-12 residuals; these go on to the round-off floor), with
+// LU solves where vjm uses rank-revealing decompositions that only matter at singular postures;
+// under a wrench the equilibrium is the coupled iteration's (all chains and the platform at once,
+// docs/vjm.md "Sweep kernels"), from rest or from a neighbouring posture's equilibrium, with vjm's
+// nested iteration (in load increments where it fails) as the fallback from rest; the loaded
+// stiffness is the Schur complement of a Newton matrix at the solution (the same eq. 21 by another
+// elimination).
 #pragma once
 
 #include <array>
@@ -128,10 +129,12 @@ struct FixedChainState {
   CoordinateVector x;
   Vec6 wrench = Vec6::Zero();
   // When `linearized`: the Jacobian [J_q J_theta] and H = d(J^T F)/dx at (x, wrench), as the
-  // equilibrium's last step left them, so that the loaded stiffness does not walk the chain again.
-  bool linearized = false;
+  // equilibrium's last step left them, so that the loaded stiffness does not walk the chain again;
+  // when `condensed` too, that stiffness K (dF/dt, eq. 21), condensed from a Newton matrix there.
+  bool linearized = false, condensed = false;
   ChainJacobian J;
   CoordinateMatrix H;
+  Mat6 K;
 };
 
 // The platform in loaded mode: its chains, built by the kernel for each posture.
@@ -152,14 +155,14 @@ struct LoadedPlatform {
   // with `warm` and the unloaded platform stiffness `unloaded` of this posture, from the equilibrium
   // of the last posture that ended kOk (the chains rebuilt for the new posture since), carried over:
   // each passive joint keeps its deflection from its nominal angle, each spring its deflection, each
-  // chain its wrench, the platform its displacement (extrapolated from the two postures before when
-  // `point` continues their line). A warm start that does not converge, or whose answer fails the
-  // branch test against `unloaded` (fixed_chain.cpp), is redone from rest.
-  // `point`: the posture's tool point (m), which tells whether the path goes straight on.
+  // chain its wrench, the platform its displacement (extrapolated from the two or three postures
+  // before when `point` continues their line at their spacing). A warm start that does not
+  // converge, or whose answer fails the branch test against `unloaded` (fixed_chain.cpp), is redone
+  // from rest. `point`: the posture's tool point (m), which tells whether the path goes straight on.
   void evaluate(const Vec3& point, const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm,
                 PostureResult& r);
   // The next warm start starts from rest (the previous posture had no equilibrium to carry over).
-  void forget() { solved_ = solved_before_ = false; }
+  void forget() { num_solved_ = 0; }
 
  private:
   bool solve_chain(int i, const Pose& target, FixedChainState& s, int& steps) const;
@@ -181,14 +184,19 @@ struct LoadedPlatform {
   std::array<CoordinateVector, kMaxChains> rest_;  // the chains' nominal coordinates (q0, 0)
   std::array<Pose, kMaxChains> nominal_;
   double length_scale_ = 1.0;
-  // The last kOk posture (solved_) and the one before it (solved_before_: both kOk, one after the
-  // other): the point, each chain's deflection from its nominal coordinates and wrench, the platform
+  // The last kOk postures, one after the other on this path (num_solved_ of them, solved(0) the
+  // latest): the point, each chain's deflection from its nominal coordinates and wrench, the platform
   // displacement.
-  bool solved_ = false, solved_before_ = false;
-  Vec3 solved_point_ = Vec3::Zero(), before_point_ = Vec3::Zero();
-  std::array<CoordinateVector, kMaxChains> solved_deflection_, before_deflection_;
-  std::array<Vec6, kMaxChains> solved_wrench_, before_wrench_;
-  Vec6 solved_d_ = Vec6::Zero(), before_d_ = Vec6::Zero();
+  struct Solved {
+    Vec3 point = Vec3::Zero();
+    std::array<CoordinateVector, kMaxChains> deflection;
+    std::array<Vec6, kMaxChains> wrench;
+    Vec6 d = Vec6::Zero();
+  };
+  static constexpr int kHistory = 3;
+  std::array<Solved, kHistory> solved_;  // a ring: the latest at latest_
+  int num_solved_ = 0, latest_ = 0;
+  Solved& solved(int k) { return solved_[(latest_ + kHistory - k) % kHistory]; }
   // The last kOk posture's departure from the linear deflection (evaluate(), in units of the bound).
   double solved_nonlinearity_ = 0.0;
 };

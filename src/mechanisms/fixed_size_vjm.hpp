@@ -4,7 +4,6 @@
 // chains whose springs are all regular, with the same twist scaling (vjm/bordered_system.hpp).
 #pragma once
 
-#include <array>
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -75,10 +74,18 @@ template <class MatrixA, class Perm>
 bool gauss_factor(MatrixA& A, Perm& perm) {
   const Eigen::Index n = A.rows();
   for (Eigen::Index k = 0; k < n; ++k) {
+    // The pivot: the first largest |A(i, k)|, its value kept (re-reading A(p, k) would chain each
+    // comparison on the last one's load).
     Eigen::Index p = k;
-    for (Eigen::Index i = k + 1; i < n; ++i)
-      if (std::abs(A(i, k)) > std::abs(A(p, k))) p = i;
-    if (!(A(p, k) != 0.0)) return false;
+    double largest = std::abs(A(k, k));
+    for (Eigen::Index i = k + 1; i < n; ++i) {
+      const double v = std::abs(A(i, k));
+      if (v > largest) {
+        largest = v;
+        p = i;
+      }
+    }
+    if (!(largest != 0.0)) return false;
     perm[k] = static_cast<int>(p);
     if (p != k) A.row(p).swap(A.row(k));
     const double pivot = A(k, k);
@@ -113,7 +120,9 @@ void gauss_backward(const MatrixU& U, MatrixB& B) {
   const Eigen::Index n = U.rows(), r = B.cols();
   for (Eigen::Index j = 0; j < r; ++j)
     for (Eigen::Index k = n - 1; k >= 0; --k) {
-      const double x = B(k, j) /= U(k, k);
+      // Times the reciprocal, which does not wait for the rows below: the division's latency is off
+      // the chain of updates from row to row.
+      const double x = B(k, j) *= 1.0 / U(k, k);
       if (x != 0.0)
         for (Eigen::Index i = 0; i < k; ++i) B(i, j) -= U(i, k) * x;
     }
@@ -123,14 +132,6 @@ template <class MatrixA, class Perm, class MatrixB>
 void gauss_substitute(const MatrixA& LU, const Perm& perm, MatrixB& B) {
   gauss_forward(LU, perm, B);
   gauss_backward(LU, B);
-}
-
-template <class MatrixA, class MatrixB>
-bool gauss_solve(MatrixA& A, MatrixB& B) {
-  std::array<int, 64> perm;
-  if (A.rows() > 64 || !gauss_factor(A, perm)) return false;
-  gauss_substitute(A, perm, B);
-  return true;
 }
 
 // The inverse L^-T L^-1 of a symmetric positive definite matrix from its Cholesky factorization:
