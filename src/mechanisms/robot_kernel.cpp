@@ -1,5 +1,8 @@
 #include "kinestat/mechanisms/robot_kernel.hpp"
 
+#include <algorithm>
+#include <array>
+
 #include <fmt/format.h>
 
 #include "kinestat/mechanisms/robot_msa.hpp"
@@ -71,7 +74,8 @@ class RobotKernel final : public PostureKernel {
       : o_(o), axes_(o.map_axes ? *o.map_axes : default_map_axes(*o.model)), data_(make_robot_data(*o.model)) {
     if (o_.task.size() == 0) o_.task = o_.model->home_task();
     task_ = o_.task;
-    posture_ = start_ = previous_ = o_.model->home();
+    posture_ = start_ = o_.model->home();
+    past_.fill(start_);
     if (o_.method == StiffnessMethod::kVjm) {
       chains_ = make_robot_vjm_chains(*o_.model);
       // The regular path's data (K_theta factored once; loaded, the unloaded stiffness that the warm
@@ -86,15 +90,18 @@ class RobotKernel final : public PostureKernel {
     warm_ = false;
     posture_ = o_.model->home();
     set_task(point);
-    predictable_ = false;
-    point_ = point;
+    history_ = 0;
+    points_[0] = point;
     return finish(solve_posture(*o_.model, task_, posture_, data_, true));
   }
 
   // Newton from the previous point's posture; along a row of the map's path (the same grid step as
-  // the last one) from the linear extrapolation of the last two postures, whose error is second
-  // order in the step (a Newton iteration fewer). A start that fails is retried from the previous
-  // posture, then by the walk from home: the same branch tests accept the answer either way. A
+  // the last ones) from the extrapolation of the last two, three or four postures, whose error is of
+  // that order in the step: from four, Newton's first step lands within the tolerance on the Delta's
+  // 10 mm grid (the line through two left 3e-4, the parabola through three 6e-6, and a step from
+  // either 1e-11, above the tolerance: one Newton iteration more; benchmarks/README.md). A start that
+  // fails is retried from the previous posture, then by the walk from home: the same branch tests
+  // accept the answer either way. A
   // regular closure on home's working mode beyond a joint's limits or on another assembly mode is
   // the point's answer too (unreachable, with no walk from home, which would end at the same
   // closure: KinematicsResult::closed) and the next point's start: a map crosses those regions as
@@ -103,19 +110,40 @@ class RobotKernel final : public PostureKernel {
     if (!solved_) return evaluate(point);
     start_ = posture_;
     set_task(point);
-    const bool predict =
-        predictable_ && (point - 2.0 * point_ + previous_point_).norm() <= 1e-9 * (point - point_).norm();
-    if (predict) {
-      posture_.q = 2.0 * start_.q - previous_.q;
-      posture_.tool.translation() = 2.0 * start_.tool.translation() - previous_.tool.translation();
-      // R1 R0^T R1 is a rotation to round-off only, and extrapolating from it again multiplies its
-      // departure from one by 1 + sqrt 2 per point, which Newton's steps (exp(w) R) keep and its
-      // residual does not see (the Orthoglide file: 4e-31 after 8 points of a map's path, 2.6e-8 after
-      // 80), enough to stall a loaded equilibrium on the chains' tool factor R^T. Made a rotation again.
-      posture_.tool.linear() =
-          Eigen::Quaterniond(start_.tool.linear() * previous_.tool.linear().transpose() * start_.tool.linear())
-              .normalized()
-              .toRotationMatrix();
+    const auto straight = [](const Vec3& a, const Vec3& b, const Vec3& c) {
+      return (a - 2.0 * b + c).norm() <= 1e-9 * (a - b).norm();
+    };
+    // The postures on `point`'s line at its spacing, latest first: `order` of them.
+    int order = 0;
+    if (history_ >= 1 && straight(point, points_[0], points_[1])) {
+      order = 2;
+      while (order <= history_ && order < 4 && straight(points_[order - 2], points_[order - 1], points_[order]))
+        ++order;
+    }
+    if (order >= 2) {
+      // The polynomial through them at the next step: weights of the latest first.
+      static constexpr std::array<std::array<double, 4>, 3> kWeights{{{2, -1, 0, 0}, {3, -3, 1, 0}, {4, -6, 4, -1}}};
+      const std::array<const RobotPosture*, 4> P{&start_, &past_[0], &past_[1], &past_[2]};
+      const std::array<double, 4>& c = kWeights[order - 2];
+      posture_.q = c[0] * start_.q;
+      posture_.tool.translation() = c[0] * start_.tool.translation();
+      for (int k = 1; k < order; ++k) {
+        posture_.q += c[k] * P[k]->q;
+        posture_.tool.translation() += c[k] * P[k]->tool.translation();
+      }
+      // The rotation by its increments w_k = log(R_k R_(k+1)^T), extrapolated one order lower, then
+      // exp(w) R_0. (R_0 R_1^T R_0, the line's, is a rotation to round-off only, and extrapolating
+      // from it again multiplied its departure from one by 1 + sqrt 2 per point, which Newton's steps
+      // (exp(w) R) keep and its residual does not see: the Orthoglide file's 2.6e-8 after 80 points
+      // of a map's path stalled a loaded equilibrium on the chains' tool factor R^T.)
+      Vec3 w = Vec3::Zero();
+      for (int k = 0; k + 1 < order; ++k) {
+        const Eigen::AngleAxisd aa(Mat3(P[k]->tool.linear() * P[k + 1]->tool.linear().transpose()));
+        w += (order == 2 ? 1.0 : kWeights[order - 3][k]) * aa.angle() * aa.axis();
+      }
+      const double angle = w.norm();
+      const Mat3 turn = angle > 0 ? Mat3(Eigen::AngleAxisd(angle, w / angle)) : Mat3::Identity();
+      posture_.tool.linear() = Eigen::Quaterniond(turn * start_.tool.linear()).normalized().toRotationMatrix();
       const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
       if (k.closed) return next(point, k);
       posture_ = start_;
@@ -142,10 +170,11 @@ class RobotKernel final : public PostureKernel {
   // A solved neighbour: start_ (the previous posture) becomes the one before.
   PostureResult next(const Vec3& point, const KinematicsResult& k) {
     warm_ = true;
-    previous_ = start_;
-    previous_point_ = point_;
-    point_ = point;
-    predictable_ = true;
+    std::rotate(past_.rbegin(), past_.rbegin() + 1, past_.rend());  // over the oldest
+    past_[0] = start_;
+    std::rotate(points_.rbegin(), points_.rbegin() + 1, points_.rend());
+    points_[0] = point;
+    history_ = std::min(history_ + 1, static_cast<int>(past_.size()));
     return finish(k);
   }
 
@@ -221,7 +250,7 @@ class RobotKernel final : public PostureKernel {
     const bool regular =
         !regular_.chains.empty() && vjm::regular_platform_unloaded_stiffness(chains, regular_, regular_result_);
     PostureResult fast = r;
-    loaded_.evaluate(point_, o_.displacement ? &*o_.displacement : nullptr, o_.wrench ? &*o_.wrench : nullptr,
+    loaded_.evaluate(points_[0], o_.displacement ? &*o_.displacement : nullptr, o_.wrench ? &*o_.wrench : nullptr,
                      regular ? &regular_result_.stiffness : nullptr, warm_, fast);
     if (fast.status != PostureStatus::kOk) {
       loaded_.forget();
@@ -236,10 +265,11 @@ class RobotKernel final : public PostureKernel {
   RobotData data_;
   VecX task_;  // the task at the current point
   RobotPosture posture_, start_;
-  // The path's last two points and the posture before posture_ (extrapolation, evaluate_next).
-  RobotPosture previous_;
-  Vec3 point_ = Vec3::Zero(), previous_point_ = Vec3::Zero();
-  bool predictable_ = false;
+  // The path's points, posture_'s first, and the postures before posture_ (extrapolation,
+  // evaluate_next), latest first: history_ of them solved one after the other.
+  std::array<RobotPosture, 3> past_;
+  std::array<Vec3, 4> points_{};
+  int history_ = 0;
   RobotVjmChains chains_;  // VJM: the legs' chains, moved to each posture
   vjm::RegularStiffnessData regular_;
   CartesianStiffness regular_result_;
