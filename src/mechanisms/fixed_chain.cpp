@@ -613,16 +613,12 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     // The predictor: the neighbour's equilibrium carried over (each passive joint keeps its deflection
     // from its nominal angle, each spring its deflection, each chain its wrench, the platform its
     // displacement), extrapolated from the points before where the path goes straight on at their
-    // spacing: the secant through two (its error second order in the step) or the parabola through
-    // three (third order: on the 3-PUU's 5 mm grid under 500 N its residuals start at ~1e-5 where the
-    // secant's were ~2e-4, which saves a chord step).
-    const auto straight = [&](const Vec3& next, int k) {
-      return (next - 2 * solved(k).point + solved(k + 1).point).norm() <= 1e-6 * (next - solved(k).point).norm();
-    };
-    int order = 1;
-    if (num_solved_ >= 2 && straight(point, 0)) order = num_solved_ >= 3 && straight(solved(0).point, 1) ? 3 : 2;
-    static constexpr std::array<std::array<double, 3>, 3> kWeights{{{1, 0, 0}, {2, -1, 0}, {3, -3, 1}}};
-    const std::array<double, 3>& c = kWeights[order - 1];
+    // spacing (path_extrapolation.hpp): the secant through two, the parabola through three (on the
+    // 3-PUU's 5 mm grid under 500 N its residuals start at ~1e-5 where the secant's were ~2e-4, which
+    // saves a chord step) or the cubic through four.
+    const int order = extrapolation_order(
+        point, [&](int k) { return solved(k).point; }, num_solved_);
+    const std::array<double, kMaxExtrapolationOrder>& c = kExtrapolationWeights[order - 1];
     d.setZero();
     for (int k = 0; k < order; ++k) d += c[k] * solved(k).d;
     for (int i = 0; i < num_chains; ++i) {

@@ -23,6 +23,7 @@
 #include "kinestat/core/types.hpp"
 #include "kinestat/mechanisms/posture_kernel.hpp"
 #include "kinestat/vjm/chain.hpp"
+#include "mechanisms/path_extrapolation.hpp"
 
 namespace kinestat::mechanisms::fixed_vjm {
 
@@ -155,8 +156,8 @@ struct LoadedPlatform {
   // with `warm` and the unloaded platform stiffness `unloaded` of this posture, from the equilibrium
   // of the last posture that ended kOk (the chains rebuilt for the new posture since), carried over:
   // each passive joint keeps its deflection from its nominal angle, each spring its deflection, each
-  // chain its wrench, the platform its displacement (extrapolated from the two or three postures
-  // before when `point` continues their line at their spacing). A warm start that does not
+  // chain its wrench, the platform its displacement (extrapolated from the two, three or four
+  // postures before when `point` continues their line at their spacing). A warm start that does not
   // converge, or whose answer fails the branch test against `unloaded` (fixed_chain.cpp), is redone
   // from rest. `point`: the posture's tool point (m), which tells whether the path goes straight on.
   void evaluate(const Vec3& point, const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm,
@@ -193,7 +194,7 @@ struct LoadedPlatform {
     std::array<Vec6, kMaxChains> wrench;
     Vec6 d = Vec6::Zero();
   };
-  static constexpr int kHistory = 3;
+  static constexpr int kHistory = kMaxExtrapolationOrder;
   std::array<Solved, kHistory> solved_;  // a ring: the latest at latest_
   int num_solved_ = 0, latest_ = 0;
   Solved& solved(int k) { return solved_[(latest_ + kHistory - k) % kHistory]; }

@@ -10,6 +10,7 @@
 #include "kinestat/vjm/equilibrium.hpp"
 #include "kinestat/vjm/stiffness.hpp"
 #include "mechanisms/fixed_chain.hpp"
+#include "mechanisms/path_extrapolation.hpp"
 
 namespace kinestat::mechanisms {
 
@@ -101,30 +102,19 @@ class RobotKernel final : public PostureKernel {
   // 10 mm grid (the line through two left 3e-4, the parabola through three 6e-6, and a step from
   // either 1e-11, above the tolerance: one Newton iteration more; benchmarks/README.md). A start that
   // fails is retried from the previous posture, then by the walk from home: the same branch tests
-  // accept the answer either way. A
-  // regular closure on home's working mode beyond a joint's limits or on another assembly mode is
-  // the point's answer too (unreachable, with no walk from home, which would end at the same
-  // closure: KinematicsResult::closed) and the next point's start: a map crosses those regions as
-  // it crosses the reachable one.
+  // accept the answer either way. A regular closure on home's working mode beyond a joint's limits
+  // or on another assembly mode is the point's answer too (unreachable, with no walk from home,
+  // which would end at the same closure: KinematicsResult::closed) and the next point's start: a map
+  // crosses those regions as it crosses the reachable one.
   PostureResult evaluate_next(const Vec3& point) override {
     if (!solved_) return evaluate(point);
     start_ = posture_;
     set_task(point);
-    const auto straight = [](const Vec3& a, const Vec3& b, const Vec3& c) {
-      return (a - 2.0 * b + c).norm() <= 1e-9 * (a - b).norm();
-    };
-    // The postures on `point`'s line at its spacing, latest first: `order` of them.
-    int order = 0;
-    if (history_ >= 1 && straight(point, points_[0], points_[1])) {
-      order = 2;
-      while (order <= history_ && order < 4 && straight(points_[order - 2], points_[order - 1], points_[order]))
-        ++order;
-    }
+    const int order = extrapolation_order(
+        point, [&](int k) { return points_[k]; }, history_ + 1);
     if (order >= 2) {
-      // The polynomial through them at the next step: weights of the latest first.
-      static constexpr std::array<std::array<double, 4>, 3> kWeights{{{2, -1, 0, 0}, {3, -3, 1, 0}, {4, -6, 4, -1}}};
       const std::array<const RobotPosture*, 4> P{&start_, &past_[0], &past_[1], &past_[2]};
-      const std::array<double, 4>& c = kWeights[order - 2];
+      const std::array<double, 4>& c = kExtrapolationWeights[order - 1];
       posture_.q = c[0] * start_.q;
       posture_.tool.translation() = c[0] * start_.tool.translation();
       for (int k = 1; k < order; ++k) {
@@ -139,7 +129,7 @@ class RobotKernel final : public PostureKernel {
       Vec3 w = Vec3::Zero();
       for (int k = 0; k + 1 < order; ++k) {
         const Eigen::AngleAxisd aa(Mat3(P[k]->tool.linear() * P[k + 1]->tool.linear().transpose()));
-        w += (order == 2 ? 1.0 : kWeights[order - 3][k]) * aa.angle() * aa.axis();
+        w += kExtrapolationWeights[order - 2][k] * aa.angle() * aa.axis();
       }
       const double angle = w.norm();
       const Mat3 turn = angle > 0 ? Mat3(Eigen::AngleAxisd(angle, w / angle)) : Mat3::Identity();

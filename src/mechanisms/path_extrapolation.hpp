@@ -1,0 +1,37 @@
+// Warm starts along a path (a map's serpentine rows, PointOrder::kPath): the polynomial through the
+// last solved postures, evaluated at the next point, where those points and the next lie on one line
+// at one spacing. Used by the robot kernel's kinematics (robot_kernel.cpp) and the loaded mode's
+// equilibria (fixed_chain.cpp).
+#pragma once
+
+#include <algorithm>
+#include <array>
+
+#include "kinestat/core/types.hpp"
+
+namespace kinestat::mechanisms {
+
+inline constexpr int kMaxExtrapolationOrder = 4;
+
+// Weights of the polynomial through `order` values at equal steps, evaluated one step on, latest
+// value first: order 1 the last value, 2 the line, 3 the parabola, 4 the cubic; its error is of
+// order `order` in the step.
+inline constexpr std::array<std::array<double, kMaxExtrapolationOrder>, kMaxExtrapolationOrder> kExtrapolationWeights{
+    {{1, 0, 0, 0}, {2, -1, 0, 0}, {3, -3, 1, 0}, {4, -6, 4, -1}}};
+
+// How many of the last solved points to extrapolate from to `next`: `point(k)` the k-th last (0 the
+// latest), `known` of them. All those that continue `next`'s line at its spacing, at most
+// kMaxExtrapolationOrder; 1 (the last alone) where the path turns, 0 where none is known.
+template <class Point>
+int extrapolation_order(const Vec3& next, const Point& point, int known) {
+  const auto straight = [](const Vec3& a, const Vec3& b, const Vec3& c) {
+    return (a - 2.0 * b + c).norm() <= 1e-9 * (a - b).norm();
+  };
+  if (known < 2 || !straight(next, point(0), point(1))) return std::min(known, 1);
+  int order = 2;
+  while (order < std::min(known, kMaxExtrapolationOrder) && straight(point(order - 2), point(order - 1), point(order)))
+    ++order;
+  return order;
+}
+
+}  // namespace kinestat::mechanisms
