@@ -164,13 +164,15 @@ double coordinate(const Factor& f, const VecX& q, const VecX& theta) {
   return f.offset + f.variable->coefficient * x[f.variable->index];
 }
 
-Transform elementary(const Factor& f, double value) {
-  Transform T = Transform::Identity();
+// T = T * (the factor's elementary transform at `value`) without forming the 4x4 product: a
+// revolute factor turns T's axes, a prismatic one moves its origin, and zero (a spring at rest, every
+// virtual coordinate of the unloaded stiffness) leaves T as it is.
+void advance(Transform& T, const Factor& f, double value) {
+  if (value == 0.0) return;
   if (f.type == JointType::kRevolute)
-    T.linear() = Eigen::AngleAxisd(value, f.axis).toRotationMatrix();
+    T.linear() = T.linear() * Eigen::AngleAxisd(value, f.axis).toRotationMatrix();
   else
-    T.translation() = value * f.axis;
-  return T;
+    T.translation() += T.linear() * (value * f.axis);
 }
 
 // A moving factor's unit twist in global axes, spatial form (linear part = velocity of the point
@@ -199,7 +201,7 @@ Transform walk(const Chain& chain, const VecX& q, const VecX& theta, std::vector
       else
         twists->push_back({c * a, Vec3::Zero(), *f.variable});
     }
-    T = T * elementary(f, coordinate(f, q, theta));
+    advance(T, f, coordinate(f, q, theta));
   }
   return T;
 }
@@ -246,7 +248,7 @@ void jacobians(const Chain& chain, const VecX& q, const VecX& theta, ChainJacobi
         col.head<3>() += c * a;
       }
     }
-    T = T * elementary(f, coordinate(f, q, theta));
+    advance(T, f, coordinate(f, q, theta));
   }
   J.pose = T;
   const Vec3 p = T.translation();

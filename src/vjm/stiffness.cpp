@@ -210,13 +210,14 @@ bool regular_chain_stiffness(const Chain& chain, RegularStiffnessData::ChainData
   if (n > 6) return false;  // a self-motion: the reference names it
   for (int i = 0; i < n; ++i) d.q(i) = chain.nominal_passive(i);
   jacobians(chain, d.q, d.theta, d.J);
-  // S = J_theta K_theta^-1 J_theta^T, as spring_compliance.
+  // S = J_theta K_theta^-1 J_theta^T, as spring_compliance: Y^T Y with Y = L^-1 J_theta^T (K_theta =
+  // L L^T), one triangular solve and a product symmetric by construction, coefficient by coefficient
+  // (the general product's blocked path is slow at 6 columns).
   Mat6 S = Mat6::Zero();
   if (d.virtual_ > 0) {
     d.compliance_rhs = d.J.Jtheta.transpose();
-    d.spring_factor.solveInPlace(d.compliance_rhs);
-    S.noalias() = d.J.Jtheta * d.compliance_rhs;
-    S = 0.5 * (S + S.transpose()).eval();
+    d.spring_factor.matrixL().solveInPlace(d.compliance_rhs);
+    S.noalias() = d.compliance_rhs.transpose().lazyProduct(d.compliance_rhs);
   }
   const double L = chain.length_scale();
   const Vec6 w = twist_scale(L);

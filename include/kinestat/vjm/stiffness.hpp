@@ -65,7 +65,7 @@ struct RegularStiffnessData {
     Eigen::LLT<MatX> spring_factor;  // of K_theta
     VecX q, theta;
     ChainJacobians J;
-    MatX compliance_rhs;  // K_theta^-1 J_theta^T
+    MatX compliance_rhs;  // L^-1 J_theta^T, L L^T = K_theta
   };
   std::vector<ChainData> chains;
 };
