@@ -98,9 +98,9 @@ class RobotKernel final : public PostureKernel {
 
   // Newton from the previous point's posture; along a row of the map's path (the same grid step as
   // the last ones) from the extrapolation of the last two, three or four postures, whose error is of
-  // that order in the step: from four, Newton's first step lands within the tolerance on the Delta's
-  // 10 mm grid (the line through two left 3e-4, the parabola through three 6e-6, and a step from
-  // either 1e-11, above the tolerance: one Newton iteration more; benchmarks/README.md). A start that
+  // that order in the step: from four, Newton's first step mostly lands within the tolerance on the
+  // Delta's 10 mm grid (the line through two left 3e-4, the parabola through three 6e-6, and a step
+  // from either 1e-11, above the tolerance: one Newton iteration more; benchmarks/README.md). A start that
   // fails is retried from the previous posture, then by the walk from home: the same branch tests
   // accept the answer either way. A regular closure on home's working mode beyond a joint's limits
   // or on another assembly mode is the point's answer too (unreachable, with no walk from home,
