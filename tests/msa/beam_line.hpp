@@ -1,9 +1,10 @@
-// Shared by the msa tests: steel with a density, and a straight line of n beams along x (or `dir`)
-// from 0 to L (nodes "0".."n", beams "b0".., no supports), which the statics, load, station, buckling
-// and mode tests build their cases on.
+// Shared by the msa tests: steel with a density, one beam between two nodes, and a straight line of n
+// beams along x (or `dir`) from 0 to L (nodes "0".."n", beams "b0".., no supports), which the
+// statics, load, station, buckling, mode, singularity and tie tests build their cases on.
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -12,6 +13,17 @@
 namespace kinestat::msa {
 
 inline const Material kSteel{"steel", 2.1e11, 0.81e11, 7850.0};
+
+// A beam `id` from node1 to node2 of the structure's material and section indices, the rest default.
+inline Beam make_beam(std::string id, int node1, int node2, int material, int section) {
+  Beam b;
+  b.id = std::move(id);
+  b.node1 = node1;
+  b.node2 = node2;
+  b.material = material;
+  b.section = section;
+  return b;
+}
 
 // released_ends: the first beam's bending rotations released at node 0 and the last one's at node n
 // (local ry, rz), so that clamped end nodes make a pinned-pinned line (pinned_by_releases).

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
-#include <tuple>
 
 #include "beam_line.hpp"
 #include "kinestat/elements/section.hpp"
@@ -177,15 +176,9 @@ TEST(SecondOrder, AxialForcesAreIterated) {
   s.add_node("b", Vec3(0, 0, 3));
   s.add_node("c", Vec3(4, 0, 3));
   s.add_node("d", Vec3(4, 0, 0));
-  for (auto [id, n1, n2] : {std::tuple{"left", 0, 1}, std::tuple{"top", 1, 2}, std::tuple{"right", 3, 2}}) {
-    Beam b;
-    b.id = id;
-    b.node1 = n1;
-    b.node2 = n2;
-    b.material = m;
-    b.section = c;
-    s.add_beam(b);
-  }
+  s.add_beam(make_beam("left", 0, 1, m, c));
+  s.add_beam(make_beam("top", 1, 2, m, c));
+  s.add_beam(make_beam("right", 3, 2, m, c));
   s.add_support({0, kAllDofs, Mat3::Identity()});
   s.add_support({3, kAllDofs, Mat3::Identity()});
   LoadCase lc{.name = "gravity and sway"};

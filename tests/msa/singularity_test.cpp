@@ -4,23 +4,12 @@
 
 #include <algorithm>
 
+#include "beam_line.hpp"
 #include "kinestat/msa/singularity.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::msa {
 namespace {
-
-const Material kSteel{"steel", 2.1e11, 0.81e11};
-
-Beam beam(const char* id, int a, int b, int m, int c) {
-  Beam x;
-  x.id = id;
-  x.node1 = a;
-  x.node2 = b;
-  x.material = m;
-  x.section = c;
-  return x;
-}
 
 // Cantilever O-A (0.5 m along x, clamped at O), a joint A-A' with `joint` stiffness (global frame),
 // and a beam A'-B hanging from it; a unit load along z at B.
@@ -31,8 +20,8 @@ Structure hinged_chain(const Vec3& b, const Vec6& joint) {
   s.add_node("A", Vec3(0.5, 0, 0));
   s.add_node("A'", Vec3(0.5, 0, 0));
   s.add_node("B", b);
-  s.add_beam(beam("OA", 0, 1, m, c));
-  s.add_beam(beam("AB", 2, 3, m, c));
+  s.add_beam(make_beam("OA", 0, 1, m, c));
+  s.add_beam(make_beam("AB", 2, 3, m, c));
   s.add_joint({"joint", 1, 2, Mat3::Identity(), joint});
   s.add_support({0, kAllDofs, Mat3::Identity()});
   s.add_load_case({"Fz", {{3, Vec6::Unit(2)}}, {}});
@@ -67,8 +56,8 @@ TEST(Singularity, UnsupportedFrameHasSixRigidBodyMotions) {
   s.add_node("a", Vec3(0, 0, 0));
   s.add_node("b", Vec3(1, 0, 0));
   s.add_node("c", Vec3(1, 1, 0));
-  s.add_beam(beam("ab", 0, 1, m, c));
-  s.add_beam(beam("bc", 1, 2, m, c));
+  s.add_beam(make_beam("ab", 0, 1, m, c));
+  s.add_beam(make_beam("bc", 1, 2, m, c));
   s.add_load_case({"F", {{2, Vec6::Unit(0)}}, {}});
   const Solution sol = solve(s);
   ASSERT_EQ(sol.status.code(), StatusCode::kSingular);
@@ -103,7 +92,7 @@ TEST(Singularity, PartCutLooseIsNamedWithItsRigidBodyMotions) {
   // in the rest of the near-null space), in which the loose beam C-D does not move.
   Structure s2 = hinged_chain(Vec3(0.5, 0.4, 0), (Vec6() << 1e10, 1e10, 1e10, 0, 0, 0).finished());
   const int cd_c = s2.add_node("C", Vec3(0, 1, 1)), cd_d = s2.add_node("D", Vec3(0, 2, 1));
-  s2.add_beam(beam("CD", cd_c, cd_d, 0, 0));
+  s2.add_beam(make_beam("CD", cd_c, cd_d, 0, 0));
   const Solution sol2 = solve(s2);
   ASSERT_EQ(sol2.status.code(), StatusCode::kSingular);
   ASSERT_EQ(sol2.singularity.modes.size(), 9u) << sol2.status.message();

@@ -4,14 +4,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <tuple>
 
+#include "beam_line.hpp"
 #include "kinestat/msa/static_analysis.hpp"
 
 namespace kinestat::msa {
 namespace {
-
-const Material kSteel{"steel", 2.1e11, 0.81e11};
 
 // A fixed, rigid link A->B (0.1 m along x), beam B->C (1 m along x), 1000 N down at C (issue 21):
 // statics give the reaction force (0, 0, 1000) N at A and the moment -(C - A) x F = (0, -1100, 0) N m.
@@ -21,10 +19,7 @@ Structure tied_cantilever(bool joint, const Vec3& pos_b = Vec3(0.1, 0, 0)) {
   const int a = s.add_node("A", Vec3::Zero());
   const int b = s.add_node("B", pos_b);
   const int c = s.add_node("C", pos_b + Vec3(1.0, 0, 0));
-  Beam beam;
-  beam.id = "BC";
-  beam.material = s.add_material(kSteel);
-  beam.section = s.add_section(rectangle_section(0.02, 0.04));
+  const int mat = s.add_material(kSteel), sec = s.add_section(rectangle_section(0.02, 0.04));
   if (joint) {
     // A and B coincide; rigid components tie B to A, the elastic one is assembled as a spring.
     Joint j;
@@ -37,9 +32,7 @@ Structure tied_cantilever(bool joint, const Vec3& pos_b = Vec3(0.1, 0, 0)) {
   } else {
     s.add_rigid_link({.id = "AB", .master = a, .slave = b});
   }
-  beam.node1 = b;
-  beam.node2 = c;
-  s.add_beam(beam);
+  s.add_beam(make_beam("BC", b, c, mat, sec));
   s.add_support({a, kAllDofs, Mat3::Identity()});
   s.add_load_case({.name = "down", .loads = {{c, (Vec6() << 0, 0, -1000, 0, 0, 0).finished()}}});
   return s;
@@ -77,15 +70,8 @@ Structure two_cantilevers(bool loop) {
   const int b2 = s.add_node("B2", Vec3(1, 1, 0));
   const int c = s.add_node("C", Vec3(1.2, 0.5, 0.3));
   const int mat = s.add_material(kSteel), sec = s.add_section(rectangle_section(0.02, 0.04));
-  for (const auto& [id, n1, n2] : {std::tuple{"A1B1", a1, b1}, std::tuple{"A2B2", a2, b2}}) {
-    Beam beam;
-    beam.id = id;
-    beam.node1 = n1;
-    beam.node2 = n2;
-    beam.material = mat;
-    beam.section = sec;
-    s.add_beam(beam);
-  }
+  s.add_beam(make_beam("A1B1", a1, b1, mat, sec));
+  s.add_beam(make_beam("A2B2", a2, b2, mat, sec));
   s.add_rigid_link({.id = "B1C", .master = b1, .slave = c});
   if (loop)
     s.add_rigid_link({.id = "B2C", .master = b2, .slave = c});
@@ -179,13 +165,8 @@ TEST(TieReactions, AChainOfTiesCarriesTheReactionToTheSupportedEnd) {
   const int c = s.add_node("C", Vec3(1.1, 0.2, 0.3));
   s.add_rigid_link({.id = "AB", .master = a, .slave = b});
   s.add_rigid_link({.id = "BD", .master = b, .slave = d});
-  Beam beam;
-  beam.id = "DC";
-  beam.node1 = d;
-  beam.node2 = c;
-  beam.material = s.add_material(kSteel);
-  beam.section = s.add_section(rectangle_section(0.02, 0.04));
-  s.add_beam(beam);
+  const int mat = s.add_material(kSteel), sec = s.add_section(rectangle_section(0.02, 0.04));
+  s.add_beam(make_beam("DC", d, c, mat, sec));
   s.add_support({a, kAllDofs, Mat3::Identity()});
   const Vec3 F(100, -200, -1000), M(5, 0, -7);
   s.add_load_case({.name = "skew", .loads = {{c, (Vec6() << F, M).finished()}}});
