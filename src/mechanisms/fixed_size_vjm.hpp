@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "kinestat/core/small_triangular.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/mechanisms/posture_kernel.hpp"
 
@@ -53,14 +54,10 @@ inline Vec6 twist_scale(double length_scale) {
   return w;
 }
 
-// L^-1 B for the lower triangle L of `factor` (e.g. LLT::matrixLLT()), by forward substitution in
-// plain loops: Eigen's triangular solve takes its blocked matrix path, slow at these sizes.
+// L^-1 B for the lower triangle L of `factor` (e.g. LLT::matrixLLT()), core/small_triangular.hpp.
 template <int N, int M>
 Eigen::Matrix<double, N, M> lower_solve(const Eigen::Matrix<double, N, N>& factor, Eigen::Matrix<double, N, M> B) {
-  for (int i = 0; i < N; ++i) {
-    for (int k = 0; k < i; ++k) B.row(i) -= factor(i, k) * B.row(k);
-    B.row(i) /= factor(i, i);
-  }
+  lower_solve_in_place(factor, B);
   return B;
 }
 

@@ -7,6 +7,7 @@
 
 #include "kinestat/core/frame.hpp"
 #include "kinestat/core/small_qr.hpp"
+#include "kinestat/core/small_triangular.hpp"
 #include "kinestat/vjm/platform.hpp"
 #include "vjm/bordered_system.hpp"
 
@@ -196,10 +197,10 @@ namespace {
 // Up to 6 x 6, on the stack.
 using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
 
-// The inverse of the lower triangle of `L` (n x n), by Eigen's triangular solve.
+// The inverse of the lower triangle of `L` (n x n).
 Small lower_inverse(const Small& L) {
   Small X = Small::Identity(L.rows(), L.cols());
-  L.triangularView<Eigen::Lower>().solveInPlace(X);
+  lower_solve_in_place(L, X);
   return X;
 }
 
@@ -216,7 +217,7 @@ bool regular_chain_stiffness(const Chain& chain, RegularStiffnessData::ChainData
   Mat6 S = Mat6::Zero();
   if (d.virtual_ > 0) {
     d.compliance_rhs = d.J.Jtheta.transpose();
-    d.spring_factor.matrixL().solveInPlace(d.compliance_rhs);
+    lower_solve_in_place(d.spring_factor.matrixLLT(), d.compliance_rhs);
     S.noalias() = d.compliance_rhs.transpose().lazyProduct(d.compliance_rhs);
   }
   const double L = chain.length_scale();
