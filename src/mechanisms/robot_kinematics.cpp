@@ -22,7 +22,7 @@ constexpr double kMaxNewtonStep = 0.3;  // scaled: a larger step is shortened (d
 // iterations, residuals 1e-1, 3e-2, 1e-3, 4e-7, 1e-13 on the Delta), and the smallest share of it
 // tried before the walk gives up. A map's points with no closure each cost a walk that fails: at 0.05
 // and 1e-3 they took 62 % of the Delta map's Jacobian factorizations, at 0.1 and 1e-2 51 % of 24 %
-// fewer, every bundled robot's maps the same (benchmarks/README.md).
+// fewer in all, every bundled robot's maps the same (benchmarks/README.md).
 constexpr double kContinuationStep = 0.1;
 constexpr double kMinContinuationStep = 1e-2;
 
