@@ -113,8 +113,9 @@ class RobotKernel final : public PostureKernel {
     const int order = extrapolation_order(
         point, [&](int k) { return points_[k]; }, history_ + 1);
     if (order >= 2) {
-      const std::array<const RobotPosture*, 4> P{&start_, &past_[0], &past_[1], &past_[2]};
-      const std::array<double, 4>& c = kExtrapolationWeights[order - 1];
+      std::array<const RobotPosture*, kMaxExtrapolationOrder> P{&start_};
+      for (std::size_t k = 0; k < past_.size(); ++k) P[k + 1] = &past_[k];
+      const std::array<double, kMaxExtrapolationOrder>& c = kExtrapolationWeights[order - 1];
       posture_.q = c[0] * start_.q;
       posture_.tool.translation() = c[0] * start_.tool.translation();
       for (int k = 1; k < order; ++k) {
@@ -257,8 +258,8 @@ class RobotKernel final : public PostureKernel {
   RobotPosture posture_, start_;
   // The path's points, posture_'s first, and the postures before posture_ (extrapolation,
   // evaluate_next), latest first: history_ of them solved one after the other.
-  std::array<RobotPosture, 3> past_;
-  std::array<Vec3, 4> points_{};
+  std::array<RobotPosture, kMaxExtrapolationOrder - 1> past_;
+  std::array<Vec3, kMaxExtrapolationOrder> points_{};
   int history_ = 0;
   RobotVjmChains chains_;  // VJM: the legs' chains, moved to each posture
   vjm::RegularStiffnessData regular_;
