@@ -609,15 +609,25 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     }
     return (deflection.cwiseProduct(w) - d0).norm() / (kMaxNonlinearity * d0.norm());
   };
-  if (warm && num_solved_ > 0 && unloaded && within && solved_nonlinearity_ <= kWarmNonlinearityShare) {
+  const int order = warm ? extrapolation_order(
+                               point, [&](int k) { return solved(k).point; }, num_solved_)
+                         : 0;
+  // Nor is a warm start tried where this point's nonlinearity, extrapolated along the path from the
+  // points before (the line through the last two at most), fails the test: it would be solved from
+  // rest besides.
+  const auto predicted_nonlinearity = [&] {
+    const double last = solved(0).nonlinearity;
+    if (order == 1) return last;
+    const double before = solved(1).nonlinearity;
+    return std::isfinite(before) ? 2.0 * last - before : before;  // infinite: not tried
+  };
+  if (order > 0 && unloaded && within && predicted_nonlinearity() <= 1.0) {
     // The predictor: the neighbour's equilibrium carried over (each passive joint keeps its deflection
     // from its nominal angle, each spring its deflection, each chain its wrench, the platform its
     // displacement), extrapolated from the points before where the path goes straight on at their
     // spacing (path_extrapolation.hpp): the secant through two, the parabola through three (on the
     // 3-PUU's 5 mm grid under 500 N its residuals start at ~1e-5 where the secant's were ~2e-4, which
     // saves a chord step) or the cubic through four.
-    const int order = extrapolation_order(
-        point, [&](int k) { return solved(k).point; }, num_solved_);
     const std::array<double, kMaxExtrapolationOrder>& c = kExtrapolationWeights[order - 1];
     d.setZero();
     for (int k = 0; k < order; ++k) d += c[k] * solved(k).d;
@@ -693,7 +703,7 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     latest.wrench[i] = states_[i].wrench;
   }
   latest.d = d;
-  solved_nonlinearity_ = nonlinearity(d);
+  latest.nonlinearity = nonlinearity(d);
 }
 
 }  // namespace kinestat::mechanisms::fixed_vjm

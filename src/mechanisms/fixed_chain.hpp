@@ -39,10 +39,6 @@ inline constexpr double kBranchSoftening = 0.8;
 // Under a wrench, nor where its deflection d departs from the linear one d0 = K0^-1 W_ext by more
 // than this share, |W (d - d0)| <= kMaxNonlinearity |W d0| (scaled twists).
 inline constexpr double kMaxNonlinearity = 0.05;
-// Nor is a warm start tried after a point whose deflection departed from the linear one by more than
-// this share of that bound: the next point would most likely fail the test and be solved from rest
-// besides (both starts cost about the same).
-inline constexpr double kWarmNonlinearityShare = 0.8;
 // Under a prescribed displacement, none beyond this one (scaled twist: translation / length scale,
 // rotation in rad).
 inline constexpr double kMaxWarmDeflection = 0.01;
@@ -193,13 +189,12 @@ struct LoadedPlatform {
     std::array<CoordinateVector, kMaxChains> deflection;
     std::array<Vec6, kMaxChains> wrench;
     Vec6 d = Vec6::Zero();
+    double nonlinearity = 0.0;  // its departure from the linear deflection (evaluate(), in units of the bound)
   };
   static constexpr int kHistory = kMaxExtrapolationOrder;
   std::array<Solved, kHistory> solved_;  // a ring: the latest at latest_
   int num_solved_ = 0, latest_ = 0;
   Solved& solved(int k) { return solved_[(latest_ + kHistory - k) % kHistory]; }
-  // The last kOk posture's departure from the linear deflection (evaluate(), in units of the bound).
-  double solved_nonlinearity_ = 0.0;
 };
 
 }  // namespace kinestat::mechanisms::fixed_vjm
