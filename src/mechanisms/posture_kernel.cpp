@@ -40,6 +40,13 @@ void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& poi
                        std::vector<PostureResult>& results, int threads,
                        const std::function<void(std::size_t, std::size_t)>& progress, PointOrder order) {
   results.resize(points.size());
+  evaluate_postures(
+      kernel, points, [&](std::size_t i, const PostureResult& r) { results[i] = r; }, threads, progress, order);
+}
+
+void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& points,
+                       const std::function<void(std::size_t, const PostureResult&)>& visit, int threads,
+                       const std::function<void(std::size_t, std::size_t)>& progress, PointOrder order) {
   const std::size_t total = points.size();
   using Clock = std::chrono::steady_clock;
   std::atomic<std::size_t> done{0};
@@ -57,7 +64,7 @@ void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& poi
     for (std::size_t c = r.begin(); c != r.end(); ++c) {
       const std::size_t begin = c * kPathChunk, end = std::min(total, begin + kPathChunk);
       for (std::size_t i = begin; i != end; ++i)
-        results[i] = order == PointOrder::kPath && i != begin ? k.evaluate_next(points[i]) : k.evaluate(points[i]);
+        visit(i, order == PointOrder::kPath && i != begin ? k.evaluate_next(points[i]) : k.evaluate(points[i]));
       count += end - begin;
     }
     const std::size_t now_done = done += count;

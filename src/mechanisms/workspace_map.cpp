@@ -237,13 +237,15 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
   FieldValues* const measure = &map.fields[map.fields.size() - (options.with_iterations ? 2 : 1)];
   FieldValues* const iterations = options.with_iterations ? &map.fields.back() : nullptr;
 
-  // Chunks bound the memory of the posture results (~0.7 kB each) whatever the grid size. The points
-  // are visited along the serpentine path, so that a loaded kernel starts each posture from its
-  // neighbour's equilibrium (evaluate_postures, PointOrder::kPath).
-  constexpr std::size_t kChunk = std::size_t{1} << 16;
+  // Each result is digested into the fields on the thread that computed it (in parallel, no buffer of
+  // results); chunks bound the memory of the points (32 B each) whatever the grid size. The points are
+  // visited along the serpentine path, so that a loaded kernel starts each posture from its
+  // neighbour's equilibrium (evaluate_postures, PointOrder::kPath; kChunk is a multiple of kPathChunk,
+  // so the path's chunks do not depend on it).
+  constexpr std::size_t kChunk = std::size_t{1} << 20;
+  static_assert(kChunk % kPathChunk == 0);
   std::vector<Vec3> points;
   std::vector<std::size_t> index;
-  std::vector<PostureResult> results;
   for (std::size_t begin = 0; begin < n; begin += kChunk) {
     const std::size_t end = std::min(n, begin + kChunk);
     points.resize(end - begin);
@@ -254,11 +256,9 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
     }
     std::function<void(std::size_t, std::size_t)> progress;
     if (options.progress) progress = [&, begin](std::size_t done, std::size_t) { options.progress(begin + done, n); };
-    evaluate_postures(kernel, points, results, options.threads, progress, PointOrder::kPath);
-    for (std::size_t k = begin; k < end; ++k) {
-      const std::size_t i = index[k - begin];
-      const PostureResult& r = results[k - begin];
-      if (r.status == PostureStatus::kUnreachable) continue;
+    const auto visit = [&](std::size_t k, const PostureResult& r) {
+      if (r.status == PostureStatus::kUnreachable) return;
+      const std::size_t i = index[k];
       if (FieldValues* it = iterations) it->values[i] = r.newton_iterations;
       PostureStatus s = static_cast<PostureStatus>(r.status);
       if (s == PostureStatus::kOk && !(r.singularity_measure >= options.near_singular_threshold))
@@ -270,7 +270,8 @@ StatusOr<WorkspaceMap> compute_workspace_map(const PostureKernel& kernel, const 
       } else {
         measure->values[i] = r.singularity_measure;
       }
-    }
+    };
+    evaluate_postures(kernel, points, visit, options.threads, progress, PointOrder::kPath);
   }
 
   for (PostureStatus s : map.status) ++map.status_counts[static_cast<int>(s)];

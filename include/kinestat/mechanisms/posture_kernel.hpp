@@ -87,4 +87,11 @@ void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& poi
                        const std::function<void(std::size_t done, std::size_t total)>& progress = {},
                        PointOrder order = PointOrder::kIndependent);
 
+// The same, each result handed to visit(i, result) (i: its point's index) on the thread that computed
+// it, as soon as it is computed, and not kept: concurrent calls have distinct i. A map digests its
+// results there, in parallel, and needs no buffer of them.
+void evaluate_postures(const PostureKernel& kernel, const std::vector<Vec3>& points,
+                       const std::function<void(std::size_t i, const PostureResult& result)>& visit, int threads,
+                       const std::function<void(std::size_t done, std::size_t total)>& progress, PointOrder order);
+
 }  // namespace kinestat::mechanisms
