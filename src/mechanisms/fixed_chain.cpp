@@ -610,15 +610,15 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     return (deflection.cwiseProduct(w) - d0).norm() / (kMaxNonlinearity * d0.norm());
   };
   const int order = warm ? extrapolation_order(
-                               point, [&](int k) { return solved(k).point; }, num_solved_)
+                               point, [&](int k) { return solved_[k].point; }, solved_.size())
                          : 0;
   // Nor is a warm start tried where this point's nonlinearity, extrapolated along the path from the
   // points before (the line through the last two at most), fails the test: it would be solved from
   // rest besides.
   const auto predicted_nonlinearity = [&] {
-    const double last = solved(0).nonlinearity;
+    const double last = solved_[0].nonlinearity;
     if (order == 1) return last;
-    const double before = solved(1).nonlinearity;
+    const double before = solved_[1].nonlinearity;
     return std::isfinite(before) ? 2.0 * last - before : before;  // infinite: not tried
   };
   if (order > 0 && unloaded && within && predicted_nonlinearity() <= 1.0) {
@@ -630,14 +630,14 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     // saves a chord step) or the cubic through four.
     const std::array<double, kMaxExtrapolationOrder>& c = kExtrapolationWeights[order - 1];
     d.setZero();
-    for (int k = 0; k < order; ++k) d += c[k] * solved(k).d;
+    for (int k = 0; k < order; ++k) d += c[k] * solved_[k].d;
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
       s.x = nominal[i];
       s.wrench.setZero();
       for (int k = 0; k < order; ++k) {
-        s.x += c[k] * solved(k).deflection[i];
-        s.wrench += c[k] * solved(k).wrench[i];
+        s.x += c[k] * solved_[k].deflection[i];
+        s.wrench += c[k] * solved_[k].wrench[i];
       }
       s.linearized = s.condensed = false;
     }
@@ -679,24 +679,24 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     found = equilibrium(displacement, wrench, true, d, K, have_K, r.newton_iterations);
   }
   // An extrapolation needs the points before on this path: not across a start from scratch (a path
-  // chunk's first point), whose predecessor in this clone belongs to another chunk.
-  const int had_solved = warm ? num_solved_ : 0;
-  num_solved_ = 0;
-  r.status = PostureStatus::kFailed;
-  if (!found) return;
-  r.status = PostureStatus::kSingular;
-  if (!have_K && !platform_stiffness(K)) return;
+  // chunk's first point), whose predecessor in this clone belongs to another chunk, nor across a point
+  // that did not end kOk.
+  if (!warm) solved_.clear();
+  const auto fail = [&](PostureStatus status) {
+    r.status = status;
+    solved_.clear();
+  };
+  if (!found) return fail(PostureStatus::kFailed);
+  if (!have_K && !platform_stiffness(K)) return fail(PostureStatus::kSingular);
   // vjm's aggregate: a singular value of the scaled K below rank_tolerance of the largest is a free
   // direction (the compliance is undefined).
   const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
   Mat6 Ct;
-  if (!regular_inverse(Kt, rank_tolerance, Ct)) return;
+  if (!regular_inverse(Kt, rank_tolerance, Ct)) return fail(PostureStatus::kSingular);
   r.status = PostureStatus::kOk;
   set_stiffness(r, K, w.cwiseInverse().asDiagonal() * Ct * w.cwiseInverse().asDiagonal());
   r.deflection = d;
-  num_solved_ = std::min<int>(had_solved + 1, kHistory);
-  latest_ = (latest_ + 1) % kHistory;  // over the oldest
-  Solved& latest = solved(0);
+  Solved& latest = solved_.push();
   latest.point = point;
   for (int i = 0; i < num_chains; ++i) {
     latest.deflection[i] = states_[i].x - nominal[i];

@@ -159,7 +159,7 @@ struct LoadedPlatform {
   void evaluate(const Vec3& point, const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm,
                 PostureResult& r);
   // The next warm start starts from rest (the previous posture had no equilibrium to carry over).
-  void forget() { num_solved_ = 0; }
+  void forget() { solved_.clear(); }
 
  private:
   bool solve_chain(int i, const Pose& target, FixedChainState& s, int& steps) const;
@@ -181,9 +181,8 @@ struct LoadedPlatform {
   std::array<CoordinateVector, kMaxChains> rest_;  // the chains' nominal coordinates (q0, 0)
   std::array<Pose, kMaxChains> nominal_;
   double length_scale_ = 1.0;
-  // The last kOk postures, one after the other on this path (num_solved_ of them, solved(0) the
-  // latest): the point, each chain's deflection from its nominal coordinates and wrench, the platform
-  // displacement.
+  // The last kOk postures, one after the other on this path (solved_[0] the latest): the point, each
+  // chain's deflection from its nominal coordinates and wrench, the platform displacement.
   struct Solved {
     Vec3 point = Vec3::Zero();
     std::array<CoordinateVector, kMaxChains> deflection;
@@ -191,10 +190,7 @@ struct LoadedPlatform {
     Vec6 d = Vec6::Zero();
     double nonlinearity = 0.0;  // its departure from the linear deflection (evaluate(), in units of the bound)
   };
-  static constexpr int kHistory = kMaxExtrapolationOrder;
-  std::array<Solved, kHistory> solved_;  // a ring: the latest at latest_
-  int num_solved_ = 0, latest_ = 0;
-  Solved& solved(int k) { return solved_[(latest_ + kHistory - k) % kHistory]; }
+  PathHistory<Solved, kMaxExtrapolationOrder> solved_;
 };
 
 }  // namespace kinestat::mechanisms::fixed_vjm

@@ -1,7 +1,7 @@
 // Warm starts along a path (a map's serpentine rows, PointOrder::kPath): the polynomial through the
-// last solved postures, evaluated at the next point, where those points and the next lie on one line
-// at one spacing. Used by the robot kernel's kinematics (robot_kernel.cpp) and the loaded mode's
-// equilibria (fixed_chain.cpp).
+// last solved postures (kept in a PathHistory), evaluated at the next point, where those points and
+// the next lie on one line at one spacing. Used by the robot kernel's kinematics (robot_kernel.cpp) and the loaded
+// mode's equilibria (fixed_chain.cpp).
 #pragma once
 
 #include <algorithm>
@@ -33,5 +33,26 @@ int extrapolation_order(const Vec3& next, const Point& point, int known) {
     ++order;
   return order;
 }
+
+// The last N entries solved along a path, latest first, in a ring: push() takes the oldest's place.
+template <class T, int N>
+class PathHistory {
+ public:
+  int size() const { return count_; }
+  void clear() { count_ = 0; }
+  // The k-th last entry (0: the latest), k < size().
+  T& operator[](int k) { return ring_[(latest_ + N - k) % N]; }
+  const T& operator[](int k) const { return ring_[(latest_ + N - k) % N]; }
+  // The new latest entry, for the caller to fill.
+  T& push() {
+    latest_ = (latest_ + 1) % N;
+    count_ = std::min(count_ + 1, N);
+    return ring_[latest_];
+  }
+
+ private:
+  std::array<T, N> ring_{};
+  int latest_ = 0, count_ = 0;
+};
 
 }  // namespace kinestat::mechanisms

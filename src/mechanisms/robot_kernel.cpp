@@ -75,8 +75,7 @@ class RobotKernel final : public PostureKernel {
       : o_(o), axes_(o.map_axes ? *o.map_axes : default_map_axes(*o.model)), data_(make_robot_data(*o.model)) {
     if (o_.task.size() == 0) o_.task = o_.model->home_task();
     task_ = o_.task;
-    posture_ = start_ = o_.model->home();
-    past_.fill(start_);
+    posture_ = o_.model->home();
     if (o_.method == StiffnessMethod::kVjm) {
       chains_ = make_robot_vjm_chains(*o_.model);
       // The regular path's data (K_theta factored once; loaded, the unloaded stiffness that the warm
@@ -91,9 +90,10 @@ class RobotKernel final : public PostureKernel {
     warm_ = false;
     posture_ = o_.model->home();
     set_task(point);
-    history_ = 0;
-    points_[0] = point;
-    return finish(solve_posture(*o_.model, task_, posture_, data_, true));
+    history_.clear();
+    const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, true);
+    record(point);
+    return finish(k);
   }
 
   // Newton from the previous point's posture; along a row of the map's path (the same grid step as
@@ -108,19 +108,18 @@ class RobotKernel final : public PostureKernel {
   // crosses those regions as it crosses the reachable one.
   PostureResult evaluate_next(const Vec3& point) override {
     if (!solved_) return evaluate(point);
-    start_ = posture_;
+    const RobotPosture& start = history_[0].posture;  // posture_'s
     set_task(point);
     const int order = extrapolation_order(
-        point, [&](int k) { return points_[k]; }, history_ + 1);
+        point, [&](int k) { return history_[k].point; }, history_.size());
     if (order >= 2) {
-      std::array<const RobotPosture*, kMaxExtrapolationOrder> P{&start_};
-      for (std::size_t k = 0; k < past_.size(); ++k) P[k + 1] = &past_[k];
+      const auto P = [&](int k) -> const RobotPosture& { return history_[k].posture; };
       const std::array<double, kMaxExtrapolationOrder>& c = kExtrapolationWeights[order - 1];
-      posture_.q = c[0] * start_.q;
-      posture_.tool.translation() = c[0] * start_.tool.translation();
+      posture_.q = c[0] * start.q;
+      posture_.tool.translation() = c[0] * start.tool.translation();
       for (int k = 1; k < order; ++k) {
-        posture_.q += c[k] * P[k]->q;
-        posture_.tool.translation() += c[k] * P[k]->tool.translation();
+        posture_.q += c[k] * P(k).q;
+        posture_.tool.translation() += c[k] * P(k).tool.translation();
       }
       // The rotation by its increments w_k = log(R_k R_(k+1)^T), extrapolated one order lower, then
       // exp(w) R_0. (R_0 R_1^T R_0, the line's, is a rotation to round-off only, and extrapolating
@@ -129,19 +128,19 @@ class RobotKernel final : public PostureKernel {
       // of a map's path stalled a loaded equilibrium on the chains' tool factor R^T.)
       Vec3 w = Vec3::Zero();
       for (int k = 0; k + 1 < order; ++k) {
-        const Eigen::AngleAxisd aa(Mat3(P[k]->tool.linear() * P[k + 1]->tool.linear().transpose()));
+        const Eigen::AngleAxisd aa(Mat3(P(k).tool.linear() * P(k + 1).tool.linear().transpose()));
         w += kExtrapolationWeights[order - 2][k] * aa.angle() * aa.axis();
       }
       const double angle = w.norm();
       const Mat3 turn = angle > 0 ? Mat3(Eigen::AngleAxisd(angle, w / angle)) : Mat3::Identity();
-      posture_.tool.linear() = Eigen::Quaterniond(turn * start_.tool.linear()).normalized().toRotationMatrix();
+      posture_.tool.linear() = Eigen::Quaterniond(turn * start.tool.linear()).normalized().toRotationMatrix();
       const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
       if (k.closed) return next(point, k);
-      posture_ = start_;
+      posture_ = start;
     }
     const KinematicsResult k = solve_posture(*o_.model, task_, posture_, data_, false);
     if (k.closed) return next(point, k);
-    posture_ = start_;
+    posture_ = start;
     return evaluate(point);
   }
 
@@ -158,15 +157,18 @@ class RobotKernel final : public PostureKernel {
       if (axes_[a] >= 0) task_(axes_[a]) = point(a);
   }
 
-  // A solved neighbour: start_ (the previous posture) becomes the one before.
+  // A solved neighbour: the path goes on.
   PostureResult next(const Vec3& point, const KinematicsResult& k) {
     warm_ = true;
-    std::rotate(past_.rbegin(), past_.rbegin() + 1, past_.rend());  // over the oldest
-    past_[0] = start_;
-    std::rotate(points_.rbegin(), points_.rbegin() + 1, points_.rend());
-    points_[0] = point;
-    history_ = std::min(history_ + 1, static_cast<int>(past_.size()));
+    record(point);
     return finish(k);
+  }
+
+  // posture_ at `point`, the path's latest (a start for the next point once finish() finds it solved).
+  void record(const Vec3& point) {
+    PathEntry& e = history_.push();
+    e.point = point;
+    e.posture = posture_;
   }
 
   // A loaded warm start continues only a point that ended kOk.
@@ -241,8 +243,8 @@ class RobotKernel final : public PostureKernel {
     const bool regular =
         !regular_.chains.empty() && vjm::regular_platform_unloaded_stiffness(chains, regular_, regular_result_);
     PostureResult fast = r;
-    loaded_.evaluate(points_[0], o_.displacement ? &*o_.displacement : nullptr, o_.wrench ? &*o_.wrench : nullptr,
-                     regular ? &regular_result_.stiffness : nullptr, warm_, fast);
+    loaded_.evaluate(history_[0].point, o_.displacement ? &*o_.displacement : nullptr,
+                     o_.wrench ? &*o_.wrench : nullptr, regular ? &regular_result_.stiffness : nullptr, warm_, fast);
     if (fast.status != PostureStatus::kOk) {
       loaded_.forget();
       return false;
@@ -255,12 +257,13 @@ class RobotKernel final : public PostureKernel {
   std::array<int, 3> axes_;
   RobotData data_;
   VecX task_;  // the task at the current point
-  RobotPosture posture_, start_;
-  // The path's points, posture_'s first, and the postures before posture_ (extrapolation,
-  // evaluate_next), latest first: history_ of them solved one after the other.
-  std::array<RobotPosture, kMaxExtrapolationOrder - 1> past_;
-  std::array<Vec3, kMaxExtrapolationOrder> points_{};
-  int history_ = 0;
+  RobotPosture posture_;
+  // The path's points and their postures, posture_'s first (extrapolation, evaluate_next).
+  struct PathEntry {
+    Vec3 point = Vec3::Zero();
+    RobotPosture posture;
+  };
+  PathHistory<PathEntry, kMaxExtrapolationOrder> history_;
   RobotVjmChains chains_;  // VJM: the legs' chains, moved to each posture
   vjm::RegularStiffnessData regular_;
   CartesianStiffness regular_result_;
