@@ -1,7 +1,7 @@
 // Warm starts along a path (a map's serpentine rows, PointOrder::kPath): the polynomial through the
 // last solved postures (kept in a PathHistory), evaluated at the next point, where those points and
-// the next lie on one line at one spacing. Used by the robot kernel's kinematics (robot_kernel.cpp) and the loaded
-// mode's equilibria (fixed_chain.cpp).
+// the next lie on one line at one spacing. Used by the robot kernel's kinematics (robot_kernel.cpp)
+// and the loaded mode's equilibria (fixed_chain.cpp).
 #pragma once
 
 #include <algorithm>
