@@ -612,9 +612,9 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
   const int order = warm ? extrapolation_order(
                                point, [&](int k) { return solved_[k].point; }, solved_.size())
                          : 0;
-  // Nor is a warm start tried where this point's nonlinearity, extrapolated along the path from the
-  // points before (the line through the last two at most), fails the test: it would be solved from
-  // rest besides.
+  // No warm start where this point's nonlinearity, extrapolated along the path from the points before
+  // (the line through the last two at most), fails the branch test below: the point would be solved
+  // from rest besides.
   const auto predicted_nonlinearity = [&] {
     const double last = solved_[0].nonlinearity;
     if (order == 1) return last;
