@@ -6,6 +6,7 @@
 
 #include "kinestat/vjm/chain.hpp"
 #include "mechanisms/fixed_size_vjm.hpp"
+#include "mechanisms/small_lu.hpp"
 
 namespace kinestat::mechanisms::fixed_vjm {
 
@@ -14,10 +15,12 @@ namespace {
 // A chord step is kept while it divides the largest residual (in units of its tolerance) by this at
 // least, and not below kFloor of the tolerances, the round-off floor (relative residuals of 1e-15).
 constexpr double kChordContraction = 0.1, kFloor = 1e-3;
+// Where more chord steps than this would be needed at the last one's rate, a Newton step instead.
+constexpr double kChordsPerNewton = 3;
 
 using BorderedMatrix =
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxCoordinates + 6, kMaxCoordinates + 6>;
-using BorderedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxCoordinates + 6, 1>;
+static_assert(kMaxCoordinates + 6 <= kSmallLUStride);
 
 // vjm::pose_difference and vjm::displace.
 Vec6 pose_difference(const Pose& to, const Pose& from) {
@@ -209,35 +212,36 @@ void linearize(const FixedChain& c, const Pose& target, const Vec6& w, const Coo
   l.stat = num > 0 ? num / den : 0.0;
 }
 
-// The Newton matrix of eq. (11) at l. Rows: kinematics (scaled by W), J_q^T F, J_theta^T F - K_theta
-// theta; unknowns (dq, dtheta, W^-1 dF).
-void newton_matrix(const FixedChain& c, const Vec6& w, const Linearization& l, BorderedMatrix& A) {
-  const int n = c.num_passive(), m = c.num_virtual(), N = n + m + 6;
-  A.setZero(N, N);
+// The Newton matrix of eq. (11) at l, into lu to factor. Rows: kinematics (scaled by W), J_q^T F,
+// J_theta^T F - K_theta theta; unknowns (dq, dtheta, W^-1 dF).
+void newton_matrix(const FixedChain& c, const Vec6& w, const Linearization& l, SmallLU& lu) {
+  const int n = c.num_passive(), m = c.num_virtual();
+  SmallLU::View A = lu.reset(n + m + 6);
   A.topLeftCorner(6, n + m) = w.asDiagonal() * l.J;
   A.bottomLeftCorner(n + m, n + m) = l.H;
   A.block(6 + n, n, m, m) -= c.spring_stiffness();
   A.bottomRightCorner(n + m, 6) = l.J.transpose() * w.asDiagonal();
 }
 
-using Forward = Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7>;
+// A chain's right-hand sides, the residual (column 0) and the target's six unit moves (columns 1-6),
+// as condense() leaves them: L^-1 P of them, then the last six pivots of U^-1 (SmallLU::backward).
+using Forward = PaddedColumns<7>;
 
-// A Newton step's condensation of chain c at l (its H included): the Newton matrix factored into
-// lu and perm; x = L^-1 P of the residual (column 0) and of the target's six unit moves (columns 1-6);
-// the wrench rows of their solutions, which need only the last six rows of U: the wrench step
-// (column 0) and the chain's dF/dt, K (eq. 21 as the Schur complement of the Newton matrix). False
-// at a zero pivot or a value not finite.
-template <class Perm>
-bool condense(const FixedChain& c, const Vec6& w, const Linearization& l, BorderedMatrix& lu, Perm& perm, Forward& x,
-              Vec6& wrench_step, Mat6& K) {
+// A Newton step's condensation of chain c at l (its H included): the Newton matrix factored into lu;
+// x as above, whose last six rows are the wrench rows of the solutions: the wrench step (column 0)
+// and the chain's dF/dt, K (eq. 21 as the Schur complement of the Newton matrix). False at a zero
+// pivot or a value not finite.
+bool condense(const FixedChain& c, const Vec6& w, const Linearization& l, SmallLU& lu, Forward& x, Vec6& wrench_step,
+              Mat6& K) {
   newton_matrix(c, w, l, lu);
-  if (!gauss_factor(lu, perm)) return false;
-  x.setZero(lu.rows(), 7);
-  x.col(0) << l.r.cwiseProduct(w), -l.g;
-  x.topRightCorner<6, 6>() = w.asDiagonal();  // the target moved by a unit twist
-  gauss_forward(lu, perm, x);
-  Eigen::Matrix<double, 6, 7> last = x.bottomRows<6>();
-  gauss_backward(lu.bottomRightCorner(6, 6), last);
+  if (!lu.factor()) return false;
+  const int N = lu.rows();
+  Forward::View X = x.reset(N);
+  X.col(0) << l.r.cwiseProduct(w), -l.g;
+  X.topRightCorner<6, 6>() = w.asDiagonal();  // the target moved by a unit twist
+  lu.forward(x);
+  lu.backward(x, N - 6, N);
+  const auto last = X.bottomRows<6>();
   if (!last.allFinite()) return false;
   wrench_step = last.col(0);
   K = w.asDiagonal() * last.rightCols<6>();
@@ -264,30 +268,35 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
   Linearization lin, trial;
   s.linearized = s.condensed = false;
   linearize(c, target, w, s.x, s.wrench, lin);
-  BorderedMatrix A(N, N);
-  std::array<int, kMaxCoordinates + 6> perm;
-  BorderedVector b(N);
+  SmallLU A;
+  PaddedColumns<1> b;
+  PaddedColumns<1>::View d = b.reset(N);  // the step
   bool factored = false;
-  const auto take = [&](const BorderedVector& d, double step) {
+  const auto take = [&](double step) {
     linearize(c, target, w, s.x + step * d.head(n + m), s.wrench + step * d.tail<6>().cwiseProduct(w), trial);
   };
-  const auto accept = [&](const BorderedVector& d, double step) {
+  const auto accept = [&](double step) {
     s.x += step * d.head(n + m);
     s.wrench += step * d.tail<6>().cwiseProduct(w);
     std::swap(lin, trial);
+  };
+  // The step of the factors in A from the state in lin.
+  const auto solve = [&] {
+    d << lin.r.cwiseProduct(w), -lin.g;
+    A.forward(b);
+    A.backward(b);
+    return d.allFinite();
   };
   // At least one step: under a prescribed wrench the outer iteration moves the target by less than
   // the tolerance near convergence, and a chain left where it was would stall it.
   bool floor = false;
   for (int it = 0; it == 0 || !done(lin) || (factored && !floor && !within(lin, kFloor)); ++it) {
     if (it >= max_iterations) return false;
-    b << lin.r.cwiseProduct(w), -lin.g;
     if (factored) {
-      gauss_substitute(A, perm, b);
-      if (b.allFinite()) {
-        take(b, 1.0);
+      if (solve()) {
+        take(1.0);
         if (trial.merit() < kChordContraction * lin.merit()) {
-          accept(b, 1.0);
+          accept(1.0);
           continue;
         }
       }
@@ -295,23 +304,21 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
         floor = true;
         continue;
       }
-      b << lin.r.cwiseProduct(w), -lin.g;
     }
     ++steps;
     c.hessian(lin.walk, s.wrench, lin.H);
     newton_matrix(c, w, lin, A);
-    if (!gauss_factor(A, perm)) return false;
+    if (!A.factor()) return false;
     factored = true;
-    gauss_substitute(A, perm, b);
-    if (!b.allFinite()) return false;
+    if (!solve()) return false;
     double step = 1.0;
     for (int k = 0; k < 20; ++k, step *= 0.5) {
-      take(b, step);
+      take(step);
       // Backtracking is for steps from afar: a step taken from a state that already meets the
       // tolerances (the first step of a warm or nested re-solve) is kept, since at the round-off floor
       // the merit need not decrease and 20 halvings would each walk the chain for nothing.
       if (trial.merit() < lin.merit() || done(lin) || k == 19) {
-        accept(b, step);
+        accept(step);
         break;
       }
     }
@@ -320,7 +327,7 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
   c.hessian(lin.walk, s.wrench, lin.H);
   Forward x;
   Vec6 wrench_step;
-  if (!condense(c, w, lin, A, perm, x, wrench_step, s.K)) return false;
+  if (!condense(c, w, lin, A, x, wrench_step, s.K)) return false;
   s.J = lin.J;
   s.H = lin.H;
   s.linearized = s.condensed = true;
@@ -339,14 +346,15 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
 // (a walk of each chain, no Hessian) solved with the factors, the K_i and the 6x6 of the last Newton
 // step, as long as each such round divides the largest residual by kChordContraction at least (the
 // factors of the first step from a neighbour's equilibrium are those of the solution to a few 1e-3,
-// so that a chord step gains about as many digits as a Newton step, for a fifth of its price);
-// elsewhere a Newton step at the current state. Once every chain and the platform meet the nested
-// iteration's tolerances and chord steps no longer contract (the round-off floor), one more Newton
-// step, whose Schur complements give K, the loaded platform stiffness at that state (eq. 21), and
-// whose J and H are kept in the chains' states. False after 8 Newton steps without converging, or
-// with `monotone` (the start from rest) after a Newton step that did not reduce the residuals (left
-// to the nested iteration, which backtracks). `steps` counts the Newton steps (one per chain), not
-// the chord steps.
+// so that a chord step gains about as many digits as a Newton step, for a fifth of its price) and
+// would reach the floor in kChordsPerNewton more at the last one's rate; elsewhere a Newton step at
+// the current state. Once every chain and the platform meet the nested iteration's tolerances and
+// chord steps no longer contract (the round-off floor), one more Newton step, whose Schur
+// complements give K, the loaded platform stiffness at that state (eq. 21), and whose J and H are kept
+// in the chains' states (a step from the floor, which would move the state by round-off, is not taken). False after 8
+// Newton steps without converging, or with `monotone` (the start from rest) after a Newton step that did not reduce the
+// residuals (left to the nested iteration, which backtracks). `steps` counts the Newton steps (one per chain), not the
+// chord steps.
 bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps, bool monotone) {
   constexpr int kMaxNewtonSteps = 8, kMaxChordSteps = 8;
   const Vec6 w = twist_scale(length_scale_);
@@ -354,16 +362,13 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
   std::array<Linearization, kMaxChains> lin;
   std::array<Vec6, kMaxChains> wc;
   for (int i = 0; i < num_chains; ++i) wc[i] = twist_scale(chains[i].length_scale());
-  std::array<BorderedMatrix, kMaxChains> lu;
-  std::array<std::array<int, kMaxCoordinates + 6>, kMaxChains> perm;
-  // Per chain, L^-1 P of the residual (column 0) and of the target's six unit moves (columns 1-6),
-  // and the last six rows of U^-1 of column 0 (the wrench's step): the unit moves' full solutions are
-  // never formed, only their last six rows (the chain's dF/dt, into Ksum) and, once dt is known, the
-  // one solution of column 0 plus the moves times dt.
-  using Forward = Eigen::Matrix<double, Eigen::Dynamic, 7, 0, kMaxCoordinates + 6, 7>;
+  std::array<SmallLU, kMaxChains> lu;
+  // Per chain, the residual and the target's six unit moves as condense() leaves them: the unit moves'
+  // full solutions are never formed, only their last six rows (the chain's dF/dt, into Ksum) and, once
+  // dt is known, the one solution of column 0 plus the moves times dt.
   std::array<Forward, kMaxChains> sols;
   std::array<Vec6, kMaxChains> wrench_step;
-  BorderedVector b;
+  PaddedColumns<1> b;
   Mat6 Ksum = Mat6::Zero();
   Eigen::FullPivLU<Mat6> platform_lu;
   bool factored = false, after_newton = false;
@@ -385,37 +390,47 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
     if (!(merit == merit)) return false;  // NaN
     const bool converged = merit <= 1.0;
     if (monotone && after_newton && !converged && merit >= last_merit) return false;
-    // A chord step while they contract; converged, the last one is a Newton step from the state at
-    // which they stop contracting or are within kFloor of the tolerances (the round-off floor: 1e-15
-    // relative residuals), so that K is that state's: at a posture of condition number 1e7 a state
-    // within the tolerances but not at the floor moves K's smallest eigenvalue by 1e-6
-    // (tests/mechanisms/posture_kernels_test.cpp).
-    const bool chord =
+    // A chord step while they contract and would reach the floor within kChordsPerNewton more at the
+    // last one's rate (a chord step costs about a quarter of a Newton step; the first after a Newton
+    // step is always tried): from rest, whose first factors lack the load's terms, chords contract
+    // slowly, and a Newton step is taken instead (on the 41^3 map of models/orthoglide_puu.yaml under
+    // 500 N of docs/maps.md: 4 % more Newton steps, 25 % fewer chord steps). Such a Newton step counts as a
+    // chord step against the limits, since it replaces several. Converged, the last step is a Newton
+    // step from the state at which they stop contracting or are within kFloor of the tolerances (the
+    // round-off floor: 1e-15 relative residuals), so that K is that state's: at a posture of condition
+    // number 1e7 a state within the tolerances but not at the floor moves K's smallest eigenvalue by
+    // 1e-6 (tests/mechanisms/posture_kernels_test.cpp).
+    const bool contracting =
         factored && merit < kChordContraction * last_merit && chord_steps < kMaxChordSteps && merit > kFloor;
+    const bool slow =
+        contracting && !after_newton && std::log(merit / kFloor) > kChordsPerNewton * std::log(last_merit / merit);
+    const bool chord = contracting && !slow;
     const bool last = converged && !chord;
     last_merit = merit;
     after_newton = !chord;
     if (chord) {
       ++chord_steps;
       for (int i = 0; i < num_chains; ++i) {
-        const int N = chains[i].num_passive() + chains[i].num_virtual() + 6;
-        b.resize(N);
-        b << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
-        gauss_forward(lu[i], perm[i], b);
-        sols[i].col(0) = b;
-        wrench_step[i] = b.tail<6>();
-        gauss_backward(lu[i].bottomRightCorner(6, 6), wrench_step[i]);
+        const int N = lu[i].rows();
+        PaddedColumns<1>::View r = b.reset(N);
+        r << lin[i].r.cwiseProduct(wc[i]), -lin[i].g;
+        lu[i].forward(b);
+        lu[i].backward(b, N - 6, N);
+        sols[i].view().col(0) = r;
+        wrench_step[i] = r.tail<6>();
         if (!wrench_step[i].allFinite()) return false;
       }
     } else {
-      if (!last && newton_steps >= kMaxNewtonSteps) return false;
-      ++newton_steps;
+      if (slow)
+        ++chord_steps;
+      else if (!last && newton_steps++ >= kMaxNewtonSteps)
+        return false;
       // Condensed platform system: sum K_i dt = W_ext - sum (F_i + dF_i0), in the platform's scaling.
       Ksum.setZero();
       for (int i = 0; i < num_chains; ++i) {
         FixedChainState& s = states_[i];
         chains[i].hessian(lin[i].walk, s.wrench, lin[i].H);
-        if (!condense(chains[i], wc[i], lin[i], lu[i], perm[i], sols[i], wrench_step[i], s.K)) return false;
+        if (!condense(chains[i], wc[i], lin[i], lu[i], sols[i], wrench_step[i], s.K)) return false;
         Ksum += s.K;
       }
       platform_lu.compute(w.cwiseInverse().asDiagonal() * Ksum * w.cwiseInverse().asDiagonal());
@@ -423,17 +438,23 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
       factored = true;
       steps += num_chains;  // newton_iterations counts the factorizations
     }
+    // At the floor the step would move the state by round-off; elsewhere (chord steps stopped
+    // contracting within the tolerances) it takes the deflection there.
+    if (last && merit <= kFloor) break;
     Vec6 F0 = Vec6::Zero();
     for (int i = 0; i < num_chains; ++i) F0 += states_[i].wrench + wrench_step[i].cwiseProduct(wc[i]);
     const Vec6 dt = platform_lu.solve((wrench - F0).cwiseQuotient(w)).cwiseQuotient(w);
     if (!dt.allFinite()) return false;
     for (int i = 0; i < num_chains; ++i) {
       FixedChainState& s = states_[i];
-      b = sols[i].col(0) + sols[i].rightCols<6>() * dt;
-      gauss_backward(lu[i], b);
-      if (!b.allFinite()) return false;
-      s.x += b.head(chains[i].num_passive() + chains[i].num_virtual());
-      s.wrench += b.tail<6>().cwiseProduct(wc[i]);
+      const int N = lu[i].rows();
+      PaddedColumns<1>::View step = b.reset(N);
+      step = sols[i].view().col(0);
+      step.noalias() += sols[i].view().rightCols<6>() * dt;
+      lu[i].backward(b, 0, N - 6);
+      if (!step.allFinite()) return false;
+      s.x += step.head(N - 6);
+      s.wrench += step.tail<6>().cwiseProduct(wc[i]);
     }
     d = pose_difference(displace(displace(nominal_[0], d), dt), nominal_[0]);
     if (last) break;
