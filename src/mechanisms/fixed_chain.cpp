@@ -648,7 +648,8 @@ void LoadedPlatform::evaluate(const Vec3& point, const Vec6* displacement, const
     // displacement), extrapolated from the points before where the path goes straight on at their
     // spacing (path_extrapolation.hpp): the secant through two, the parabola through three (on the
     // 3-PUU's 5 mm grid under 500 N its residuals start at ~1e-5 where the secant's were ~2e-4, which
-    // saves a chord step) or the cubic through four.
+    // saves a chord step), the cubic through four (~1e-6) or the quartic through five (~3e-8, from
+    // which one Newton step lands at the round-off floor: no chord step).
     const std::array<double, kMaxExtrapolationOrder>& c = kExtrapolationWeights[order - 1];
     d.setZero();
     for (int k = 0; k < order; ++k) d += c[k] * solved_[k].d;

@@ -152,8 +152,8 @@ struct LoadedPlatform {
   // with `warm` and the unloaded platform stiffness `unloaded` of this posture, from the equilibrium
   // of the last posture that ended kOk (the chains rebuilt for the new posture since), carried over:
   // each passive joint keeps its deflection from its nominal angle, each spring its deflection, each
-  // chain its wrench, the platform its displacement (extrapolated from the two, three or four
-  // postures before when `point` continues their line at their spacing). A warm start that does not
+  // chain its wrench, the platform its displacement (extrapolated from the two to five postures
+  // before when `point` continues their line at their spacing). A warm start that does not
   // converge, or whose answer fails the branch test against `unloaded` (fixed_chain.cpp), is redone
   // from rest. `point`: the posture's tool point (m), which tells whether the path goes straight on.
   void evaluate(const Vec3& point, const Vec6* displacement, const Vec6* wrench, const Mat6* unloaded, bool warm,

@@ -97,7 +97,7 @@ class RobotKernel final : public PostureKernel {
   }
 
   // Newton from the previous point's posture; along a row of the map's path (the same grid step as
-  // the last ones) from the extrapolation of the last two, three or four postures, whose error is of
+  // the last ones) from the extrapolation of the last two to five postures, whose error is of
   // that order in the step: from four, Newton's first step mostly lands within the tolerance on the
   // Delta's 10 mm grid (the line through two left 3e-4, the parabola through three 6e-6, and a step
   // from either 1e-11, above the tolerance: one Newton iteration more; benchmarks/README.md). A start that
