@@ -342,19 +342,19 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
 // re-solves every chain to 1e-12 at each platform step; this converges in a few steps for all the
 // unknowns together. From rest (F = 0, so H = 0) its first step is the linear response K0^-1 W_ext.
 //
-// A round whose residuals are not yet within the tolerances may be a chord step: the residuals
-// (a walk of each chain, no Hessian) solved with the factors, the K_i and the 6x6 of the last Newton
+// A round whose residuals are not yet within the tolerances may be a chord step: the residuals (a
+// walk of each chain, no Hessian) solved with the factors, the K_i and the 6x6 of the last Newton
 // step, as long as each such round divides the largest residual by kChordContraction at least (the
 // factors of the first step from a neighbour's equilibrium are those of the solution to a few 1e-3,
 // so that a chord step gains about as many digits as a Newton step, for a fifth of its price) and
 // would reach the floor in kChordsPerNewton more at the last one's rate; elsewhere a Newton step at
 // the current state. Once every chain and the platform meet the nested iteration's tolerances and
 // chord steps no longer contract (the round-off floor), one more Newton step, whose Schur
-// complements give K, the loaded platform stiffness at that state (eq. 21), and whose J and H are kept
-// in the chains' states (a step from the floor, which would move the state by round-off, is not taken). False after 8
-// Newton steps without converging, or with `monotone` (the start from rest) after a Newton step that did not reduce the
-// residuals (left to the nested iteration, which backtracks). `steps` counts the Newton steps (one per chain), not the
-// chord steps.
+// complements give K, the loaded platform stiffness at that state (eq. 21), and whose J and H are
+// kept in the chains' states (a step from the floor, which would move the state by round-off, is
+// not taken). False after 8 Newton steps without converging, or with `monotone` (the start from
+// rest) after a Newton step that did not reduce the residuals (left to the nested iteration, which
+// backtracks). `steps` counts the Newton steps (one per chain), not the chord steps.
 bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, int& steps, bool monotone) {
   constexpr int kMaxNewtonSteps = 8, kMaxChordSteps = 8;
   const Vec6 w = twist_scale(length_scale_);
@@ -390,16 +390,17 @@ bool LoadedPlatform::coupled_equilibrium(const Vec6& wrench, Vec6& d, Mat6& K, i
     if (!(merit == merit)) return false;  // NaN
     const bool converged = merit <= 1.0;
     if (monotone && after_newton && !converged && merit >= last_merit) return false;
-    // A chord step while they contract and would reach the floor within kChordsPerNewton more at the
-    // last one's rate (a chord step costs about a quarter of a Newton step; the first after a Newton
-    // step is always tried): from rest, whose first factors lack the load's terms, chords contract
-    // slowly, and a Newton step is taken instead (on the 41^3 map of models/orthoglide_puu.yaml under
-    // 500 N of docs/maps.md: 4 % more Newton steps, 25 % fewer chord steps). Such a Newton step counts as a
-    // chord step against the limits, since it replaces several. Converged, the last step is a Newton
-    // step from the state at which they stop contracting or are within kFloor of the tolerances (the
-    // round-off floor: 1e-15 relative residuals), so that K is that state's: at a posture of condition
-    // number 1e7 a state within the tolerances but not at the floor moves K's smallest eigenvalue by
-    // 1e-6 (tests/mechanisms/posture_kernels_test.cpp).
+    // A chord step while they contract and would reach the floor within kChordsPerNewton more at
+    // the last one's rate (a chord step costs a fifth to a quarter of a Newton step; the first after a
+    // Newton step is always tried): from rest, whose first factors lack the load's terms, chords
+    // contract slowly, and a Newton step is taken instead (on the 41^3 map of
+    // models/orthoglide_puu.yaml under 500 N of docs/maps.md: 4 % more Newton steps, 25 % fewer
+    // chord steps). Such a Newton step counts as a chord step against the limits, since it replaces
+    // several. Converged, the last step is a Newton step from the state at which they stop
+    // contracting or are within kFloor of the tolerances (the round-off floor: 1e-15 relative
+    // residuals), so that K is that state's: at a posture of condition number 1e7 a state within
+    // the tolerances but not at the floor moves K's smallest eigenvalue by 1e-6
+    // (tests/mechanisms/posture_kernels_test.cpp).
     const bool contracting =
         factored && merit < kChordContraction * last_merit && chord_steps < kMaxChordSteps && merit > kFloor;
     const bool slow =

@@ -29,10 +29,10 @@ inline void axpy(double* __restrict y, const double* __restrict x, double s, int
   for (; i < end; ++i) y[i] -= x[i] * s;
 }
 
-// Column x of L below row k (k + 1 < n), rows k + 1 .. P - 1, in whole vectors from the one holding row k + 1:
-// that first vector a copy with zeros on and above row k, the others read in place. An update y -= x s
-// over those vectors leaves the rows up to k as they were, in loops of one length for all the columns
-// of a step.
+// Column x of L below row k (k + 1 < n), rows k + 1 .. P - 1, in whole vectors from the one holding
+// row k + 1: that first vector a copy with zeros on and above row k, the others read in place. An
+// update y -= x s over those vectors leaves the rows up to k as they were, in loops of one length for
+// all the columns of a step.
 struct BelowDiagonal {
   const double* x;
   int begin;

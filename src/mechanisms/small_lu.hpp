@@ -24,8 +24,6 @@ class PaddedColumns {
  public:
   using View =
       Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, C>, Eigen::Aligned32, Eigen::OuterStride<kSmallLUStride>>;
-  using ConstView =
-      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, C>, Eigen::Aligned32, Eigen::OuterStride<kSmallLUStride>>;
   // n rows, all zero.
   View reset(int n) {
     n_ = n;
@@ -33,13 +31,10 @@ class PaddedColumns {
     return view();
   }
   View view() { return View(data_.data(), n_, C); }
-  ConstView view() const { return ConstView(data_.data(), n_, C); }
-  int rows() const { return n_; }
   double* data() { return data_.data(); }
-  const double* data() const { return data_.data(); }
 
  private:
-  alignas(32) std::array<double, C * kSmallLUStride> data_;  // no zeros until reset(): a solve reserves a few
+  alignas(32) std::array<double, C * kSmallLUStride> data_;  // not zeroed here: reset() zeroes them
   int n_ = 0;
 };
 
@@ -48,12 +43,10 @@ class PaddedColumns {
 class SmallLU {
  public:
   using View = Eigen::Map<Eigen::MatrixXd, Eigen::Aligned32, Eigen::OuterStride<kSmallLUStride>>;
-  using ConstView = Eigen::Map<const Eigen::MatrixXd, Eigen::Aligned32, Eigen::OuterStride<kSmallLUStride>>;
   // A, n x n and zero, to fill before factor().
   View reset(int n);
-  // A before factor(); after, its factors (L below the diagonal, unit diagonal implied; U on and above).
-  ConstView matrix() const { return ConstView(a_.data(), n_, n_); }
-  // Overwrites A by its factors; false at a zero pivot or one not finite.
+  // Overwrites A by its factors (L below the diagonal, unit diagonal implied; U on and above); false
+  // at a zero pivot or one not finite.
   bool factor();
   // B := L^-1 P B (the row exchanges, then L^-1).
   template <int C>
@@ -73,7 +66,7 @@ class SmallLU {
  private:
   void forward(double* b, int cols) const;
   void backward(double* b, int cols, int from, int to) const;
-  alignas(32) std::array<double, kSmallLUStride * kSmallLUStride> a_;  // as data_ above
+  alignas(32) std::array<double, kSmallLUStride * kSmallLUStride> a_;  // not zeroed here: reset() zeroes them
   std::array<double, kSmallLUStride> inverse_diagonal_;                // 1 / U(k, k): the solves multiply
   std::array<int, kSmallLUStride> perm_;                               // the row exchanged with k at step k
   int n_ = 0;
