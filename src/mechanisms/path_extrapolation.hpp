@@ -14,8 +14,8 @@ namespace kinestat::mechanisms {
 inline constexpr int kMaxExtrapolationOrder = 5;
 
 // Weights of the polynomial through `order` values at equal steps, evaluated one step on, latest
-// value first: order 1 the last value, 2 the line, 3 the parabola, 4 the cubic, 5 the quartic; its error is of
-// order `order` in the step.
+// value first: order 1 the last value, 2 the line, 3 the parabola, 4 the cubic, 5 the quartic; its
+// error is of order `order` in the step.
 inline constexpr std::array<std::array<double, kMaxExtrapolationOrder>, kMaxExtrapolationOrder> kExtrapolationWeights{
     {{1, 0, 0, 0, 0}, {2, -1, 0, 0, 0}, {3, -3, 1, 0, 0}, {4, -6, 4, -1, 0}, {5, -10, 10, -5, 1}}};
 
