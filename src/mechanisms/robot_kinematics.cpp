@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -63,12 +64,23 @@ bool equation_is_length(const RobotModel& m, int r) {
   return !is_angle(m.description().task[r - closure]);
 }
 
+// The task rows of the residual at (posture, task): the closure rows' do not depend on the task.
+void task_residual(const RobotModel& m, const RobotPosture& p, const VecX& task, VecX& residual) {
+  const auto& d = m.description();
+  const int closure = closure_count(m);
+  const Vec3 a = angles(p.tool.linear());
+  for (std::size_t t = 0; t < d.task.size(); ++t) {
+    const int c = static_cast<int>(d.task[t]), row = closure + static_cast<int>(t);
+    residual(row) = c < 3 ? p.tool.translation()(c) - task(t) : std::remainder(a(c - 3) - task(t), 2.0 * M_PI);
+  }
+}
+
 // Residual and inverse Jacobian at (posture, task) into data.residual and data.jacobian.
 void evaluate(const RobotModel& m, const RobotPosture& p, const VecX& task, RobotData& data) {
   const int n = m.num_coordinates(), np = platform_components(m);
   const auto& d = m.description();
-  data.residual.setZero();
-  data.jacobian.setZero();
+  // Every row of the residual, and every entry of the Jacobian's structure (make_robot_data zeroes the
+  // rest once), is written below.
   data.redundant_residual = 0.0;
   for (int l = 0; l < m.num_legs(); ++l) {
     const int off = m.leg_offset(l), nl = m.leg_coordinates(l);
@@ -87,24 +99,18 @@ void evaluate(const RobotModel& m, const RobotPosture& p, const VecX& task, Robo
         data.redundant_residual =
             std::max(data.redundant_residual, std::abs(diff(c.component)) / (c.component < 3 ? m.length_scale() : 1.0));
   }
+  task_residual(m, p, task, data.residual);
   const int closure = closure_count(m);
-  const Vec3 a = angles(p.tool.linear());
   Mat3 Einv = Mat3::Identity();
   bool need_rates = false;
   for (TaskCoordinate c : d.task) need_rates |= is_angle(c) && !d.planar;
-  if (need_rates) Einv = angle_rates(a).inverse();
+  if (need_rates) Einv = angle_rates(angles(p.tool.linear())).inverse();
   for (std::size_t t = 0; t < d.task.size(); ++t) {
     const int c = static_cast<int>(d.task[t]), row = closure + static_cast<int>(t);
-    if (c < 3) {
-      data.residual(row) = p.tool.translation()(c) - task(t);
-      for (int i = 0; i < np; ++i)
-        if (platform_component(m, i) == c) data.jacobian(row, n + i) = 1.0;
-    } else {
-      data.residual(row) = std::remainder(a(c - 3) - task(t), 2.0 * M_PI);
-      for (int i = 0; i < np; ++i) {
-        const int comp = platform_component(m, i);
-        if (comp >= 3) data.jacobian(row, n + i) = d.planar ? 1.0 : Einv(c - 3, comp - 3);
-      }
+    for (int i = 0; i < np; ++i) {
+      const int comp = platform_component(m, i);
+      if (c < 3 && comp == c) data.jacobian(row, n + i) = 1.0;
+      if (c >= 3 && comp >= 3) data.jacobian(row, n + i) = d.planar ? 1.0 : Einv(c - 3, comp - 3);
     }
   }
 }
@@ -175,8 +181,11 @@ bool block_factor(const MatX& A, RobotBlockFactors& f) {
   const auto& U = f.lu.matrixLU();
   for (int i = 0; i < np; ++i)
     if (!(U(i, i) != 0.0)) return false;
-  // ||A||_1, the largest column sum of |A| (PartialPivLU's l1 norm).
-  f.norm = A.cwiseAbs().colwise().sum().maxCoeff();
+  // ||A||_1, the largest column sum of |A| (PartialPivLU's l1 norm), over the blocks of the structure.
+  f.norm = A.rightCols(np).cwiseAbs().colwise().sum().maxCoeff();
+  for (const RobotBlockFactors::Leg& g : f.legs)
+    if (g.count > 0)
+      f.norm = std::max(f.norm, A.block(g.row, g.column, g.equations, g.count).cwiseAbs().colwise().sum().maxCoeff());
   f.regular = true;
   return true;
 }
@@ -324,16 +333,30 @@ void factor_scaled_inverse(RobotData& data) {
 // in data.inverse_factors. A residual that does not at least halve after a full (undamped) step,
 // from the first on, is not converging (Newton from a good start converges quadratically), nor one
 // that has not reached a new low in three iterations: the caller shortens its step instead of
-// iterating on.
-bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& data, int& iterations) {
+// iterating on. With `from_closed`, p is the walk's last closure, whose residual and factors are in
+// data.closed_residual and data.closed_factors: the first step solves with them (its Jacobian is
+// the same; only the task rows of the residual change), the same step as from a new evaluation.
+bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& data, int& iterations,
+            bool from_closed = false) {
   double previous = std::numeric_limits<double>::infinity(), best = previous;
   bool damped = true;
   for (int it = 0, stalled = 0; it < kMaxNewton; ++it) {
-    evaluate(m, p, task, data);
-    if (!data.residual.allFinite()) return false;
-    const double r = scaled_norm(m, data.residual, true);
-    factor_scaled_inverse(data);
-    if (r < kTolerance) return true;
+    bool reuse = false;
+    double r = 0.0;
+    if (it == 0 && from_closed) {
+      data.residual = data.closed_residual;
+      task_residual(m, p, task, data.residual);
+      r = scaled_norm(m, data.residual, true);
+      reuse = r >= kTolerance;  // else the solution's own evaluation and factors, below
+    }
+    if (!reuse) {
+      evaluate(m, p, task, data);
+      if (!data.residual.allFinite()) return false;
+      r = scaled_norm(m, data.residual, true);
+      factor_scaled_inverse(data);
+      if (r < kTolerance) return true;
+    }
+    RobotBlockFactors& factors = reuse ? data.closed_factors : data.inverse_factors;
     if (it >= 1 && !damped && r > 0.5 * previous) return false;
     // Damped steps towards a task beyond the workspace's boundary wander without converging: three
     // iterations in a row without a new smallest residual end the solve (the walk halves its step).
@@ -342,10 +365,10 @@ bool newton(const RobotModel& m, const VecX& task, RobotPosture& p, RobotData& d
     best = std::min(best, r);
     previous = r;
     ++iterations;
-    if (!data.inverse_factors.regular) return false;
+    if (!factors.regular) return false;
     // (Dr J Dc) y = -Dr r, dx = Dc y.
     data.step = -data.row_scale.cwiseProduct(data.residual);
-    block_solve(data.inverse_factors, data.step);
+    block_solve(factors, data.step);
     data.step.array() *= data.column_scale.array();
     if (!data.step.allFinite()) return false;
     const double s = scaled_norm(m, data.step, false);
@@ -395,6 +418,8 @@ RobotData make_robot_data(const RobotModel& model) {
   const int tasks = static_cast<int>(model.description().task.size());
   d.start = d.delta = d.target = VecX::Zero(tasks);
   d.trial = model.home();
+  d.closed_residual = d.residual;
+  d.closed_factors = d.inverse_factors;
   return d;
 }
 
@@ -447,7 +472,19 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
                                bool continuation) {
   KinematicsResult out;
   // Beyond a leg's reach (robot_model.hpp) in the task's position components: no closure exists, and
-  // a walk from home would only find that out after many failed Newton solves.
+  // a walk from home would only find that out after many failed Newton solves. The ring's test needs
+  // the whole tool point: the task's x, y, z (a planar robot's z is home's).
+  Vec3 point = model.home().tool.translation();
+  std::array<bool, 3> given{false, false, model.description().planar};
+  for (std::size_t t = 0; t < model.description().task.size(); ++t) {
+    const int c = static_cast<int>(model.description().task[t]);
+    if (c < 3) {
+      point(c) = task(static_cast<int>(t));
+      given[c] = true;
+    }
+  }
+  const bool whole = given[0] && given[1] && given[2];
+  const double slack = 1e-9 * model.length_scale();
   for (int l = 0; l < model.num_legs(); ++l) {
     const RobotModel::Reach& reach = model.leg_reach(l);
     if (!std::isfinite(reach.radius)) continue;
@@ -457,10 +494,19 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
       if (c < 3) distance += std::pow(task(static_cast<int>(t)) - reach.origin(c), 2);
     }
     distance = std::sqrt(distance);
-    if (distance > reach.radius + 1e-9 * model.length_scale()) {
+    if (distance > reach.radius + slack) {
       out.message =
           fmt::format("beyond the reach of {}: its tool point is {:.6g} m from its first joint, at most {:.6g} m",
                       model.description().legs[l].name, distance, reach.radius);
+      return out;
+    }
+    if (!whole || reach.axis.isZero()) continue;
+    const double from_ring = reach.ring_distance(point);
+    if (from_ring > reach.ring_reach + slack) {
+      out.message = fmt::format(
+          "beyond the reach of {}: its tool point is {:.6g} m from the circle its first joint turns its second "
+          "on, at most {:.6g} m",
+          model.description().legs[l].name, from_ring, reach.ring_reach);
       return out;
     }
   }
@@ -488,13 +534,16 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
     RobotPosture& trial = data.trial;
     // A step that follows a halving is not doubled: at the workspace's boundary the doubled step
     // fails again (6 % fewer factorizations on the Delta's map, the same postures).
-    bool halved = false;
+    bool halved = false, closed = false;
     while (s < 1.0) {
       const double next = std::min(1.0, s + h);
       trial = posture;
       data.target = start + next * delta;
-      if (newton(model, data.target, trial, data, out.iterations) && same_branch()) {
+      if (newton(model, data.target, trial, data, out.iterations, closed) && same_branch()) {
         posture = trial;
+        data.closed_residual = data.residual;
+        data.closed_factors = data.inverse_factors;
+        closed = true;
         s = next;
         if (!halved) h = std::min(2.0 * h, max_h);
         halved = false;

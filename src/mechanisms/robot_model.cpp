@@ -99,28 +99,57 @@ int add_spring(vjm::Chain& c, const RobotSpring& s) {
 }
 
 // RobotModel::Reach of a kinematic chain: the tool point is origin + a sum of its translations after
-// the first motion, each turned by the rotations before it, so no farther than their lengths summed.
+// the first motion, each turned by the rotations before it, so no farther than their lengths summed;
+// after a first revolute, the translations up to the next motion (U) turn about its axis only, on a
+// circle, and the ones after the next motion reach no farther than their lengths summed from it.
 RobotModel::Reach chain_reach(const vjm::Chain& c) {
   RobotModel::Reach r;
-  vjm::Transform T = vjm::Transform::Identity();
-  bool moved = false;
+  vjm::Transform T = vjm::Transform::Identity(), U = vjm::Transform::Identity();
+  int motions = 0;
+  bool revolute = false;
   for (const vjm::Factor& f : c.factors()) {
     if (!f.is_motion) {
-      if (moved)
-        r.radius += f.transform.translation().norm();
-      else
+      if (motions == 0) {
         T = T * f.transform;
+        continue;
+      }
+      r.radius += f.transform.translation().norm();
+      if (motions == 1)
+        U = U * f.transform;
+      else
+        r.ring_reach += f.transform.translation().norm();
       continue;
     }
-    if (f.type == JointType::kPrismatic)
-      r.radius += f.variable ? std::numeric_limits<double>::infinity() : std::abs(f.offset);
-    moved = true;
+    if (f.type == JointType::kPrismatic) {
+      const double travel = f.variable ? std::numeric_limits<double>::infinity() : std::abs(f.offset);
+      r.radius += travel;
+      if (motions >= 1) r.ring_reach += travel;
+    }
+    if (motions == 0) {
+      revolute = f.type == JointType::kRevolute;
+      if (revolute) r.axis = (T.linear() * f.axis).normalized();
+    }
+    ++motions;
   }
   r.origin = T.translation();
+  if (revolute) {
+    const Vec3 v = T.linear() * U.translation();  // the next motion's point, at the first angle 0
+    const double along = r.axis.dot(v);
+    r.ring_center = r.origin + along * r.axis;
+    r.ring_radius = (v - along * r.axis).norm();
+  } else {
+    r.axis.setZero();
+  }
   return r;
 }
 
 }  // namespace
+
+double RobotModel::Reach::ring_distance(const Vec3& x) const {
+  const Vec3 y = x - ring_center;
+  const double h = axis.dot(y);
+  return std::hypot(h, (y - h * axis).norm() - ring_radius);
+}
 
 // Appends a leg to `chain`: with `q` (the leg's coordinates), `kinematic` makes every coordinate a
 // passive variable and leaves the springs out; otherwise actuated coordinates become actuators at

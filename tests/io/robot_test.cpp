@@ -420,6 +420,30 @@ TEST(RobotFiles, ReachOfALeg) {
   EXPECT_NE(k.message.find("beyond the reach of left leg"), std::string::npos) << k.message;
 }
 
+// The ring of a leg whose first joint is a revolute, from the Delta's geometry: leg 1's shoulder at
+// (0.2, 0, 0) turns about y, its elbow 0.3 m (the arm) out along x, so on the circle of radius 0.3 m
+// about the shoulder in the x-z plane; from the elbow the forearm (0.8 m) and the platform's offset
+// (0.05 m) reach 0.85 m. The point 1 m along the shoulder's axis is within the ball of 1.15 m, but
+// sqrt(1 + 0.3^2) = 1.044 m from the circle: refused before any Newton step, the leg named.
+TEST(RobotFiles, RingOfALegsFirstRevolute) {
+  const RobotModel m = load("delta.yaml");
+  const RobotModel::Reach& r = m.leg_reach(0);
+  EXPECT_NEAR(r.radius, 1.15, 1e-12);
+  EXPECT_LT((r.ring_center - Vec3(0.2, 0, 0)).norm(), 1e-15);
+  EXPECT_NEAR(std::abs(r.axis.y()), 1.0, 1e-15);
+  EXPECT_NEAR(r.ring_radius, 0.3, 1e-15);
+  EXPECT_NEAR(r.ring_reach, 0.85, 1e-12);
+  EXPECT_NEAR(r.ring_distance(Vec3(0.2, 1.0, 0)), std::sqrt(1.09), 1e-15);
+  EXPECT_NEAR(r.ring_distance(Vec3(0.2, 0, -0.3)), 0.0, 1e-15);
+  RobotData data = make_robot_data(m);
+  RobotPosture p = m.home();
+  const KinematicsResult k = solve_posture(m, Vec3(0.2, 1.0, 0), p, data);
+  EXPECT_EQ(k.status, KinematicsStatus::kUnreachable);
+  EXPECT_EQ(k.iterations, 0);
+  EXPECT_NE(k.message.find("beyond the reach of leg 1: its tool point is 1.04403 m from the circle"), std::string::npos)
+      << k.message;
+}
+
 // Each check of a robot file fails with its message on a planted fault.
 std::string write_robot(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + "/" + name;

@@ -165,8 +165,8 @@ struct RobotBlockFactors {
   using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
   struct Leg {
     int row = 0, equations = 6, column = 0, count = 0, reflections = 0;
-    Mat6 Q, R;  // R: the top-left count x count
-    Mat6 G;     // Q^T times the leg's platform columns (e x np)
+    Mat6 Q = Mat6::Identity(), R = Mat6::Zero();  // R: the top-left count x count
+    Mat6 G = Mat6::Zero();                        // Q^T times the leg's platform columns (e x np)
   };
   std::vector<Leg> legs;
   int platform = 6, size = 0;
@@ -191,9 +191,12 @@ struct RobotData {
   std::vector<int> direct_columns;
   MatX scaled_inverse, direct;
   RobotBlockFactors inverse_factors, direct_factors;
-  // Continuation: the start's task values, the walk's direction, a trial posture.
+  // Continuation: the start's task values, the walk's direction, a trial posture, and the residual
+  // and factors at the walk's last closure (its next steps start there).
   VecX start, delta, target;
   RobotPosture trial;
+  VecX closed_residual;
+  RobotBlockFactors closed_factors;
 };
 RobotData make_robot_data(const RobotModel& model);
 
@@ -262,11 +265,18 @@ class RobotModel {
   int home_direct_sign() const { return direct_sign_; }
   // A leg's reach: its tool point stays within `radius` (m) of `origin` (base axes), the point before
   // its first motion, at every posture (the lengths of its rigid translations summed: rotations keep
-  // them); infinite for a leg with a prismatic or cylindrical coordinate. solve_posture refuses a task
-  // beyond it without a Newton step.
+  // them); infinite for a leg with a prismatic or cylindrical coordinate. Where the first motion is a
+  // revolute about `axis` (unit; zero otherwise), the point it carries to the next motion turns on
+  // the circle of `ring_radius` about `ring_center` in the plane normal to it, and the tool point
+  // stays within `ring_reach` of that circle (the annulus or torus of a Delta's arm and forearm).
+  // solve_posture refuses a task beyond either without a Newton step.
   struct Reach {
     Vec3 origin = Vec3::Zero();
     double radius = 0.0;
+    Vec3 axis = Vec3::Zero(), ring_center = Vec3::Zero();
+    double ring_radius = 0.0, ring_reach = 0.0;
+    // The distance from x (base axes, m) to the circle.
+    double ring_distance(const Vec3& x) const;
   };
   const Reach& leg_reach(int leg) const { return reach_[leg]; }
 
