@@ -137,8 +137,6 @@ RobotModel::Reach chain_reach(const vjm::Chain& c) {
     const double along = r.axis.dot(v);
     r.ring_center = r.origin + along * r.axis;
     r.ring_radius = (v - along * r.axis).norm();
-  } else {
-    r.axis.setZero();
   }
   return r;
 }

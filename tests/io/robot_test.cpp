@@ -425,6 +425,8 @@ TEST(RobotFiles, ReachOfALeg) {
 // about the shoulder in the x-z plane; from the elbow the forearm (0.8 m) and the platform's offset
 // (0.05 m) reach 0.85 m. The point 1 m along the shoulder's axis is within the ball of 1.15 m, but
 // sqrt(1 + 0.3^2) = 1.044 m from the circle: refused before any Newton step, the leg named.
+// Tolerances: round-off of lengths of ~1 m (1e-15), 1e-12 where the forearm's length comes from the
+// file's square roots.
 TEST(RobotFiles, RingOfALegsFirstRevolute) {
   const RobotModel m = load("delta.yaml");
   const RobotModel::Reach& r = m.leg_reach(0);
