@@ -5,7 +5,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -474,26 +473,20 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
   // Beyond a leg's reach (robot_model.hpp) in the task's position components: no closure exists, and
   // a walk from home would only find that out after many failed Newton solves. The ring's test needs
   // the whole tool point: the task's x, y, z (a planar robot's z is home's).
-  Vec3 point = model.home().tool.translation();
-  std::array<bool, 3> given{false, false, model.description().planar};
+  Vec3 point = model.home().tool.translation(), in_task = Vec3::Zero();
   for (std::size_t t = 0; t < model.description().task.size(); ++t) {
     const int c = static_cast<int>(model.description().task[t]);
     if (c < 3) {
       point(c) = task(static_cast<int>(t));
-      given[c] = true;
+      in_task(c) = 1.0;
     }
   }
-  const bool whole = given[0] && given[1] && given[2];
+  const bool whole = in_task(0) > 0 && in_task(1) > 0 && (in_task(2) > 0 || model.description().planar);
   const double slack = 1e-9 * model.length_scale();
   for (int l = 0; l < model.num_legs(); ++l) {
     const RobotModel::Reach& reach = model.leg_reach(l);
     if (!std::isfinite(reach.radius)) continue;
-    double distance = 0.0;
-    for (std::size_t t = 0; t < model.description().task.size(); ++t) {
-      const int c = static_cast<int>(model.description().task[t]);
-      if (c < 3) distance += std::pow(task(static_cast<int>(t)) - reach.origin(c), 2);
-    }
-    distance = std::sqrt(distance);
+    const double distance = (point - reach.origin).cwiseProduct(in_task).norm();
     if (distance > reach.radius + slack) {
       out.message =
           fmt::format("beyond the reach of {}: its tool point is {:.6g} m from its first joint, at most {:.6g} m",
