@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Proves the installable package: installs build/ into a temporary prefix, checks that the prefix
 # holds the headers, the layer libraries, the kinestat executable, the CMake package files and (when
-# built) the Python package, which it imports from there; then
+# built) the PETSc module and the Python package, which it imports from there (both load that
+# module from the prefix); then
 # configures, builds and runs tests/install/consumer (find_package(kinestat), kinestat::kinestat)
 # against that prefix alone. Called by scripts/test.sh after ctest; run it after a build.
 set -euo pipefail
@@ -40,6 +41,15 @@ fi
 [[ $missing == 0 ]] || exit 1
 
 "$prefix/bin/kinestat" --help >/dev/null
+# The PETSc module, when it was built: installed, and found there (not in the build tree) by the
+# installed program, which --version shows, and by the installed Python module below.
+petsc_module=
+if [[ -e build/src/solver/petsc/libkinestat_petsc.so ]]; then
+  petsc_module="$libdir/kinestat/libkinestat_petsc.so"
+  [[ -e "$petsc_module" ]] || { echo "check_install: $petsc_module is not installed" >&2; exit 1; }
+  "$prefix/bin/kinestat" --version | grep -qF "(module $petsc_module)" ||
+    { echo "check_install: the installed kinestat does not load $petsc_module:" >&2; "$prefix/bin/kinestat" --version >&2; exit 1; }
+fi
 # The Python package, when it was built: found under the prefix by setting one path, as
 # docs/python.md says, and imported from there (not from the build tree).
 if compgen -G "build/python/kinestat/_kinestat*.so" >/dev/null; then
@@ -49,7 +59,9 @@ if compgen -G "build/python/kinestat/_kinestat*.so" >/dev/null; then
 import kinestat, sys
 assert kinestat.__file__.startswith(sys.argv[1]), kinestat.__file__
 assert kinestat.mechanisms.compute_workspace_map and kinestat.fea.compute_link_stiffness
-" "$prefix") || { echo "check_install: the installed Python package does not import" >&2; exit 1; }
+module = sys.argv[2]
+assert not module or kinestat.solver.petsc_versions().endswith('(module %s)' % module), kinestat.solver.petsc_versions()
+" "$prefix" "$petsc_module") || { echo "check_install: the installed Python package does not import, or does not load its PETSc module" >&2; exit 1; }
 fi
 cmake -S "$root/tests/install/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$prefix" >/dev/null

@@ -13,14 +13,16 @@
 namespace kinestat::cli {
 namespace {
 
-// `kinestat --version`: ours, then the libraries the numbers depend on. CHOLMOD and the BLAS as
-// loaded at run time (the BLAS is a Debian alternative, chosen at run time); the header-only and
+// `kinestat --version`: ours, then the libraries the numbers depend on. CHOLMOD, the BLAS and PETSc's
+// module as loaded at run time (the BLAS is a Debian alternative, chosen at run time); the header-only and
 // the VTK libraries as built against (KINESTAT_*_VERSION from src/cli/CMakeLists.txt).
 std::string version_text() {
   const solver::LibraryVersions v = solver::library_versions();
-  return fmt::format("kinestat {}\n  sparse Cholesky: {}\n  BLAS: {}\n  built with Eigen {}.{}.{}, VTK {}, CGAL {}",
-                     kVersion, v.cholmod, v.blas, EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION,
-                     KINESTAT_VTK_VERSION, KINESTAT_CGAL_VERSION);
+  return fmt::format(
+      "kinestat {}\n  sparse Cholesky: {}\n  BLAS: {}\n  distributed backends: {}\n  built with Eigen {}.{}.{}, VTK "
+      "{}, CGAL {}",
+      kVersion, v.cholmod, v.blas, solver::petsc_versions(), EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
+      EIGEN_MINOR_VERSION, KINESTAT_VTK_VERSION, KINESTAT_CGAL_VERSION);
 }
 
 // "solve", "design orthoglide", ...: the subcommands selected so far, for messages.

@@ -55,6 +55,8 @@ void bind_vjm_cartesian_stiffness(py::module_& vjm);
 // into kinestat.msa: one binding file per header.
 void bind_msa_buckling(py::module_& msa);
 void bind_msa_modes(py::module_& msa);
+// The library versions (solver/library_versions.hpp, library_versions.cpp) into kinestat.solver.
+void bind_library_versions(py::module_& solver);
 
 // The exception classes, created in module.cpp: KinestatError and its subclasses InputError,
 // SingularError, NotConvergedError.

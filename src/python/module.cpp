@@ -103,6 +103,7 @@ PYBIND11_MODULE(_kinestat, m) {
   kp::bind_elements(m);
   auto solver = m.def_submodule("solver", "Linear-solver options and factorization reports (C++ kinestat::solver).");
   kp::bind_solver(solver);
+  kp::bind_library_versions(solver);
   auto msa =
       m.def_submodule("msa", "Matrix structural analysis: Structure -> solve() -> Solution (C++ kinestat::msa).");
   kp::bind_msa(msa);

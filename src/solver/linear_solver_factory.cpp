@@ -50,7 +50,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
   return make_sparse_cholesky(options);  // the direct backends, and the refusals
 }
 
-bool backend_built(Backend backend) { return backend == Backend::kCholmod || petsc_built(); }
+bool backend_built(Backend backend) { return backend == Backend::kCholmod || petsc_available().ok(); }
 
 bool solves_generalized_eigenproblems(Backend backend) {
   return backend == Backend::kCholmod || backend == Backend::kPetscMumps;
@@ -86,10 +86,13 @@ std::optional<Backend> backend_from_name(std::string_view name) {
 }
 
 Status check_backend_built(Backend backend) {
-  if (backend_built(backend)) return Status::Ok();
+  if (backend == Backend::kCholmod) return Status::Ok();
+  Status s = petsc_available();
+  if (s.ok()) return s;
+  // Not built in: the user can rebuild or choose cholmod. Built but not loadable: the loader's reasons.
+  if (s.code() != StatusCode::kInvalidInput) return s;
   return Status::Invalid(std::string("solver ") + backend_name(backend) +
-                         " is not built into this kinestat: PETSc was not found when it was configured; install "
-                         "libpetsc-real-dev (scripts/install-deps.sh --petsc) and rebuild, or use --solver cholmod");
+                         " is not built into this kinestat: " + s.message() + ", or use --solver cholmod");
 }
 
 Status LinearSolver::FactorizeSum(std::span<const SparseMatrix> summands, FactorizationReport* report) {

@@ -13,3 +13,13 @@ SOURCE_DIR = pathlib.Path(os.environ.get("KINESTAT_SOURCE_DIR", pathlib.Path(__f
 @pytest.fixture
 def source_dir():
     return SOURCE_DIR
+
+
+@pytest.fixture
+def kinestat_program():
+    """The build tree's kinestat program (KINESTAT_BINARY_DIR, default build/); the test is skipped
+    when it is not built."""
+    cli = pathlib.Path(os.environ.get("KINESTAT_BINARY_DIR", "build")) / "src/cli/kinestat"
+    if not cli.exists():
+        pytest.skip(f"{cli} is not built")
+    return cli

@@ -13,4 +13,8 @@ struct LibraryVersions {
 
 LibraryVersions library_versions();
 
+// "PETSc 3.18.4, SLEPc 3.18.2 (module PATH)", "not built in", or why their module does not load. It
+// loads that module (solver/linear_solver_factory.hpp), which the solvers above never do.
+std::string petsc_versions();
+
 }  // namespace kinestat::solver

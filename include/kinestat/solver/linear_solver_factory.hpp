@@ -2,7 +2,8 @@
 // Every solver object in kinestat is made here, from the caller's LinearSolverOptions. A new backend
 // is one implementation file pair in src/solver/ (a SparseCholesky, or a LinearSolver of another
 // kind), one enumerator of solver::Backend and its entries in this factory; the methods (MSA, FEA)
-// do not change. The PETSc backends (src/solver/petsc_solver.cpp) are built when PETSc is found.
+// do not change. The PETSc backends (src/solver/petsc/petsc_solver.cpp) are built when PETSc is found,
+// into a module that the first request for one of them loads (src/solver/petsc_module.hpp).
 #pragma once
 
 #include <memory>
@@ -31,7 +32,9 @@ std::vector<Backend> available_backends();
 bool backend_built(Backend backend);
 const char* backend_name(Backend backend);
 std::optional<Backend> backend_from_name(std::string_view name);
-// Ok, or kInvalidInput naming the backend and why it is not built in (how to get it).
+// Ok, or kInvalidInput naming the backend and why it is not built in (how to get it), or kInternal
+// when it is built in but its module does not load (where it was looked for). For a PETSc backend
+// it loads that module; so do backend_built and available_backends.
 Status check_backend_built(Backend backend);
 
 // Whether solver/generalized_eigen.hpp works on `backend`'s solver: a direct one, whose solves are

@@ -6,8 +6,7 @@
 // (MUMPS) or the multigrid hierarchy (GAMG); the solution is gathered back to every rank, so every
 // rank computes the same 6x6. On the MUMPS backend SLEPc solves the generalized eigenproblem of
 // solver/generalized_eigen.hpp with the same factor (petsc_generalized_eigenpairs), the pencil's
-// other matrix assembled as K was. Compiled without PETSc (KINESTAT_HAVE_PETSC unset) petsc_built()
-// is false and the factory makes neither.
+// other matrix assembled as K was. Built into the module solver/petsc_module.hpp loads on first use.
 #include "solver/petsc_solver.hpp"
 
 #include <algorithm>
@@ -26,15 +25,11 @@
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "kinestat/solver/parallel.hpp"
 
-#if KINESTAT_HAVE_PETSC
 #include <petscksp.h>
 #include <slepceps.h>
 #include <Eigen/QR>
-#endif
 
 namespace kinestat::solver {
-
-#if KINESTAT_HAVE_PETSC
 
 namespace {
 
@@ -628,7 +623,7 @@ class PetscCgSolver final : public PetscKspSolver<LinearSolver> {
 
 }  // namespace
 
-bool petsc_built() { return true; }
+Status petsc_available() { return Status::Ok(); }  // in the module, PETSc is here
 
 std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions& options) {
   return std::make_unique<PetscMumpsCholesky>(options);
@@ -645,18 +640,5 @@ std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(cons
   if (!mumps) return std::nullopt;
   return mumps->LargestGeneralizedEigenpairs(A, count, convergence);
 }
-
-#else  // PETSc not built in
-
-bool petsc_built() { return false; }
-
-std::unique_ptr<SparseCholesky> make_petsc_mumps(const LinearSolverOptions&) { return nullptr; }
-std::unique_ptr<LinearSolver> make_petsc_cg(const LinearSolverOptions&) { return nullptr; }
-std::optional<StatusOr<std::pair<VecX, MatX>>> petsc_generalized_eigenpairs(const SparseMatrix&, const LinearSolver&,
-                                                                            int, const EigenConvergence&) {
-  return std::nullopt;
-}
-
-#endif
 
 }  // namespace kinestat::solver
