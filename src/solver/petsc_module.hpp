@@ -1,7 +1,7 @@
 // PETSc, SLEPc and MPI in a module of their own (libkinestat_petsc.so, built from src/solver/petsc/
 // when PETSc is found), which a process loads the first time it needs them: when a PETSc backend is
 // asked for, or start_parallel is called. Linked into every program, their ~100 shared libraries
-// cost each start of the kinestat command ~50 ms in the dynamic loader (benchmarks/README.md,
+// cost each start of the kinestat command 45-70 ms in the dynamic loader (benchmarks/README.md,
 // "PETSc on demand"), most runs without a use for them. The module holds its own copy of the layers
 // below it and exports only kinestat_petsc_module(), which gives this table of its entry points; the
 // functions of parallel.hpp and petsc_solver.hpp in kinestat_solver forward to it.
