@@ -93,13 +93,11 @@ StatusOr<const PetscModule*> load_petsc_module() {
 
 const PetscModule* loaded_petsc_module() { return loaded.load(); }
 
-std::string loaded_petsc_module_path() { return loaded.load() ? loaded_path : std::string(); }
-
 // library_versions.hpp's, here so that library_versions.cpp (which the module's copy of the CHOLMOD
 // backend needs) does not bring this loader into the module.
 std::string petsc_versions() {
   const StatusOr<const PetscModule*> m = load_petsc_module();
-  if (m.ok()) return fmt::format("{} (module {})", (*m)->libraries, loaded_petsc_module_path());
+  if (m.ok()) return fmt::format("{} (module {})", (*m)->libraries, loaded_path);
   if (m.status().code() == StatusCode::kInvalidInput) return "not built in";
   return m.status().message();
 }

@@ -56,7 +56,5 @@ inline constexpr const char* kPetscModuleEntry = "kinestat_petsc_module";
 StatusOr<const PetscModule*> load_petsc_module();
 // The table once loaded; nullptr before (nothing of PETSc can exist yet).
 const PetscModule* loaded_petsc_module();
-// The file it was loaded from (empty before).
-std::string loaded_petsc_module_path();
 
 }  // namespace kinestat::solver

@@ -14,7 +14,7 @@ struct LibraryVersions {
 LibraryVersions library_versions();
 
 // "PETSc 3.18.4, SLEPc 3.18.2 (module PATH)", "not built in", or why their module does not load. It
-// loads that module (solver/linear_solver_factory.hpp), which the solvers above never do.
+// loads that module (src/solver/petsc_module.hpp); library_versions() never does.
 std::string petsc_versions();
 
 }  // namespace kinestat::solver
