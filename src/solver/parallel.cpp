@@ -3,6 +3,8 @@
 // function acts as one process alone.
 #include "kinestat/solver/parallel.hpp"
 
+#include <utility>
+
 #include "solver/petsc_module.hpp"
 
 namespace kinestat::solver {
@@ -14,58 +16,50 @@ StatusOr<ProcessGroup> start_parallel() {
   return m.status();
 }
 
-ProcessGroup process_group() {
+namespace {
+
+// The loaded module's `entry` called with `args`; before the module is loaded, and without PETSc,
+// `alone`: one process's answer.
+template <class Entry, class Alone, class... Args>
+auto forward(Entry PetscModule::*entry, Alone alone, Args&&... args) {
   const PetscModule* m = loaded_petsc_module();
-  return m ? m->process_group() : ProcessGroup{};
+  return m ? (m->*entry)(std::forward<Args>(args)...) : alone;
 }
 
-bool parallel_running() {
-  const PetscModule* m = loaded_petsc_module();
-  return m && m->parallel_running();
-}
+}  // namespace
+
+ProcessGroup process_group() { return forward(&PetscModule::process_group, ProcessGroup{}); }
+
+bool parallel_running() { return forward(&PetscModule::parallel_running, false); }
 
 void finish_parallel() {
   if (const PetscModule* m = loaded_petsc_module()) m->finish_parallel();
 }
 
 Status broadcast_from_root(std::vector<double>& values) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->broadcast_doubles(values) : Status::Ok();
+  return forward(&PetscModule::broadcast_doubles, Status::Ok(), values);
 }
 
 Status broadcast_from_root(std::vector<int>& values) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->broadcast_ints(values) : Status::Ok();
+  return forward(&PetscModule::broadcast_ints, Status::Ok(), values);
 }
 
 Status gather_to_root(std::vector<double>& values) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->gather_doubles(values) : Status::Ok();
+  return forward(&PetscModule::gather_doubles, Status::Ok(), values);
 }
 
-Status gather_to_root(std::vector<char>& values) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->gather_chars(values) : Status::Ok();
-}
+Status gather_to_root(std::vector<char>& values) { return forward(&PetscModule::gather_chars, Status::Ok(), values); }
 
-Status sum_over_ranks(std::span<double> values) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->sum_over_ranks(values) : Status::Ok();
-}
+Status sum_over_ranks(std::span<double> values) { return forward(&PetscModule::sum_over_ranks, Status::Ok(), values); }
 
-Status agree_on_status(const Status& mine) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->agree_on_status(mine) : mine;
-}
+Status agree_on_status(const Status& mine) { return forward(&PetscModule::agree_on_status, mine, mine); }
 
 Status same_on_every_rank(const std::string& what, const std::string& value) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->same_on_every_rank(what, value) : Status::Ok();
+  return forward(&PetscModule::same_on_every_rank, Status::Ok(), what, value);
 }
 
 int finish_job(int exit_code, const std::string& message, double wait_seconds) {
-  const PetscModule* m = loaded_petsc_module();
-  return m ? m->finish_job(exit_code, message, wait_seconds) : exit_code;
+  return forward(&PetscModule::finish_job, exit_code, exit_code, message, wait_seconds);
 }
 
 }  // namespace kinestat::solver
