@@ -323,7 +323,9 @@ bool LoadedPlatform::solve_chain(int i, const Pose& target, FixedChainState& s, 
       }
     }
   }
-  // The chain's loaded stiffness at the solution, as a Newton step there condenses it.
+  // The chain's loaded stiffness at the solution, as a Newton step there condenses it (a factorization,
+  // counted as coupled_equilibrium counts its last one).
+  ++steps;
   c.hessian(lin.walk, s.wrench, lin.H);
   Forward x;
   Vec6 wrench_step;
