@@ -1,6 +1,6 @@
 // The sample runs in the header comments of the robot library (models/robots/*.yaml, issue 19: "each
-// file commented with its source and a sample run"): every file has at least one, and each runs and
-// exits 0, its output files written to a temporary folder instead of the working directory. A sample
+// file commented with its source and a sample run"): every file has at least one, and each runs, exits 0
+// and writes the output files it names (to a temporary folder instead of the working directory). A sample
 // is a comment line whose text starts with `kinestat `, continued on the next comment line after a
 // trailing backslash; a remark in parentheses after it is not part of the command.
 #include <gtest/gtest.h>
@@ -68,18 +68,23 @@ TEST(RobotFileSamples, EveryRobotFileHasSampleRunsThatSucceed) {
     EXPECT_FALSE(runs.empty()) << entry.path() << " has no sample run in its header comments";
     for (std::vector<std::string> args : runs) {
       std::string shown = "kinestat";
+      for (const std::string& a : args) shown += " " + a;
+      std::vector<fs::path> written;  // the sample's output files, redirected
       for (std::size_t i = 0; i < args.size(); ++i) {
-        shown += " " + args[i];
         if (args[i].rfind("models/", 0) == 0) args[i] = (source / args[i]).string();
         if (output_options.count(args[i]) && i + 1 < args.size()) {
-          shown += " " + args[i + 1];
-          args[i + 1] = (outputs / fs::path(args[i + 1]).filename()).string();
-          ++i;
+          written.push_back(outputs / fs::path(args[i + 1]).filename());
+          fs::remove_all(written.back());
+          args[++i] = written.back().string();
         }
       }
       args.push_back("--quiet");
       const CliRun r = run_cli(args);
       EXPECT_EQ(r.code, 0) << entry.path().filename() << ": " << shown << "\n" << r.err;
+      // Exit 0 with an output missing or empty would still be a broken sample.
+      for (const fs::path& f : written)
+        EXPECT_TRUE(fs::exists(f) && (fs::is_directory(f) ? !fs::is_empty(f) : fs::file_size(f) > 0))
+            << shown << ": " << f << " not written";
     }
   }
   EXPECT_GE(files, 7);  // the bundled library (docs/robots.md)
