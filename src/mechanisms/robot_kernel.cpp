@@ -78,7 +78,7 @@ class RobotKernel final : public PostureKernel {
     posture_ = o_.model->home();
     if (o_.method == StiffnessMethod::kVjm) {
       chains_ = make_robot_vjm_chains(*o_.model);
-      // The regular path's data (K_theta factored once; loaded, the unloaded stiffness that the warm
+      // The regular path's data (K_theta factored; loaded, the unloaded stiffness that the warm
       // start's branch test needs); a model whose chains do not validate leaves it empty, and every
       // posture takes the reference path, which says why.
       if (!vjm::prepare_regular_stiffness(chains_.chains, regular_).ok()) regular_.chains.clear();

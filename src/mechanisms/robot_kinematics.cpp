@@ -148,78 +148,89 @@ void block_layout(RobotBlockFactors& f, const RobotModel& m, int platform, const
     column += counts[l];
   }
   f.size = column + platform;
-  f.S = RobotBlockFactors::Small::Zero(platform, platform);
-  f.lu = Eigen::PartialPivLU<RobotBlockFactors::Small>(platform);
-  f.x = f.v = f.sign = f.old_sign = VecX::Zero(f.size);
+  f.S.setIdentity();
+  f.x = f.sign = f.old_sign = VecX::Zero(f.size);
 }
 
 // The legs' rows (the task's follow).
 int closure_rows(const RobotBlockFactors& f) { return f.legs.back().row + f.legs.back().equations; }
 
 // False (and f.regular false) when a pivot is zero: A is singular (det A = +-prod det R det S).
+// Reads A's structure only: each leg's rows in its own and the platform's columns, the task's rows
+// in the platform's.
 bool block_factor(const MatX& A, RobotBlockFactors& f) {
   const int np = f.platform, pc = f.size - np;
   const int closure = closure_rows(f);
   f.regular = false;
+  // ||A||_1, the largest column sum of |A| (PartialPivLU's l1 norm), over the blocks of the structure.
+  Vec6 platform_sums = Vec6::Zero();
+  f.norm = 0.0;
   int row = 0;
   for (RobotBlockFactors::Leg& g : f.legs) {
     const int k = g.count, r0 = g.row, e = g.equations;
     if (k > e || row + e - k > np) return false;  // not a valid model's structure (refused at home)
-    g.R.setZero();
-    g.R.topLeftCorner(e, k) = A.block(r0, g.column, e, k);
+    for (int j = 0; j < k; ++j) {
+      double sum = 0.0;
+      for (int i = 0; i < e; ++i) sum += std::abs(g.R(i, j) = A(r0 + i, g.column + j));
+      f.norm = std::max(f.norm, sum);
+    }
     g.reflections = householder_qr(g.R, e, k, g.Q);
     for (int i = 0; i < k; ++i)
       if (!(g.R(i, i) != 0.0)) return false;
-    g.G.setZero();
-    g.G.topLeftCorner(e, np).noalias() = g.Q.topLeftCorner(e, e).transpose() * A.block(r0, pc, e, np);
-    f.S.middleRows(row, e - k) = g.G.block(k, 0, e - k, np);
+    // G = Q^T A_p over A_p's non-zeros (a closure row has one platform entry).
+    g.G.topLeftCorner(e, np).setZero();
+    for (int r = 0; r < e; ++r)
+      for (int j = 0; j < np; ++j)
+        if (const double a = A(r0 + r, pc + j); a != 0.0) {
+          platform_sums(j) += std::abs(a);
+          for (int i = 0; i < e; ++i) g.G(i, j) += g.Q(r, i) * a;
+        }
+    f.S.block(row, 0, e - k, np) = g.G.block(k, 0, e - k, np);
     row += e - k;
   }
-  f.S.bottomRows(np - row) = A.block(closure, pc, np - row, np);
+  for (int r = closure; r < closure + np - row; ++r)
+    for (int j = 0; j < np; ++j) {
+      const double a = A(r, pc + j);
+      f.S(row + r - closure, j) = a;
+      platform_sums(j) += std::abs(a);
+    }
+  f.norm = std::max(f.norm, platform_sums.head(np).maxCoeff());
   f.lu.compute(f.S);
   const auto& U = f.lu.matrixLU();
   for (int i = 0; i < np; ++i)
     if (!(U(i, i) != 0.0)) return false;
-  // ||A||_1, the largest column sum of |A| (PartialPivLU's l1 norm), over the blocks of the structure.
-  f.norm = A.rightCols(np).cwiseAbs().colwise().sum().maxCoeff();
-  for (const RobotBlockFactors::Leg& g : f.legs)
-    if (g.count > 0)
-      f.norm = std::max(f.norm, A.block(g.row, g.column, g.equations, g.count).cwiseAbs().colwise().sum().maxCoeff());
   f.regular = true;
   return true;
 }
 
-// A x = b, x into b.
+// A x = b, x into b, in 6 x 6 products: past a leg's e rows and np columns Q is the identity and G
+// zero, and the vectors are zero past their lengths.
 void block_solve(RobotBlockFactors& f, VecX& b) {
   const int np = f.platform;
   const int closure = closure_rows(f);
-  RobotBlockFactors::SmallVector rhs(np);
+  Vec6 rhs = Vec6::Zero();
   int row = 0;
-  // Q^T b per leg: the first count rows stay in b's leg rows (they become the leg's unknowns), the
-  // others are S's right-hand side.
+  // Q^T b per leg: the first count rows stay (they become the leg's unknowns), the others are S's
+  // right-hand side.
   for (RobotBlockFactors::Leg& g : f.legs) {
-    const int k = g.count, r0 = g.row, e = g.equations;
-    for (int i = 0; i < e; ++i) {
-      double t = 0.0;
-      for (int j = 0; j < e; ++j) t += g.Q(j, i) * b(r0 + j);
-      f.v(r0 + i) = t;
-      if (i >= k) rhs(row + i - k) = t;
-    }
+    const int k = g.count, e = g.equations;
+    Vec6 bl = Vec6::Zero();
+    bl.head(e) = b.segment(g.row, e);
+    g.t.noalias() = g.Q.transpose() * bl;
+    rhs.segment(row, e - k) = g.t.segment(k, e - k);
     row += e - k;
   }
-  rhs.tail(np - row) = b.segment(closure, np - row);
-  const RobotBlockFactors::SmallVector xp = f.lu.solve(rhs);
-  b.tail(np) = xp;
+  rhs.segment(row, np - row) = b.segment(closure, np - row);
+  const Vec6 xp = f.lu.solve(rhs);
+  b.tail(np) = xp.head(np);
   for (RobotBlockFactors::Leg& g : f.legs) {
-    const int k = g.count, r0 = g.row;
-    double y[6];
-    for (int i = k - 1; i >= 0; --i) {  // R x_l = Q1^T b_l - G1 x_p
-      double t = f.v(r0 + i);
-      for (int j = 0; j < np; ++j) t -= g.G(i, j) * xp(j);
-      for (int j = i + 1; j < k; ++j) t -= g.R(i, j) * y[j];
-      y[i] = t / g.R(i, i);
+    const int k = g.count;
+    g.t.noalias() -= g.G * xp;  // R x_l = Q1^T b_l - G1 x_p
+    for (int i = k - 1; i >= 0; --i) {
+      double t = g.t(i);
+      for (int j = i + 1; j < k; ++j) t -= g.R(i, j) * b(g.column + j);
+      b(g.column + i) = t / g.R(i, i);
     }
-    for (int i = 0; i < k; ++i) b(g.column + i) = y[i];
   }
 }
 
@@ -228,33 +239,28 @@ void block_solve(RobotBlockFactors& f, VecX& b) {
 void block_solve_transpose(RobotBlockFactors& f, VecX& c) {
   const int np = f.platform;
   const int closure = closure_rows(f);
-  RobotBlockFactors::SmallVector cp = c.tail(np);
+  Vec6 cp = Vec6::Zero();
+  cp.head(np) = c.tail(np);
   for (RobotBlockFactors::Leg& g : f.legs) {
-    const int k = g.count, r0 = g.row;
-    double z[6];
+    const int k = g.count;
+    g.t.setZero();
     for (int i = 0; i < k; ++i) {  // R^T z1 = c_l
       double t = c(g.column + i);
-      for (int j = 0; j < i; ++j) t -= g.R(j, i) * z[j];
-      z[i] = t / g.R(i, i);
+      for (int j = 0; j < i; ++j) t -= g.R(j, i) * g.t(j);
+      g.t(i) = t / g.R(i, i);
     }
-    for (int j = 0; j < np; ++j)
-      for (int i = 0; i < k; ++i) cp(j) -= g.G(i, j) * z[i];
-    for (int i = 0; i < k; ++i) f.v(r0 + i) = z[i];
+    cp.noalias() -= g.G.transpose() * g.t;
   }
-  const RobotBlockFactors::SmallVector w = f.lu.transpose().solve(cp);
+  const Vec6 w = f.lu.transpose().solve(cp);
   int row = 0;
   for (RobotBlockFactors::Leg& g : f.legs) {
-    const int k = g.count, r0 = g.row, e = g.equations;
-    double z[6];
-    for (int i = 0; i < e; ++i) z[i] = i < k ? f.v(r0 + i) : w(row + i - k);
+    const int k = g.count, e = g.equations;
+    g.t.segment(k, e - k) = w.segment(row, e - k);
     row += e - k;
-    for (int i = 0; i < e; ++i) {
-      double t = 0.0;
-      for (int j = 0; j < e; ++j) t += g.Q(i, j) * z[j];
-      c(r0 + i) = t;
-    }
+    const Vec6 y = g.Q * g.t;
+    c.segment(g.row, e) = y.head(e);
   }
-  c.segment(closure, np - row) = w.tail(np - row);
+  c.segment(closure, np - row) = w.segment(row, np - row);
 }
 
 // The sign of det A: the legs' reflections (det Q = -1 each), the row order that makes the
@@ -322,9 +328,23 @@ double block_rcond(RobotBlockFactors& f) {
   return 1.0 / (f.norm * estimate);
 }
 
-// Newton's matrix: the inverse Jacobian, length-scaled (rows and columns), factored by blocks.
+// The inverse Jacobian length-scaled (rows and columns) into data.scaled_inverse, on its structure
+// (block_factor's; make_robot_data zeroes the rest once).
+void scale_inverse(RobotData& data) {
+  const RobotBlockFactors& f = data.inverse_factors;
+  const int np = f.platform, pc = f.size - np;
+  const auto& rs = data.row_scale;
+  const auto& cs = data.column_scale;
+  for (const RobotBlockFactors::Leg& g : f.legs)
+    for (int j = g.column; j < g.column + g.count; ++j)
+      for (int i = g.row; i < g.row + g.equations; ++i) data.scaled_inverse(i, j) = rs(i) * data.jacobian(i, j) * cs(j);
+  for (int j = pc; j < pc + np; ++j)
+    for (int i = 0; i < data.jacobian.rows(); ++i) data.scaled_inverse(i, j) = rs(i) * data.jacobian(i, j) * cs(j);
+}
+
+// Newton's matrix: the inverse Jacobian, length-scaled, factored by blocks.
 void factor_scaled_inverse(RobotData& data) {
-  data.scaled_inverse.noalias() = data.row_scale.asDiagonal() * data.jacobian * data.column_scale.asDiagonal();
+  scale_inverse(data);
   block_factor(data.scaled_inverse, data.inverse_factors);
 }
 
@@ -446,8 +466,7 @@ namespace {
 // data.direct (robot_jacobians).
 void scaled_jacobians(const RobotModel& model, const RobotPosture& posture, RobotData& data, const VecX& task) {
   evaluate(model, posture, task, data);
-  // Length-scaled, so that singular values compare m and rad.
-  data.scaled_inverse.noalias() = data.row_scale.asDiagonal() * data.jacobian * data.column_scale.asDiagonal();
+  scale_inverse(data);  // length-scaled, so that singular values compare m and rad
   const int closure = closure_count(model);
   for (std::size_t k = 0; k < data.direct_columns.size(); ++k)
     data.direct.col(static_cast<int>(k)) = data.scaled_inverse.col(data.direct_columns[k]).head(closure);

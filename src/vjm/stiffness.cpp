@@ -205,22 +205,26 @@ Small lower_inverse(const Small& L) {
 }
 
 // Eq. (10) of one chain, K = W N (N^T S~ N)^-1 N^T W, when the reference's two rank decisions are
-// certainly full (factor_bordered_system: J_q's rank, no rigid direction); false otherwise.
-bool regular_chain_stiffness(const Chain& chain, RegularStiffnessData::ChainData& d, double tol, Mat6& K) {
+// certainly full (factor_bordered_system: J_q's rank, no rigid direction); false otherwise. L: the
+// chain's length scale.
+bool regular_chain_stiffness(const Chain& chain, RegularStiffnessData::ChainData& d, double L, double tol, Mat6& K) {
   const int n = d.passive;
   if (n > 6) return false;  // a self-motion: the reference names it
   for (int i = 0; i < n; ++i) d.q(i) = chain.nominal_passive(i);
   jacobians(chain, d.q, d.theta, d.J);
   // S = J_theta K_theta^-1 J_theta^T, as spring_compliance: Y^T Y with Y = L^-1 J_theta^T (K_theta =
-  // L L^T), one triangular solve and a product symmetric by construction, coefficient by coefficient
-  // (the general product's blocked path is slow at 6 columns).
+  // L L^T, block by block), triangular solves and a product symmetric by construction, coefficient by
+  // coefficient (the general product's blocked path is slow at 6 columns).
   Mat6 S = Mat6::Zero();
   if (d.virtual_ > 0) {
-    d.compliance_rhs = d.J.Jtheta.transpose();
-    lower_solve_in_place(d.spring_factor.matrixLLT(), d.compliance_rhs);
+    for (const RegularStiffnessData::SpringFactor& f : d.springs) {
+      const int k = static_cast<int>(f.factor.rows());
+      auto Y = d.compliance_rhs.middleRows(f.first, k);
+      Y = d.J.Jtheta.middleCols(f.first, k).transpose();
+      lower_solve_in_place(f.factor.matrixLLT(), Y);
+    }
     S.noalias() = d.compliance_rhs.transpose().lazyProduct(d.compliance_rhs);
   }
-  const double L = chain.length_scale();
   const Vec6 w = twist_scale(L);
   // J_q scaled, unit columns (factor_bordered_system); sigma_max <= ||Jn||_F = sqrt(n).
   Mat6 A = Mat6::Zero();
@@ -266,8 +270,14 @@ Status prepare_regular_stiffness(const std::vector<Chain>& chains, RegularStiffn
     RegularStiffnessData::ChainData& d = data.chains[i];
     d.passive = chains[i].num_passive();
     d.virtual_ = chains[i].num_virtual();
-    d.spring_stiffness = chains[i].spring_stiffness();
-    if (d.virtual_ > 0) d.spring_factor.compute(d.spring_stiffness);
+    d.springs.clear();
+    for (const Spring& s : chains[i].springs()) {
+      RegularStiffnessData::SpringFactor& f = d.springs.emplace_back();
+      f.first = s.first;
+      const int k = static_cast<int>(s.stiffness.rows());
+      f.stiffness.topLeftCorner(k, k) = s.stiffness;
+      f.factor.compute(f.stiffness.topLeftCorner(k, k));
+    }
     d.q = VecX::Zero(d.passive);
     d.theta = VecX::Zero(d.virtual_);
     d.J.Jq = MatX::Zero(6, d.passive);
@@ -277,18 +287,23 @@ Status prepare_regular_stiffness(const std::vector<Chain>& chains, RegularStiffn
   return Status::Ok();
 }
 
-// K_theta factored again where a spring changed since it was (Chain::set_spring_stiffness per posture:
-// a robot file's parallelogram bars); false where it is not positive definite.
+// K_theta's blocks factored again where a spring changed since it was (Chain::set_spring_stiffness per
+// posture: a robot file's parallelogram bars); false where one is not positive definite.
 bool refresh_spring_factor(const Chain& chain, RegularStiffnessData::ChainData& d) {
-  bool changed = false;
-  for (const Spring& s : chain.springs()) {
-    auto block = d.spring_stiffness.block(s.first, s.first, s.stiffness.rows(), s.stiffness.cols());
-    if (block == s.stiffness) continue;
-    block = s.stiffness;
-    changed = true;
+  if (chain.springs().size() != d.springs.size()) return false;
+  for (std::size_t i = 0; i < d.springs.size(); ++i) {
+    const MatX& K = chain.springs()[i].stiffness;
+    RegularStiffnessData::SpringFactor& f = d.springs[i];
+    const int k = static_cast<int>(K.rows());
+    if (k != f.factor.rows() || chain.springs()[i].first != f.first) return false;
+    auto block = f.stiffness.topLeftCorner(k, k);
+    if (block == K) continue;
+    block = K;
+    f.factor.compute(block);
   }
-  if (changed) d.spring_factor.compute(d.spring_stiffness);
-  return d.virtual_ == 0 || d.spring_factor.info() == Eigen::Success;
+  for (const RegularStiffnessData::SpringFactor& f : d.springs)
+    if (f.factor.info() != Eigen::Success) return false;
+  return true;
 }
 
 bool regular_platform_unloaded_stiffness(const std::vector<Chain>& chains, RegularStiffnessData& data,
@@ -296,19 +311,25 @@ bool regular_platform_unloaded_stiffness(const std::vector<Chain>& chains, Regul
   if (chains.empty() || chains.size() != data.chains.size()) return false;
   const double tol = opt.rank_tolerance;
   Mat6 K = Mat6::Zero();
+  // The chains' length scales, once (a walk over each chain's factors; platform_length_scale's
+  // largest).
+  double L0 = 0.0, platform_L = 0.0;
   for (std::size_t i = 0; i < chains.size(); ++i) {
     RegularStiffnessData::ChainData& d = data.chains[i];
     if (chains[i].num_passive() != d.passive || chains[i].num_virtual() != d.virtual_) return false;
     if (!refresh_spring_factor(chains[i], d)) return false;
+    const double L = chains[i].length_scale();
+    if (i == 0) L0 = L;
+    platform_L = std::max(platform_L, L);
     Mat6 Ki;
-    if (!regular_chain_stiffness(chains[i], d, tol, Ki)) return false;
+    if (!regular_chain_stiffness(chains[i], d, L, tol, Ki)) return false;
     // validate_platform's assembly check on the walks just made.
     const double gap = (d.J.pose.translation() - data.chains[0].J.pose.translation()).norm();
-    if (!(gap <= 1e-9 * std::max(chains[i].length_scale(), chains[0].length_scale()))) return false;
+    if (!(gap <= 1e-9 * std::max(L, L0))) return false;
     K += Ki;
   }
   // aggregate's finish without rigid directions: K~ = W^-1 K W^-1 of full rank, C = K^-1.
-  const Vec6 w = twist_scale(platform_length_scale(chains));
+  const Vec6 w = twist_scale(platform_L);
   const Mat6 Kt = w.cwiseInverse().asDiagonal() * K * w.cwiseInverse().asDiagonal();
   const Eigen::LLT<Mat6> llt(Kt);
   if (llt.info() != Eigen::Success) return false;

@@ -160,21 +160,22 @@ struct RobotPosture {
 // the np x np Schur complement S (S x_p = ..., an LU). The inverse kinematics Jacobian and the
 // direct one (the passive columns and the platform) have this structure. Solves (and solves with
 // the transpose, for the condition estimate) cost O(legs e^2) instead of a dense LU's O(size^3).
+// S is held as 6 x 6, the identity past np (a planar robot's np = 3): fixed-size LU and solves, the
+// same pivots, determinant and solution on its np x np block.
 struct RobotBlockFactors {
-  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-  using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
   struct Leg {
     int row = 0, equations = 6, column = 0, count = 0, reflections = 0;
     Mat6 Q = Mat6::Identity(), R = Mat6::Zero();  // R: the top-left count x count
     Mat6 G = Mat6::Zero();                        // Q^T times the leg's platform columns (e x np)
+    Vec6 t = Vec6::Zero();                        // scratch of the solves
   };
   std::vector<Leg> legs;
   int platform = 6, size = 0;
-  Small S;
-  Eigen::PartialPivLU<Small> lu;
-  bool regular = false;       // every R and S of non-zero pivots
-  double norm = 0.0;          // the matrix's 1-norm
-  VecX x, v, sign, old_sign;  // scratch of the solves and the condition estimate
+  Mat6 S = Mat6::Identity();
+  Eigen::PartialPivLU<Mat6> lu;
+  bool regular = false;    // every R and S of non-zero pivots
+  double norm = 0.0;       // the matrix's 1-norm
+  VecX x, sign, old_sign;  // scratch of the condition estimate
 };
 
 // Per-thread scratch of the kinematics, everything that changes per posture (sized once by

@@ -49,7 +49,8 @@ StatusOr<CartesianStiffness> platform_unloaded_stiffness(const std::vector<Chain
 
 // platform_unloaded_stiffness for a posture kernel, which moves the same chains from posture to
 // posture (Chain::set_offset, set_transform, set_nominal_passive): the chains' structure is checked
-// and K_theta factored once (prepare_regular_stiffness), and each posture computes eq. (10) with
+// and K_theta factored once, spring by spring (prepare_regular_stiffness; again where a spring changed:
+// Chain::set_spring_stiffness), and each posture computes eq. (10) with
 // preallocated data and no rank-revealing decomposition, K = N (N^T S N)^-1 N^T (bordered_system.hpp)
 // with N from a Householder QR of the scaled J_q, N^T S N and the platform's sum by Cholesky.
 // It answers only where platform_unloaded_stiffness would find every rank full: each decision of
@@ -59,10 +60,15 @@ StatusOr<CartesianStiffness> platform_unloaded_stiffness(const std::vector<Chain
 // Anywhere else (a singular posture or near one, chains changed in size, tool points apart) it
 // returns false and the caller calls platform_unloaded_stiffness, which diagnoses as always.
 struct RegularStiffnessData {
+  // K_theta is block diagonal, one block per spring (at most 6 x 6): each factored on its own.
+  struct SpringFactor {
+    int first = 0;
+    Mat6 stiffness = Mat6::Zero();  // as factored (top-left size x size): a spring changed since is factored again
+    Eigen::LLT<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>> factor;
+  };
   struct ChainData {
     int passive = 0, virtual_ = 0;
-    MatX spring_stiffness;           // K_theta as factored: a spring changed since is factored again
-    Eigen::LLT<MatX> spring_factor;  // of K_theta
+    std::vector<SpringFactor> springs;
     VecX q, theta;
     ChainJacobians J;
     MatX compliance_rhs;  // L^-1 J_theta^T, L L^T = K_theta
