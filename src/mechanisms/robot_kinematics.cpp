@@ -606,7 +606,7 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
     out.message = "the closure equations lose rank here";
     return out;
   }
-  out.singularity_measure = measure;
+  out.singularity_measure = std::min(1.0, measure / model.home_rcond());
   if (sign_of(data.direct_factors) != model.home_direct_sign()) {
     out.status = KinematicsStatus::kOtherBranch;
     out.message = "the platform is on another assembly mode than at home";

@@ -437,6 +437,12 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
                     equations, unknowns));
   m.inverse_sign_ = J.inverse.partialPivLu().determinant() > 0 ? 1 : -1;
   m.direct_sign_ = J.direct.partialPivLu().determinant() > 0 ? 1 : -1;
+  // The singularity measure's reference: solve_posture's estimate at home (home_rcond_ is 1 here).
+  RobotPosture home = m.home_;
+  const KinematicsResult at_home = solve_posture(m, m.home_task(), home, data);
+  if (at_home.status != KinematicsStatus::kOk)
+    return invalid(fmt::format("the home drawing is not a posture of the robot: {}", at_home.message));
+  m.home_rcond_ = at_home.singularity_measure;
   return m;
 }
 
