@@ -27,6 +27,7 @@
 #include "kinestat/mechanisms/five_bar_kernel.hpp"
 #include "kinestat/mechanisms/five_bar_loci.hpp"
 #include "kinestat/mechanisms/orthoglide_kernel.hpp"
+#include "kinestat/mechanisms/robot_design_sweep.hpp"
 #include "kinestat/mechanisms/robot_kernel.hpp"
 #include "kinestat/mechanisms/workspace_map.hpp"
 
@@ -66,6 +67,7 @@ struct MapSetup {
   bool angular = false;              // an orientation map: axes rx, ry, rz, --angle-step in deg
   const char* range_option = "";
   bool with_load = false;
+  bool robot_file = false;  // the generic kernel: its rate for the estimated time
   std::vector<MapCurve> curves;
   std::string workspace_hint;  // where the reachable region is, for an empty map
 };
@@ -211,6 +213,7 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
   if (!axes.ok()) return axes.status();
   o.map_axes = *axes;
   s.with_load = o.displacement || o.wrench;
+  s.robot_file = true;
   s.workspace_hint = fmt::format("no posture of {} closes there on the home posture's branch", d.name);
   if (Status st = validate(o); !st.ok()) return st;
   s.kernel = make_robot_kernel(o);
@@ -315,10 +318,14 @@ int run_map(MapArgs& a, Context& ctx) {
   for (const MapRange& r : setup->ranges) points *= map_axis_points(r, step);
   const std::string region = ranges_text(setup->ranges, grid_axes(setup->angular));
   if (points > static_cast<double>(a.max_points)) {
-    // The time it would take, at the sweep kernels' rates per thread (benchmarks/README.md: about
-    // 2e5 postures/s unloaded, 1e4 loaded), so that the limit reads as a cost, not a rule.
+    // The time it would take, at the sweep kernels' rates per thread (benchmarks/README.md: the
+    // built-in ones about 2e5 postures/s unloaded, 1e4 loaded; a robot file's, robot_design_sweep.hpp),
+    // so that the limit reads as a cost, not a rule.
     const int threads = a.threads > 0 ? a.threads : available_cpus();
-    const double minutes = points / ((setup->with_load ? 1e4 : 2e5) * threads) / 60.0;
+    const double rate = setup->robot_file
+                            ? (setup->with_load ? kRobotKernelLoadedPosturesPerSecond : kRobotKernelPosturesPerSecond)
+                            : (setup->with_load ? 1e4 : 2e5);
+    const double minutes = points / (rate * threads) / 60.0;
     return fail(
         Status::Invalid(fmt::format("{} {} over {} gives {:.3g} points (about {:.2g} min on {} "
                                     "thread{}), more than --max-points {}; use a larger {} or a smaller "

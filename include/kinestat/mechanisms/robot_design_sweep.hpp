@@ -35,13 +35,16 @@ struct DesignParameter {
 using RobotDesignFactory = std::function<StatusOr<RobotModel>(const std::vector<std::pair<std::string, double>>&)>;
 
 // Designs x region points above this are refused before anything runs, with the estimated time:
-// 2e6 postures take about 8 minutes on two cores.
-inline constexpr double kDefaultMaxRobotDesignPostures = 2e6;
-// The generic robot kernel's rate per thread used for that estimate, measured on the Delta's
-// `workspace:` box (models/robots/delta.yaml, `kinestat map --threads 1`: 1.6e3 to 2.2e3 postures/s;
-// the unreachable points, walked to from home until the walk fails, cost the most).
-inline constexpr double kRobotKernelPosturesPerSecond = 2e3;
-inline constexpr double kRobotKernelLoadedPosturesPerSecond = 5e2;
+// 1.5e7 postures take about 8 minutes on two cores (the five-bar's limit is as long).
+inline constexpr double kDefaultMaxRobotDesignPostures = 1.5e7;
+// The generic robot kernel's rate per thread used for that estimate and for a robot file's map
+// (kinestat map), rounded down from the Delta's sweep over its `workspace:` box at 25 mm (`kinestat
+// design models/robots/delta.yaml --param arm=250:350 --param forearm=700:900 --steps 3 --step 25
+// --min-stiffness 2 --threads 1`, 2026-11-29, the other core busy): 1.8e4 postures/s, 1.0e4 under
+// `--wrench 0,0,-50,0,0,0` (the unreachable points, walked to from home until the walk fails, cost
+// the most).
+inline constexpr double kRobotKernelPosturesPerSecond = 1.5e4;
+inline constexpr double kRobotKernelLoadedPosturesPerSecond = 8e3;
 
 struct RobotDesignSweepOptions {
   std::vector<DesignParameter> parameters;  // 1 or more, names distinct
