@@ -3,11 +3,13 @@
 #include <new>
 
 #include "kinestat/cli/app.hpp"
+#include "kinestat/solver/blas_threads.hpp"
 
 // The library reports failures as Status; what still escapes as an exception (std::bad_alloc from an
 // allocation no size estimate foresaw, an exception from a third-party library) becomes a message and
 // exit status 1 instead of an abort (docs/reliability.md).
 int main(int argc, char** argv) {
+  kinestat::solver::release_idle_blas_threads();  // a run may take less than their 0.1 s of spinning
   try {
     return kinestat::cli::run(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
   } catch (const std::bad_alloc&) {
