@@ -257,6 +257,21 @@ int run_robot_design(RobotDesignArgs a, Context& ctx) {
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   const RobotDesignSweep& s = *sweep;
   const std::size_t postures = s.results.size() * region->num_points();
+  // No design with a point that has a stiffness: a "best" of them would be a NaN score.
+  if (std::none_of(s.results.begin(), s.results.end(),
+                   [](const RobotDesignResult& r) { return r.status.ok() && std::isfinite(r.k_t_min_worst); })) {
+    const bool reached = std::any_of(s.results.begin(), s.results.end(),
+                                     [](const RobotDesignResult& r) { return r.reachable_points > 0; });
+    if (!reached)
+      return fail(
+          Status::Invalid(fmt::format("none of the {} designs reaches a point of the region; nothing written. "
+                                      "Choose a region inside the workspace (--box)",
+                                      s.results.size())));
+    return fail(Status::Singular(
+        fmt::format("no design has a point with a stiffness in the region: every reachable posture of the {} designs "
+                    "is singular or failed; nothing written. `kinestat map` of one design says why",
+                    s.results.size())));
+  }
 
   std::vector<std::string> written;
   if (!a.vti.empty()) {

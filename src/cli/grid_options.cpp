@@ -1,5 +1,6 @@
 #include "cli/grid_options.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -79,19 +80,26 @@ std::string task_text(const mechanisms::RobotDescription& d) {
 Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::vector<double>& values, int first,
                              const char* option, VecX& task) {
   if (values.empty()) return Status::Ok();
-  if (values.size() != 3) return Status::Invalid(fmt::format("{} takes three values", option));
-  const double scale = first == 3 ? units::kDeg : units::kMm;
-  bool any = false;
+  const bool angles = first == 3;
+  const Component& part = angles ? kDegree : kMillimetre;
+  auto si = vector_option<3>(values, option, angles ? "rx,ry,rz (deg)" : "x,y,z (mm)", {part, part, part});
+  if (!si.ok()) return si.status();
+  std::array<bool, 3> commanded{};
   for (std::size_t t = 0; t < d.task.size(); ++t) {
     const int c = static_cast<int>(d.task[t]) - first;
     if (c < 0 || c > 2) continue;
-    if (!std::isfinite(values[c])) return Status::Invalid(fmt::format("{}: a value is not finite", option));
-    task(static_cast<int>(t)) = values[c] * scale;
-    any = true;
+    task(static_cast<int>(t)) = (*si)(c);
+    commanded[static_cast<std::size_t>(c)] = true;
   }
-  if (!any)
+  if (std::none_of(commanded.begin(), commanded.end(), [](bool b) { return b; }))
     return Status::Invalid(fmt::format("{}: {} commands no {} (its task is {})", option, d.name,
-                                       first == 3 ? "orientation" : "position", task_text(d)));
+                                       angles ? "orientation" : "position", task_text(d)));
+  // A value for a coordinate the robot does not command would be dropped: its legs decide it.
+  for (int c = 0; c < 3; ++c)
+    if (!commanded[static_cast<std::size_t>(c)] && values[static_cast<std::size_t>(c)] != 0.0)
+      return Status::Invalid(fmt::format("{}: {} does not command {} (its task is {}): its legs set it; give 0 there",
+                                         option, d.name, to_string(static_cast<mechanisms::TaskCoordinate>(first + c)),
+                                         task_text(d)));
   return Status::Ok();
 }
 

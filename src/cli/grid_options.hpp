@@ -43,9 +43,9 @@ Status parse_load_options(const std::vector<double>& load, const std::vector<dou
 std::string task_text(const mechanisms::RobotDescription& d);
 
 // Three values of `option` into a robot's task vector: with `first` 0 its x, y, z (mm), with 3 its
-// rx, ry, rz (deg); the others it does not command are ignored. Nothing to do for no values;
-// kInvalidInput naming the option when there are not three, one is not finite, or the task commands
-// none of them.
+// rx, ry, rz (deg). Nothing to do for no values; kInvalidInput naming the option when there are not
+// three, one is not finite or out of range, the task commands none of them, or one it does not
+// command is not 0.
 Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::vector<double>& values, int first,
                              const char* option, VecX& task);
 

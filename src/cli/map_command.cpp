@@ -367,9 +367,10 @@ int run_map(MapArgs& a, Context& ctx) {
         "no point of {} ({}) has a stiffness: {} failed, {} singular, {} unreachable; "
         "nothing written",
         setup->range_option, region, failed, singular, count(PostureStatus::kUnreachable));
-    if (failed > 0)
+    if (failed > 0 && (!a.load.empty() || !a.wrench.empty()))
       return fail(Status::NotConverged(what + ". The loaded equilibrium was not found at any posture: the load may "
                                               "exceed the buckling load; give a smaller --load or --wrench"));
+    if (failed > 0) return fail(Status::NotConverged(what + ". `kinestat vjm` at one of these points says why"));
     return fail(Status::Singular(what + "; choose a region away from the singular loci"));
   }
   map->curves = std::move(setup->curves);

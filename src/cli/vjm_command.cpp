@@ -42,18 +42,13 @@ struct ModelChains {
   std::string title, posture;
 };
 
-StatusOr<ModelChains> robot_chains(const VjmArgs& a, const std::optional<Vec3>& point, Context& ctx) {
+StatusOr<ModelChains> robot_chains(const VjmArgs& a, Context& ctx) {
   auto model = load_robot_model(ctx, "vjm", a.model, a.out.quiet);
   if (!model.ok()) return model.status();
   const mechanisms::RobotDescription& d = model->description();
   VecX task = model->home_task();
-  if (!a.orientation.empty() && a.orientation.size() != 3)
-    return Status::Invalid("--orientation takes three angles rx,ry,rz (deg)");
-  for (std::size_t t = 0; t < d.task.size(); ++t) {
-    const int c = static_cast<int>(d.task[t]);
-    if (c < 3 && point) task(static_cast<int>(t)) = (*point)(c);
-    if (c >= 3 && !a.orientation.empty()) task(static_cast<int>(t)) = a.orientation[c - 3] * kDeg;
-  }
+  if (Status st = set_robot_task_values(d, a.point, 0, "--point", task); !st.ok()) return st;
+  if (Status st = set_robot_task_values(d, a.orientation, 3, "--orientation", task); !st.ok()) return st;
   mechanisms::RobotData data = mechanisms::make_robot_data(*model);
   mechanisms::RobotPosture posture = model->home();
   const mechanisms::KinematicsResult k = mechanisms::solve_posture(*model, task, posture, data);
@@ -112,7 +107,7 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
     return bad(Status::Invalid("--orientation applies to robot files (docs/robots.md)"));
   StatusOr<ModelChains> model = Status::Ok();
   if (*robot) {
-    model = robot_chains(a, point, ctx);
+    model = robot_chains(a, ctx);
   } else {
     StatusOr<io::VjmModel> vjm_model = io::read_vjm_model_yaml(a.model);
     if (!vjm_model.ok()) return bad(vjm_model.status());

@@ -8,7 +8,8 @@ namespace {
 using json = nlohmann::json;
 using namespace kinestat::mechanisms;
 
-// A number, or null where there is none (NaN: no value at this point).
+// A number, or null where there is none (NaN: no value at this point) or it is infinite (a rigid
+// direction: JSON has no infinity).
 json number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json vec3(const Vec3& v) { return json::array({number(v.x()), number(v.y()), number(v.z())}); }

@@ -116,11 +116,12 @@ Status check_input(const std::string& path, const std::vector<PlotField2D>& fiel
       const double v = f.values[i];
       if (std::isnan(v)) continue;
       if (!std::isfinite(v) || (o.log_scale && v <= 0.0))
-        return Status::Invalid(fmt::format("{}{}: value {} at ({}, {}){}", path, which, v,
-                                           f.x0 + f.dx * static_cast<double>(i % f.nx),
-                                           f.y0 + f.dy * static_cast<double>(i / f.nx),
-                                           o.log_scale ? ": a log colour scale needs positive values (NaN: no value)"
-                                                       : ": must be finite (NaN: no value)"));
+        return Status::Invalid(
+            fmt::format("{}{}: value {} at ({}, {}){}", path, which, v, f.x0 + f.dx * static_cast<double>(i % f.nx),
+                        f.y0 + f.dy * static_cast<double>(i / f.nx),
+                        std::isinf(v) ? ": an infinite value (a rigid direction) has no colour; draw another field"
+                        : o.log_scale ? ": a log colour scale needs positive values (NaN: no value)"
+                                      : ": must be finite (NaN: no value)"));
       any_value = true;
     }
   }

@@ -25,6 +25,10 @@ constexpr double kMaxNewtonStep = 0.3;  // scaled: a larger step is shortened (d
 // fewer in all, every bundled robot's maps the same (benchmarks/README.md).
 constexpr double kContinuationStep = 0.1;
 constexpr double kMinContinuationStep = 1e-2;
+// No walk longer than this (scaled task distance: 100 times the robot's length scale, 1 000 steps):
+// a robot with no reach bound (a first prismatic joint) would walk towards a far task for ever, and a
+// step below the start's round-off would never advance.
+constexpr double kMaxWalk = 100.0;
 
 int platform_components(const RobotModel& m) { return m.description().planar ? 3 : 6; }
 int platform_component(const RobotModel& m, int i) { return m.description().planar ? kPlanarComponents[i] : i; }
@@ -541,6 +545,13 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
       distance += x * x;
     }
     distance = std::sqrt(distance);
+    if (!(distance <= kMaxWalk)) {
+      out.message = fmt::format(
+          "{:.3g} times the robot's length scale ({:.6g} m) from the posture to start from: "
+          "too far to follow the closure there",
+          distance, model.length_scale());
+      return out;
+    }
     const double max_h = distance > kContinuationStep ? kContinuationStep / distance : 1.0;
     double s = 0.0, h = max_h;
     RobotPosture& trial = data.trial;

@@ -437,6 +437,11 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
                     equations, unknowns));
   m.inverse_sign_ = J.inverse.partialPivLu().determinant() > 0 ? 1 : -1;
   m.direct_sign_ = J.direct.partialPivLu().determinant() > 0 ? 1 : -1;
+  // Every spring symmetric positive definite and every axis non-zero (vjm::Chain::validate, its
+  // message names the spring's FILE:LINE), checked once here: a map's kernels assume it, and would
+  // otherwise fail at every posture without saying why.
+  for (const vjm::Chain& c : robot_vjm_chains(m, m.home_))
+    if (Status st = c.validate(std::numeric_limits<int>::max()); !st.ok()) return st;
   // The singularity measure's reference: solve_posture's estimate at home (home_rcond_ is 1 here).
   RobotPosture home = m.home_;
   const KinematicsResult at_home = solve_posture(m, m.home_task(), home, data);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -163,9 +164,17 @@ std::string field_names() {
 std::array<double, kNumMapFields> point_fields(const PostureResult& r) {
   // Stiffness under a pure force (moment): the inverse of the compliance block, i.e. the Schur
   // complement K_tt - K_tr K_rr^-1 K_rt; judged by its symmetric part like every index here.
+  // A block with a rigid direction (compliance zero along it: docs/robots.md, "Stiffness") has no
+  // inverse; its stiffnesses are then the inverses of its compliances, +inf along the rigid one.
   const auto block_eigenvalues = [](const Mat3& compliance_block) -> Vec3 {
     const Mat3 k = compliance_block.inverse();
-    return Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (k + k.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
+    if (k.allFinite())
+      return Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (k + k.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
+    const Vec3 mu = Eigen::SelfAdjointEigenSolver<Mat3>(0.5 * (compliance_block + compliance_block.transpose()),
+                                                        Eigen::EigenvaluesOnly)
+                        .eigenvalues();
+    const auto stiffness = [](double m) { return m > 0.0 ? 1.0 / m : std::numeric_limits<double>::infinity(); };
+    return {stiffness(mu(2)), stiffness(mu(1)), stiffness(mu(0))};
   };
   const Vec3 t = block_eigenvalues(r.compliance.topLeftCorner<3, 3>());
   const Vec3 rot = block_eigenvalues(r.compliance.bottomRightCorner<3, 3>());

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -175,6 +176,23 @@ TEST(DesignRobotCommand, EveryDesignFailingExits2WithTheFirstReason) {
   const CliRun r = run_cli(delta_design({"arm=700:800", "forearm=500"}, {"--steps", "2"}));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("every design failed; the first (arm = 700, forearm = 500)"), std::string::npos) << r.err;
+}
+
+// Designs that all run but none with a point that has a stiffness: no "best" of NaN scores. A
+// region beyond every design's reach is bad input (exit 2); a load that buckles every posture
+// leaves no stiffness (exit 3); neither writes a file.
+TEST(DesignRobotCommand, NoPointWithAStiffnessIsAnError) {
+  const std::string json = ::testing::TempDir() + "/no_stiffness_design.json";
+  std::filesystem::remove(json);
+  CliRun r = run_cli({"design", kDelta, "--param", "arm=250:350", "--steps", "2", "--box=2000:2100,0:100,-800:-700",
+                      "--step", "50", "--min-stiffness", "1", "--json", json, "--quiet"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("none of the 2 designs reaches a point of the region"), std::string::npos) << r.err;
+  r = run_cli({"design", kDelta, "--param", "arm=250:350", "--steps", "2", "--box=-100:100,-100:100,-750:-650",
+               "--step", "100", "--min-stiffness", "1", "--wrench", "0,0,-1e9,0,0,0", "--json", json, "--quiet"});
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("no design has a point with a stiffness in the region"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(json));
 }
 
 TEST(DesignRobotCommand, CostAboveTheLimitIsRefusedWithItsTime) {

@@ -272,6 +272,29 @@ TEST(MapCommand, RobotOrientationMap) {
   EXPECT_NE(bad.err.find("--angle-step"), std::string::npos) << bad.err;
 }
 
+// Task values the robot does not command are refused, not dropped (the 3-PRS head commands z, rx,
+// ry: its legs set x and y), on `map` and `vjm` alike; 0 there is accepted. A position 1e6 m away
+// (within the range of a length) ends at once: a head whose legs start with sliders has no reach
+// bound, and its walk from home towards it took a minute per 1e6 mm before.
+TEST(MapCommand, RobotTaskValuesNotCommandedAreRefused) {
+  const std::string head = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/prs_head.yaml";
+  const std::string delta = std::string(KINESTAT_SOURCE_DIR) + "/models/robots/delta.yaml";
+  CliRun r = run_cli({"map", head, "--angle-step", "5", "--position", "50,50,320", "--quiet"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--position: 3-PRS head does not command x"), std::string::npos) << r.err;
+  r = run_cli({"vjm", head, "--point", "10,0,320"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--point: 3-PRS head does not command x"), std::string::npos) << r.err;
+  r = run_cli({"vjm", delta, "--orientation", "0,10,0"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--orientation: Delta (Clavel) commands no orientation"), std::string::npos) << r.err;
+  r = run_cli({"vjm", head, "--point", "0,0,320"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  r = run_cli({"vjm", head, "--point", "0,0,1e9"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("too far to follow the closure"), std::string::npos) << r.err;
+}
+
 // --method msa on a robot file (docs/robots.md, "Stiffness"): the map's description names MSA, also
 // on the hexapod (loops of exact ties); a load with MSA and an unknown method are refused, exit 2.
 TEST(MapCommand, RobotFileByMsa) {

@@ -549,6 +549,10 @@ TEST(RobotFiles, PlantedFaultsNamed) {
       {"axis: [0, 0, 1]}\n      - prismatic", "axis: [1, 0, 0]}\n      - prismatic", "a planar robot has revolute"},
       {"copies: 3", "copies: 2.5", "whole number"},
       {"revolute: {at: [a, 0, 0]", "revolute: {at: [b, 0, 0]", "cannot evaluate"},
+      // A spring that does not resist every deflection: refused when the file is read (before, a map
+      // failed at every posture and blamed a load it was not given).
+      {"      - link: {to: [px, py, 0]}", "      - link: {to: [px, py, 0], spring: {diagonal: [1, 1, 1, 0, 1, 1]}}",
+       "not positive definite (smallest eigenvalue 0)"},
   };
   for (const PlantedFault& c : cases) expect_refused(kGoodPlanar, c);
   // A parameter set from outside must exist.

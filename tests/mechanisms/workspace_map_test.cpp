@@ -357,3 +357,25 @@ TEST(OrthoglideMap, LoadedModeEqualsPerPointLoadedSolves) {
 
 }  // namespace
 }  // namespace kinestat::mechanisms
+
+namespace kinestat::mechanisms {
+namespace {
+
+// A rigid direction (compliance zero along it, docs/robots.md "Stiffness"): the stiffness under a
+// pure force is the inverse of the block's compliances, +inf along the rigid one, not NaN from the
+// inverse of a singular block.
+TEST(PointFields, RigidDirectionIsInfinitelyStiff) {
+  PostureResult r;
+  r.status = PostureStatus::kOk;
+  r.compliance = (Vec6() << 2e-8, 5e-8, 0.0, 1e-6, 4e-6, 0.0).finished().asDiagonal();
+  r.stiffness = Mat6::Zero();
+  const auto f = point_fields(r);
+  const auto at = [&f](MapField m) { return f[static_cast<std::size_t>(m)]; };
+  EXPECT_DOUBLE_EQ(at(MapField::kTranslationalMin), 1.0 / 5e-8);
+  EXPECT_EQ(at(MapField::kTranslationalMax), std::numeric_limits<double>::infinity());
+  EXPECT_DOUBLE_EQ(at(MapField::kRotationalMin), 1.0 / 4e-6);
+  EXPECT_EQ(at(MapField::kRotationalMax), std::numeric_limits<double>::infinity());
+}
+
+}  // namespace
+}  // namespace kinestat::mechanisms

@@ -72,9 +72,9 @@ StatusOr<MapGrid> make_map_grid(const std::array<MapRange, 3>& ranges, double st
 // stiffness with the rotation blocked and overestimates (docs/maps.md). Symmetric parts throughout.
 enum class MapField : int {
   kTranslationalMin,       // smallest eigenvalue of C_tt^-1: stiffness in the weakest direction (N/m)
-  kTranslationalMax,       // largest eigenvalue of C_tt^-1 (N/m)
+  kTranslationalMax,       // largest eigenvalue of C_tt^-1 (N/m; +inf along a rigid direction)
   kRotationalMin,          // smallest eigenvalue of C_rr^-1 (N m/rad)
-  kRotationalMax,          // largest eigenvalue of C_rr^-1 (N m/rad)
+  kRotationalMax,          // largest eigenvalue of C_rr^-1 (N m/rad; +inf along a rigid direction)
   kTrace,                  // tr K, eq. (8)
   kNorm1,                  // max column sum of |k_ij|, eq. (9)
   kNorm2,                  // spectral norm, eq. (10)
