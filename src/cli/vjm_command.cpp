@@ -66,8 +66,7 @@ StatusOr<ModelChains> robot_chains(const VjmArgs& a, Context& ctx) {
   for (int i = 0; i < model->num_coordinates(); ++i) {
     const mechanisms::RobotModel::Coordinate& c = model->coordinates()[i];
     const mechanisms::RobotJoint& j = model->joint(c);
-    const bool length = j.type == mechanisms::RobotJointType::kPrismatic ||
-                        (j.type == mechanisms::RobotJointType::kCylindrical && c.index == 1);
+    const bool length = mechanisms::coordinate_is_length(j.type, c.index);
     out.posture += fmt::format("    {:<60} {:>12.6f} {}{}\n", model->coordinate_name(i),
                                length ? posture.q(i) / kMm : posture.q(i) / kDeg, length ? "mm" : "deg",
                                model->actuated(c) ? "  (actuated)" : "");

@@ -68,19 +68,20 @@ class RobotReader : public YamlFields {
         const char* key = kKeys[d.workspace_angular ? 1 : 0][a];
         const YAML::Node r = require(w, "workspace", key);
         if (!r.IsSequence() || r.size() != 2) fail(r, "workspace", fmt::format("'{}' must be [low, high]", key));
-        box[a] = d.workspace_angular
-                     ? std::pair{expr(r[0], "workspace", key) * kDeg, expr(r[1], "workspace", key) * kDeg}
-                     : std::pair{length(r[0], "workspace", key), length(r[1], "workspace", key)};
+        box[a] = d.workspace_angular ? std::pair{degrees(r[0], "workspace", key), degrees(r[1], "workspace", key)}
+                                     : std::pair{length(r[0], "workspace", key), length(r[1], "workspace", key)};
         if (!(box[a].first <= box[a].second)) fail(r, "workspace", fmt::format("'{}': low above high", key));
       }
       d.workspace = box;
     }
     if (const YAML::Node m = root["materials"]; m.IsDefined()) {
       if (!m.IsMap()) fail(m, "materials", "expected a map of named materials {E, nu}");
+      check_unique_keys(m, "materials");
       for (const auto& kv : m) materials_[kv.first.Scalar()] = material(kv.second, "material " + kv.first.Scalar());
     }
     if (const YAML::Node s = root["sections"]; s.IsDefined()) {
       if (!s.IsMap()) fail(s, "sections", "expected a map of named sections {type, ...}");
+      check_unique_keys(s, "sections");
       for (const auto& kv : s) sections_[kv.first.Scalar()] = section(kv.second, "section " + kv.first.Scalar());
     }
     for_each(root, "legs", true, [&](const YAML::Node& leg, int i) { parse_leg(leg, i, d); });
@@ -110,6 +111,13 @@ class RobotReader : public YamlFields {
     const UnitOfInput unit = u_.of(q);
     if (Status s = check_quantity(x, q, "'" + key + "'", unit, sign); !s.ok()) fail(v, item, s.message());
     return x * unit.scale;
+  }
+  // An angle the file gives in degrees (turns, rolls), in rad.
+  double degrees(const YAML::Node& v, const std::string& item, const std::string& key) {
+    const double x = expr(v, item, key);
+    if (Status s = check_quantity(x, Quantity::kAngle, "'" + key + "'", {kDeg, "deg"}); !s.ok())
+      fail(v, item, s.message());
+    return x * kDeg;
   }
   double length(const YAML::Node& v, const std::string& item, const std::string& key) {
     return quantity(v, item, key, Quantity::kLength);
@@ -146,6 +154,7 @@ class RobotReader : public YamlFields {
     }
     if (!p.IsDefined()) return;
     if (!p.IsMap()) fail(p, "params", "expected a map name: value (or expression of the parameters above it)");
+    check_unique_keys(p, "params");
     for (const auto& kv : p) {
       const std::string name = kv.first.Scalar();
       if (name == "deg" || name == "pi") fail(kv.first, "params", fmt::format("'{}' is a constant; rename it", name));
@@ -305,7 +314,7 @@ class RobotReader : public YamlFields {
                            : dir.norm();
       if (!(x.norm() > 0.0) || !(L > 0.0))
         fail(b, label, "the link has no length in the drawing; give the beam's `x` direction and `length`");
-      const double roll = b["roll"].IsDefined() ? expr(b["roll"], label, "roll") * kDeg : 0.0;
+      const double roll = b["roll"].IsDefined() ? degrees(b["roll"], label, "roll") : 0.0;
       // `count`: identical beams side by side (a parallelogram's bars as one leg): every section
       // property times it, which multiplies the cantilever's stiffness (linear in A, I, J, As).
       Section bars = s;
@@ -395,10 +404,13 @@ class RobotReader : public YamlFields {
       for (int c = 0; c < nc; ++c) {
         const YAML::Node r = lim[static_cast<std::size_t>(c)];
         if (!r.IsSequence() || r.size() != 2) fail(r, label, "each limit is [low, high]");
-        const bool translation =
-            j.type == RobotJointType::kPrismatic || (j.type == RobotJointType::kCylindrical && c == 1);
-        const double s = translation ? u_.length : kDeg;
-        j.limits.emplace_back(expr(r[0], label, "limits") * s, expr(r[1], label, "limits") * s);
+        const bool translation = mechanisms::coordinate_is_length(j.type, c);
+        const auto value = [&](const YAML::Node& v) {
+          return translation ? length(v, label, "limits") : degrees(v, label, "limits");
+        };
+        j.limits.emplace_back(value(r[0]), value(r[1]));
+        if (!(j.limits.back().first <= j.limits.back().second))
+          fail(r, label, "a limit is [low, high]: this one's low is above its high");
       }
     }
     return j;
@@ -417,7 +429,7 @@ class RobotReader : public YamlFields {
     }
     double turn = 0.0;
     if (const YAML::Node t = n["turn"]; t.IsDefined())
-      turn = expr(t, item, "turn") * kDeg;
+      turn = degrees(t, item, "turn");
     else if (copies > 1)
       turn = 2.0 * M_PI / copies;
     const Vec3 turn_axis = n["turn_axis"].IsDefined() ? axis(n["turn_axis"], item, "turn_axis") : Vec3::UnitZ();

@@ -54,6 +54,13 @@ void YamlFields::check_keys(const YAML::Node& map, const std::string& item,
   }
 }
 
+void YamlFields::check_unique_keys(const YAML::Node& map, const std::string& item) const {
+  std::set<std::string> seen;
+  for (const auto& kv : map)
+    if (!seen.insert(kv.first.Scalar()).second)
+      fail(kv.first, item, fmt::format("'{}' is given twice; keep one", kv.first.Scalar()));
+}
+
 YAML::Node YamlFields::require(const YAML::Node& map, const std::string& item, const char* key) const {
   const YAML::Node v = map[key];
   if (!v.IsDefined() || v.IsNull())

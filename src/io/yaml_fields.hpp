@@ -41,6 +41,8 @@ class YamlFields {
   // `node` must be a map whose keys are all in `allowed`, each once.
   void check_map(const YAML::Node& node, const std::string& item, std::initializer_list<const char*> allowed) const;
   void check_keys(const YAML::Node& map, const std::string& item, std::initializer_list<const char*> allowed) const;
+  // `map`'s keys, names the file chooses (parameters, materials), each once.
+  void check_unique_keys(const YAML::Node& map, const std::string& item) const;
   YAML::Node require(const YAML::Node& map, const std::string& item, const char* key) const;
 
   // Runs `f(entry, index)` on each entry of the list root[key] (absent is allowed unless `required`).

@@ -58,8 +58,7 @@ bool unknown_is_length(const RobotModel& m, int u) {
   const int n = m.num_coordinates();
   if (u >= n) return platform_component(m, u - n) < 3;
   const auto& c = m.coordinates()[u];
-  const RobotJointType t = m.joint(c).type;
-  return t == RobotJointType::kPrismatic || (t == RobotJointType::kCylindrical && c.index == 1);
+  return coordinate_is_length(m.joint(c).type, c.index);
 }
 bool equation_is_length(const RobotModel& m, int r) {
   const int closure = closure_count(m);
@@ -608,7 +607,9 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
     const auto [lo, hi] = j.limits[c.index];
     if (posture.q(k) < lo || posture.q(k) > hi) {
       out.message =
-          fmt::format("{} at {:.6g}, outside its limits [{:g}, {:g}]", model.coordinate_name(k), posture.q(k), lo, hi);
+          fmt::format("{} at {:.6g} {}, outside its limits {}", model.coordinate_name(k),
+                      coordinate_is_length(j.type, c.index) ? posture.q(k) : posture.q(k) * 180.0 / M_PI,
+                      coordinate_is_length(j.type, c.index) ? "m" : "deg", limits_text(j.type, c.index, lo, hi));
       return out;
     }
   }

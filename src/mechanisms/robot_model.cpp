@@ -46,6 +46,15 @@ int coordinate_count(RobotJointType t) {
   }
 }
 
+bool coordinate_is_length(RobotJointType t, int index) {
+  return t == RobotJointType::kPrismatic || (t == RobotJointType::kCylindrical && index == 1);
+}
+
+std::string limits_text(RobotJointType t, int index, double lo, double hi) {
+  if (coordinate_is_length(t, index)) return fmt::format("[{:g}, {:g}] m", lo, hi);
+  return fmt::format("[{:g}, {:g}] deg", lo * 180.0 / M_PI, hi * 180.0 / M_PI);
+}
+
 const char* to_string(TaskCoordinate c) {
   static constexpr const char* kNames[] = {"x", "y", "z", "rx", "ry", "rz"};
   return kNames[static_cast<int>(c)];
@@ -321,12 +330,11 @@ StatusOr<RobotModel> make_robot_model(RobotDescription d) {
       }
       if (!j.limits.empty() && static_cast<int>(j.limits.size()) != n)
         return invalid(fmt::format("{}: {} limits for {} coordinates", j.label, j.limits.size(), n));
-      for (const auto& [lo, hi] : j.limits)
-        if (!(lo <= 0.0 && 0.0 <= hi))
+      for (std::size_t c = 0; c < j.limits.size(); ++c)
+        if (const auto [lo, hi] = j.limits[c]; !(lo <= 0.0 && 0.0 <= hi))
           return invalid(
-              fmt::format("{}: limits [{:g}, {:g}] exclude the home posture (0: coordinates are measured "
-                          "from the drawing)",
-                          j.label, lo, hi));
+              fmt::format("{}: limits {} exclude the home posture (0: coordinates are measured from the drawing)",
+                          j.label, limits_text(j.type, static_cast<int>(c), lo, hi)));
       if (d.planar) {
         const bool in_plane = j.type == RobotJointType::kPrismatic ? std::abs(j.axes[0].z()) < 1e-9
                               : (j.type == RobotJointType::kRevolute || j.type == RobotJointType::kParallelogram)

@@ -553,6 +553,11 @@ TEST(RobotFiles, PlantedFaultsNamed) {
       // failed at every posture and blamed a load it was not given).
       {"      - link: {to: [px, py, 0]}", "      - link: {to: [px, py, 0], spring: {diagonal: [1, 1, 1, 0, 1, 1]}}",
        "not positive definite (smallest eigenvalue 0)"},
+      // Names the file chooses given twice (the last one silently won), angles beyond the range of
+      // an angle, limits the wrong way round.
+      {"params: {a: 300,", "params: {a: 300, a: 200,", "'a' is given twice"},
+      {"copies: 3", "copies: 3\n    turn: 1e300", "'turn' = 1e+300 deg is too large for an angle"},
+      {"stiffness: 1e4}", "stiffness: 1e4, limits: [[50, -50]]}", "this one's low is above its high"},
   };
   for (const PlantedFault& c : cases) expect_refused(kGoodPlanar, c);
   // A parameter set from outside must exist.
