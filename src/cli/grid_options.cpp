@@ -105,7 +105,7 @@ Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::v
 
 StatusOr<std::array<int, 3>> robot_grid_axes(const mechanisms::RobotDescription& d,
                                              const std::array<mechanisms::MapRange, 3>& ranges, bool angular,
-                                             const char* range_option) {
+                                             const std::string& range_option) {
   std::array<int, 3> axes{-1, -1, -1};
   for (std::size_t t = 0; t < d.task.size(); ++t) {
     const int c = static_cast<int>(d.task[t]) - (angular ? 3 : 0);

@@ -54,7 +54,7 @@ Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::v
 // axis and `range_option` otherwise).
 StatusOr<std::array<int, 3>> robot_grid_axes(const mechanisms::RobotDescription& d,
                                              const std::array<mechanisms::MapRange, 3>& ranges, bool angular,
-                                             const char* range_option);
+                                             const std::string& range_option);
 
 // --mode ++|+-|-+|--, --assembly up|down, --method msa|vjm into `o`.
 Status parse_five_bar_modes(const std::string& mode, const std::string& assembly, const std::string& method,

@@ -65,7 +65,7 @@ struct MapSetup {
   std::unique_ptr<PostureKernel> kernel;
   std::array<MapRange, 3> ranges{};  // m, or rad for an orientation map
   bool angular = false;              // an orientation map: axes rx, ry, rz, --angle-step in deg
-  const char* range_option = "";
+  std::string range_option;          // the option, or the robot file's `workspace:`, that gave the ranges
   bool with_load = false;
   bool robot_file = false;  // the generic kernel: its rate for the estimated time
   std::vector<MapCurve> curves;
@@ -125,7 +125,11 @@ StatusOr<MapSetup> model_setup(const MapArgs& a) {
                                    "--load or --wrench");
         !s.ok())
       return s;
-  if (a.box.empty()) return Status::Invalid("--box x0:x1,y0:y1,z0:z1 (mm) is required with a model file");
+  if (a.box.empty())
+    return Status::Invalid(
+        fmt::format("{} is no robot file (it has no `robot:` key): as a model file (docs/maps.md) it needs "
+                    "--box x0:x1,y0:y1,z0:z1 (mm)",
+                    a.target));
   if (!a.step) return Status::Invalid("--step MM is required with a model file");
   MapSetup s;
   s.range_option = "--box";
@@ -204,6 +208,7 @@ StatusOr<MapSetup> robot_setup(const MapArgs& a, Context& ctx) {
     for (int i = 0; i < 3; ++i) s.ranges[i] = {(*r)[i].lo / kMm * kDeg, (*r)[i].hi / kMm * kDeg};
   } else if (d.workspace && d.workspace_angular == s.angular) {
     for (int i = 0; i < 3; ++i) s.ranges[i] = {(*d.workspace)[i].first, (*d.workspace)[i].second};
+    s.range_option = fmt::format("{}'s `workspace:`", a.target);
   } else {
     return Status::Invalid(
         fmt::format("{}: no `workspace:` in the file for this map; give {}", a.target,

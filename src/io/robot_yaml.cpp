@@ -5,10 +5,12 @@
 #include <muParser.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 
 #include "io/roll_orientation.hpp"
 #include "io/yaml_fields.hpp"
@@ -52,12 +54,20 @@ class RobotReader : public YamlFields {
           {"rx", TaskCoordinate::kRx}, {"ry", TaskCoordinate::kRy}, {"rz", TaskCoordinate::kRz}};
       const auto it = kNames.find(t.IsScalar() ? t.Scalar() : "");
       if (it == kNames.end()) fail(t, "task", "a task coordinate is one of x, y, z, rx, ry, rz");
+      if (std::find(d.task.begin(), d.task.end(), it->second) != d.task.end())
+        fail(t, "task", fmt::format("'{}' is named twice; keep one", t.Scalar()));
       d.task.push_back(it->second);
     }
     d.tool = point(require(root, "file", "tool"), "tool", "tool");
     if (const YAML::Node w = root["workspace"]; w.IsDefined()) {
       // {x, y, z} (lengths) or {rx, ry, rz} (deg: an orientation map at the home position).
       d.workspace_angular = w.IsMap() && w["rx"].IsDefined();
+      // A map over the task's angles needs one among them, over positions a position.
+      if (std::none_of(d.task.begin(), d.task.end(),
+                       [&](TaskCoordinate c) { return (c >= TaskCoordinate::kRx) == d.workspace_angular; }))
+        fail(w, "workspace",
+             d.workspace_angular ? "the task commands no angle: give the workspace as {x, y, z} (lengths)"
+                                 : "the task commands no position: give the workspace as {rx, ry, rz} (deg)");
       if (d.workspace_angular)
         check_map(w, "workspace", {"rx", "ry", "rz"});
       else
@@ -166,8 +176,10 @@ class RobotReader : public YamlFields {
       auto stored = std::make_unique<double>(value);
       try {
         parser_.DefineVar(name, stored.get());
-      } catch (const mu::Parser::exception_type& e) {
-        fail(kv.first, "params", fmt::format("'{}' is not a usable name: {}", name, e.GetMsg()));
+      } catch (const mu::Parser::exception_type&) {
+        fail(kv.first, "params",
+             fmt::format("'{}' is not a usable name: a name starts with a letter, then letters, digits or _",
+                         printable(name)));
       }
       params_.emplace_back(name, std::move(stored));
       d.params.emplace_back(name, value);
@@ -421,6 +433,9 @@ class RobotReader : public YamlFields {
     check_map(n, item, {"name", "copies", "turn", "turn_axis", "chain"});
     const bool named_leg = n["name"].IsDefined();
     const std::string name = named_leg ? text(n["name"], item, "name") : "leg";
+    // Messages name legs by these names (with a copy's number): two alike would not tell which.
+    if (named_leg && !leg_names_.insert(name).second)
+      fail(n["name"], item, fmt::format("a leg is already named '{}'; give each its own name", name));
     int copies = 1;
     if (const YAML::Node c = n["copies"]; c.IsDefined()) {
       const double x = expr(c, item, "copies");
@@ -475,6 +490,7 @@ class RobotReader : public YamlFields {
   FileUnits u_;
   mu::Parser parser_;
   std::vector<std::pair<std::string, std::unique_ptr<double>>> params_;  // muParser keeps their addresses
+  std::set<std::string> leg_names_;
   std::map<std::string, Material> materials_;
   std::map<std::string, Section> sections_;
   std::map<std::pair<int, int>, int> fea_entries_;  // `fea:` springs by their line and column
@@ -504,8 +520,10 @@ StatusOr<RobotModel> read_robot_model(const std::string& path, const ParamOverri
 StatusOr<bool> is_robot_file(const std::string& path) {
   StatusOr<std::string> text = read_text_file(path, "model file");
   if (!text.ok()) return text.status();
-  return parse_yaml_text<bool>(*text, path, kDoc,
-                               [](const YAML::Node& root) { return root.IsMap() && root["robot"].IsDefined(); });
+  return parse_yaml_text<bool>(*text, path, kDoc, [](const YAML::Node& root) {
+    // `legs:` without `robot:` is a robot file that lacks its name (the reader says so).
+    return root.IsMap() && (root["robot"].IsDefined() || root["legs"].IsDefined());
+  });
 }
 
 StatusOr<RobotParams> read_robot_params(const std::string& path) {

@@ -159,7 +159,18 @@ FileUnits YamlFields::units(const YAML::Node& v, bool any_units) const {
   fail(v, "units", fmt::format("unknown units '{}'; write {}", u, forms));
 }
 
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text)
+    out += static_cast<unsigned char>(c) < 0x20 ? fmt::format("\\x{:02x}", static_cast<unsigned char>(c))
+                                                : std::string(1, c);
+  return out;
+}
+
 StatusOr<std::string> read_text_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return Status::Invalid(fmt::format("{}: a folder, not the {}; give the file's path", path, what));
   std::ifstream in(path);
   if (!in) return Status::Invalid(fmt::format("{}: cannot open the {}; check the path and permissions", path, what));
   std::ostringstream text;

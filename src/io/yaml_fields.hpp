@@ -92,6 +92,9 @@ class YamlFields {
 fea::LinkStiffnessRequest fea_request(const YamlFields& y, const YAML::Node& f, const std::string& item,
                                       const FileUnits& units);
 
+// `text` with its control characters as \xNN: a message stays on one line.
+std::string printable(const std::string& text);
+
 // Loads `text` and runs parse(root), turning YamlInputError and yaml-cpp's exceptions into
 // kInvalidInput messages that name `display_name` and the line.
 template <class T, class Parse>
@@ -102,11 +105,11 @@ StatusOr<T> parse_yaml_text(const std::string& text, const std::string& display_
   } catch (const YamlInputError& e) {
     return Status::Invalid(e.message);
   } catch (const YAML::ParserException& e) {
-    return Status::Invalid(display_name + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg +
-                           "; check indentation, colons and brackets");
+    return Status::Invalid(display_name + ":" + std::to_string(e.mark.line + 1) +
+                           ": malformed YAML: " + printable(e.msg) + "; check indentation, colons and brackets");
   } catch (const YAML::Exception& e) {
     const std::string where = e.mark.is_null() ? display_name : display_name + ":" + std::to_string(e.mark.line + 1);
-    return Status::Invalid(where + ": " + e.msg + "; check the file against " + format_doc);
+    return Status::Invalid(where + ": " + printable(e.msg) + "; check the file against " + format_doc);
   }
 }
 

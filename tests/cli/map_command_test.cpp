@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -270,6 +271,22 @@ TEST(MapCommand, RobotOrientationMap) {
   CliRun bad = run_cli({"map", file, "--angles", "-10:10,-10:10,0", "--step", "5"});
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--angle-step"), std::string::npos) << bad.err;
+}
+
+// A robot file without its `robot:` name is read as a robot file and the reader names the key; a
+// folder is named as one, not read as an empty file.
+TEST(MapCommand, MissingRobotKeyAndFolderAreNamed) {
+  const std::string dir = ::testing::TempDir() + "/kinestat_map_robot_key";
+  std::filesystem::create_directories(dir);
+  const std::string file = dir + "/no_name.yaml";
+  std::ofstream(file) << "task: [x, y, z]\ntool: [0, 0, 0]\nlegs: []\n";
+  CliRun r = run_cli({"map", file, "--step", "10"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("missing required key 'robot'"), std::string::npos) << r.err;
+  r = run_cli({"map", dir, "--step", "10"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("a folder, not the"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
 }
 
 // Task values the robot does not command are refused, not dropped (the 3-PRS head commands z, rx,

@@ -558,6 +558,10 @@ TEST(RobotFiles, PlantedFaultsNamed) {
       {"params: {a: 300,", "params: {a: 300, a: 200,", "'a' is given twice"},
       {"copies: 3", "copies: 3\n    turn: 1e300", "'turn' = 1e+300 deg is too large for an angle"},
       {"stiffness: 1e4}", "stiffness: 1e4, limits: [[50, -50]]}", "this one's low is above its high"},
+      {"task: [x, y, rz]", "task: [x, y, y]", "'y' is named twice"},
+      {"task: [x, y, rz]", "task: [x, y]\nworkspace: {rx: [0, 0], ry: [0, 0], rz: [-5, 5]}",
+       "the task commands no angle"},
+      {"params: {a: 300,", "params: {2a: 1, a: 300,", "'2a' is not a usable name: a name starts with a letter"},
   };
   for (const PlantedFault& c : cases) expect_refused(kGoodPlanar, c);
   // A parameter set from outside must exist.
