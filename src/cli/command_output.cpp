@@ -1,12 +1,32 @@
 #include "cli/command_output.hpp"
 
+#include <cmath>
 #include <filesystem>
 
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include "kinestat/io/results_json.hpp"
 
 namespace kinestat::cli {
+
+const CLI::Validator& positive_number() {
+  static const CLI::Validator v(
+      [](const std::string& text) -> std::string {
+        double x = 0.0;
+        std::size_t used = 0;
+        try {
+          x = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != text.size() || !std::isfinite(x) || !(x > 0.0))
+          return fmt::format("'{}' is not a finite number above 0", text);
+        return {};
+      },
+      "POSITIVE");
+  return v;
+}
 
 void add_output_options(CLI::App& cmd, OutputOptions& o, const std::string& schema, const std::string& doc) {
   cmd.add_option("--json", o.json,

@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "kinestat/cli/app.hpp"
@@ -19,6 +20,10 @@ struct OutputOptions {
   std::string json;    // empty: no JSON; "-": stdout
   bool quiet = false;  // no report and no progress (errors still go to stderr)
 };
+
+// A check for options that count or bound something: a finite number above 0. (CLI::PositiveNumber
+// lets NaN through and prints its upper bound, DBL_MAX, in 309 digits.)
+const CLI::Validator& positive_number();
 
 // Adds --json and --quiet; `schema` names the JSON's section of `doc`.
 void add_output_options(CLI::App& cmd, OutputOptions& o, const std::string& schema,

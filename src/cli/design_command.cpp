@@ -392,7 +392,7 @@ void register_design_command(CLI::App& app, Context& ctx) {
   design
       ->add_option("--max-postures", robot->max_postures,
                    "refuse sweeps of more designs x region points than this (default 1.5e7, about 8 min on 2 cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   design->add_option("--vti", robot->vti, "write the design map (one to three parameters) as VTK ImageData (.vti)");
   add_output_options(*design, robot->out, "kinestat-robot-design-sweep", "docs/maps.md");
   design->callback([design, robot, &ctx] {

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "cli/command_output.hpp"
+#include "cli/grid_options.hpp"
 #include "kinestat/cli/app.hpp"
 #include "kinestat/core/status.hpp"
 #include "kinestat/core/units.hpp"
@@ -44,7 +45,7 @@ Status set_sweep_options(const std::optional<double>& min_stiffness, double near
   if (!(near_singular >= 0.0 && near_singular <= 1.0))
     return Status::Invalid(fmt::format("--near-singular {:g}: the threshold is in [0, 1]", near_singular));
   o.near_singular_threshold = near_singular;
-  if (threads < 0) return Status::Invalid("--threads must be 0 (all cores) or a positive count");
+  if (Status st = check_threads_option(threads); !st.ok()) return st;
   o.threads = threads;
   o.max_postures = max_postures;
   return Status::Ok();

@@ -210,7 +210,7 @@ void add_five_bar_design(CLI::App* design, Context& ctx) {
   cmd->add_option("--threads", a->threads, "threads (default 0: all cores)");
   cmd->add_option("--max-postures", a->max_postures,
                   "refuse sweeps of more designs x region points than this (default 2e8, about 7 min on 2 cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   cmd->add_option("--vti", a->vti, "write the design map (x = r1, y = r2 in m) as VTK ImageData (.vti)");
   cmd->add_option("--png", a->png, "write the design map as a PNG (share in %, r1 and r2 in mm)");
   add_output_options(*cmd, a->out, "kinestat-five-bar-design-sweep", "docs/maps.md");

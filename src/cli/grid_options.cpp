@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/threads.hpp"
 #include "kinestat/core/units.hpp"
 
 namespace kinestat::cli {
@@ -100,6 +101,15 @@ Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::v
       return Status::Invalid(fmt::format("{}: {} does not command {} (its task is {}): its legs set it; give 0 there",
                                          option, d.name, to_string(static_cast<mechanisms::TaskCoordinate>(first + c)),
                                          task_text(d)));
+  return Status::Ok();
+}
+
+Status check_threads_option(int threads) {
+  if (threads < 0) return Status::Invalid("--threads must be 0 (all cores) or a positive count");
+  if (threads > available_cpus())
+    return Status::Invalid(
+        fmt::format("--threads {}: this process may run {} at once; give at most {} (0: all of them)", threads,
+                    available_cpus(), available_cpus()));
   return Status::Ok();
 }
 

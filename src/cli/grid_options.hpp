@@ -49,6 +49,10 @@ std::string task_text(const mechanisms::RobotDescription& d);
 Status set_robot_task_values(const mechanisms::RobotDescription& d, const std::vector<double>& values, int first,
                              const char* option, VecX& task);
 
+// --threads: 0 (all cores) up to the cores this process may use (more would only be ignored by the
+// scheduler, with a warning); kInvalidInput naming the option otherwise.
+Status check_threads_option(int threads);
+
 // Which task coordinate each grid axis sets, x, y, z (or rx, ry, rz when `angular`): its index in the
 // task, -1 for an axis the task lacks, whose range must then be one value (kInvalidInput naming the
 // axis and `range_option` otherwise).

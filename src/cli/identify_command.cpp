@@ -82,7 +82,7 @@ void register_identify_command(CLI::App& app, Context& ctx) {
   cmd->add_option("model", args->model, "start model (VJM model file with 'mechanism: orthoglide')")->required();
   cmd->add_option("targets", args->targets, "targets file (YAML: inputs and compliance terms)")->required();
   cmd->add_option("--tolerance", args->tolerance, "largest relative residual accepted (dimensionless, default 1e-8)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   add_output_options(*cmd, args->out, "kinestat-identification");
   cmd->callback([args, &ctx] { ctx.exit_code = run_identify(*args, ctx); });
 }

@@ -290,7 +290,7 @@ int run_map(MapArgs& a, Context& ctx) {
     return fail(Status::Invalid(fmt::format("--min-stiffness {:g} N/mm: give a stiffness >= 0", *a.min_stiffness)));
   if (!(a.near_singular >= 0.0 && a.near_singular <= 1.0))
     return fail(Status::Invalid(fmt::format("--near-singular {:g}: the threshold is in [0, 1]", a.near_singular)));
-  if (a.threads < 0) return fail(Status::Invalid("--threads must be 0 (all cores) or a positive count"));
+  if (Status st = check_threads_option(a.threads); !st.ok()) return fail(st);
   const std::optional<MapField> field = field_from_name(a.field);
   if (!field)
     return fail(Status::Invalid(fmt::format("--field '{}' is not a map field; use one of {}", a.field, field_names())));
@@ -452,7 +452,7 @@ void register_map_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--near-singular", a->near_singular,
                   "points whose singularity measure (0..1) is below this are near-singular (default 0.01)");
   cmd->add_option("--max-points", a->max_points, "refuse grids with more points than this (default 2000000)")
-      ->check(CLI::PositiveNumber);  // a size_t would take -1 as 2^64 - 1
+      ->check(positive_number());  // a size_t would take -1 as 2^64 - 1
   cmd->add_option("--threads", a->threads, "threads (default 0: all cores)");
   cmd->add_option("--vti", a->vti, "write the map as VTK ImageData (.vti) for ParaView");
   cmd->add_option("--png", a->png, "write a PNG of --field (a box: a sheet of z slices)");

@@ -194,7 +194,8 @@ void register_vjm_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--max-coordinates", args->max_coordinates,
                   "refuse a chain with more coordinates (passive and virtual) than this: its dense matrices grow "
                   "as the square")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(positive_number());
   add_output_options(*cmd, args->out, "kinestat-vjm-results");
   cmd->callback([args, &ctx] { ctx.exit_code = run_vjm(*args, ctx); });
 }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "kinestat/core/input_checks.hpp"
+#include "kinestat/core/threads.hpp"
 #include "kinestat/core/units.hpp"
 
 namespace kinestat::mechanisms {
@@ -214,8 +215,9 @@ Status validate(const MapOptions& o) {
         !s.ok())
       return s;
   if (o.max_points < 1) return Status::Invalid("max_points = 0: give the largest grid to allow (default 2000000)");
-  if (o.threads < 0)
-    return Status::Invalid(fmt::format("threads = {}: give 0 (all cores) or a positive count", o.threads));
+  if (o.threads < 0 || o.threads > available_cpus())
+    return Status::Invalid(fmt::format("threads = {}: give 0 (all cores) or a count up to the {} this process may use",
+                                       o.threads, available_cpus()));
   return Status::Ok();
 }
 

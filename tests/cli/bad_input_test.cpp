@@ -70,7 +70,8 @@ TEST(BadInput, OptionValuesAreCheckedNotReplacedByDefaults) {
 }
 
 TEST(BadInput, IdentificationThatCannotSucceedIsBadInput) {
-  expect_exit({"identify", kPuu, kTargets, "--tolerance", "nan"}, kExitBadInput, {"tolerance nan"});
+  expect_exit({"identify", kPuu, kTargets, "--tolerance", "nan"}, kExitBadInput,
+              {"--tolerance: 'nan' is not a finite number above 0"});
   // Targets files in mm-N-s: `inputs` then one target per line of `targets` (lines 4, 5, ...).
   auto targets = [](const std::string& name, const std::string& inputs, std::initializer_list<std::string> lines) {
     std::string text = "units: mm-N-s\ninputs: [" + inputs + "]\ntargets:\n";

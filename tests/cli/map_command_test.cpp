@@ -163,6 +163,10 @@ TEST(MapCommand, BadOptionsExitTwoNamingTheOption) {
       {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--wrench", "0,0,0,0,0,1e300"}, "--wrench component 6"},
       {{"map", kPuu, "--box", "0:10,0:10,0", "--step", "5", "--load", "0,0,1e12,0,0,0"}, "--load component 3"},
       {{"map", "fivebar", "--max-points", "-1"}, "--max-points"},
+      // No NaN through, no DBL_MAX printed in full; no more threads than the cores (the scheduler
+      // ignored them with a warning).
+      {{"map", "fivebar", "--max-points", "0"}, "--max-points: '0' is not a finite number above 0;"},
+      {{"map", "fivebar", "--threads", "100000"}, "--threads 100000: this process may run"},
   };
   for (const BadCase& c : cases) {
     const CliRun r = run_cli(c.args);
