@@ -570,6 +570,17 @@ TEST(RobotFiles, PlantedFaultsNamed) {
   EXPECT_NE(m.status().message().find("no parameter 'b'"), std::string::npos) << m.status().message();
 }
 
+// A home drawn 1e-5 mm from the five-bar's full stretch (its inverse Jacobian's sigma_min/sigma_max
+// ~1e-5) is refused: the map's singularity measure is relative to home, and would call the whole
+// workspace regular. The bundled home (py = 150 mm) is 0.052.
+TEST(RobotFiles, NearlySingularHomeRefused) {
+  const double stretched = std::sqrt(200.0 * 200.0 - 100.0 * 100.0);
+  auto m = io::read_robot_model(robot_file("five_bar.yaml"), {{"py", stretched - 1e-5}});
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.status().message().find("nearly singular at home"), std::string::npos) << m.status().message();
+  EXPECT_TRUE(io::read_robot_model(robot_file("five_bar.yaml"), {{"py", 150.0}}).ok());
+}
+
 // A leg with two spherical joints spins about itself: the count check names the idle motion.
 TEST(RobotFiles, IdleMotionNamed) {
   std::string text = kGoodPlanar;
