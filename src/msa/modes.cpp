@@ -114,9 +114,33 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     res.status = st;
     return res;
   }
+  // A zero or negligible mass has no frequency to compute (the eigensolver would only see round-off):
+  // refused with what to check. M_ii / K_ii of a free dof is 1/omega^2 of that dof alone, and the
+  // largest is a lower bound of 1/omega_1^2. The extremes of the input ranges (a 1 nm beam, E 1e15 Pa,
+  // density 1e-6 kg/m^3) give about 1e-40 s^2; below 1e-60 the mass stands for none.
+  constexpr double kNegligibleMassRatio = 1e-60;  // s^2
+  double mass_ratio = 0.0;
+  for (int i = 0; i < Kr.rows(); ++i) mass_ratio = std::max(mass_ratio, Mr.coeff(i, i) / Kr.coeff(i, i));
+  if (!(mass_ratio >= kNegligibleMassRatio)) {
+    res.status = Status::Invalid(at_source(
+        s.source(),
+        mass_ratio == 0.0
+            ? std::string("no free dof has mass (the densities and nodal masses are 0, or the masses sit on "
+                          "supported dofs only), so nothing vibrates; give the materials a density or the free "
+                          "nodes a mass")
+            : fmt::format("the mass is negligible against the stiffness: the largest ratio of a free dof's mass to "
+                          "its stiffness, M_ii / K_ii, is {:.3g} s^2 (below {:g} s^2), so no frequency can be "
+                          "computed; check the materials' densities and the nodal masses, and their units",
+                          mass_ratio, kNegligibleMassRatio)));
+    return res;
+  }
   auto eig = solver::largest_generalized_eigenpairs(Mr, Kr, *chol, opt.count);
   if (!eig.ok()) {
     res.status = eig.status();
+    if (res.status.code() == StatusCode::kNotConverged)
+      res.status = Status::NotConverged(at_source(
+          s.source(),
+          "modes: " + res.status.message() + "; check the materials' densities and the nodal masses, and their units"));
     return res;
   }
   const auto& [mu, Q] = *eig;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <new>
 #include <stdexcept>
 #include <utility>
 
@@ -33,6 +34,7 @@ struct StiffnessInverse {
   using Scalar = double;
   const SparseMatrix& K;
   const LinearSolver& chol;
+  Status* failure;  // where a failed solve's status is kept (Spectra sees an exception)
   Eigen::Index rows() const { return K.rows(); }
   Eigen::Index cols() const { return K.cols(); }
   void perform_op(const double* x_in, double* y_out) const {
@@ -41,8 +43,10 @@ struct StiffnessInverse {
   }
   void solve(const double* x_in, double* y_out) const {
     MatX X;
-    if (Status st = chol.Solve(Eigen::Map<const VecX>(x_in, K.rows()), &X); !st.ok())
+    if (Status st = chol.Solve(Eigen::Map<const VecX>(x_in, K.rows()), &X); !st.ok()) {
+      *failure = st;
       throw std::runtime_error(st.message());  // caught around compute() below
+    }
     Eigen::Map<VecX>(y_out, K.rows()) = X.col(0);
   }
 };
@@ -76,8 +80,9 @@ StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatri
     return std::pair<VecX, MatX>{ges.eigenvalues().tail(m).reverse(),
                                  ges.eigenvectors().rightCols(m).rowwise().reverse()};
   }
+  Status solve_failure;
   Product op{A};
-  StiffnessInverse bop{Kr, chol};
+  StiffnessInverse bop{Kr, chol, &solve_failure};
   const int nev = std::min(count, n - 1);
   const int ncv = std::min(n, std::max(2 * nev + 1, 20));
   try {
@@ -90,8 +95,14 @@ StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatri
                       "{} restarts; ask for fewer modes",
                       nev, kConvergence.max_restarts));
     return std::pair<VecX, MatX>{eig.eigenvalues(), eig.eigenvectors()};
+  } catch (const std::bad_alloc&) {
+    return Status::Internal("the Lanczos eigensolver (Spectra): out of memory");
   } catch (const std::exception& e) {
-    return Status::Internal(fmt::format("the Lanczos eigensolver (Spectra) failed: {}", e.what()));
+    if (!solve_failure.ok()) return solve_failure;  // the factor's own status (its code and message)
+    // Spectra's own failures (a breakdown of its tridiagonal eigensolver on a degenerate pencil, a zero
+    // A) are the pencil's, not a bug: the caller adds what to check in its model.
+    return Status::NotConverged(fmt::format(
+        "the Lanczos eigensolver (Spectra) failed on this pencil ({}); no eigenvalue was computed", e.what()));
   }
 }
 

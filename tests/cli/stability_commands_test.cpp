@@ -130,5 +130,33 @@ TEST(ModesCommand, WithoutDensityIsRefused) {
   EXPECT_NE(r.err.find("has no density"), std::string::npos) << r.err;
 }
 
+// models/euler_column.yaml with `from` replaced by `to` and `more` appended, written to the build tree as NAME.
+std::string column_with(const std::string& name, const std::string& from, const std::string& to,
+                        const std::string& more = "") {
+  std::ifstream in(kModels + "euler_column.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  text += more;
+  const auto path = std::filesystem::path(KINESTAT_BINARY_DIR) / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+// The column (48 free dofs: the Lanczos path) with no mass (density 0 and a zero nodal mass, which
+// passes the density check) or a negligible one: exit 2 naming what to check. Both exited 1 from
+// Spectra before ("TridiagEigen: eigen decomposition failed").
+TEST(ModesCommand, NoOrNegligibleMassIsBadInputNotAnInternalFailure) {
+  CliRun r = run_cli({"modes", column_with("massless_column.yaml", "density: 7850", "density: 0",
+                                           "masses:\n  - {node: n4, mass: 0}\n")});
+  EXPECT_EQ(r.code, kExitBadInput) << r.err;
+  EXPECT_NE(r.err.find("no free dof has mass"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("Spectra"), std::string::npos) << r.err;
+  r = run_cli({"modes", column_with("feather_column.yaml", "density: 7850", "density: 1e-300")});
+  EXPECT_EQ(r.code, kExitBadInput) << r.err;
+  EXPECT_NE(r.err.find("the mass is negligible against the stiffness"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace kinestat::cli

@@ -166,6 +166,29 @@ TEST(Modes, NoDensityIsRefused) {
   EXPECT_NE(r.status.message().find("material 'air_steel' has no density"), std::string::npos) << r.status.message();
 }
 
+// A zero nodal mass lets a model without density past the check above, and a density of 1e-300
+// kg/m^3 is a mass in name only: both are refused before the eigensolver, on the dense path (2 beams,
+// 12 free dofs) and on the Lanczos path (8 beams, 48), whose tridiagonal solver failed on them before
+// ("TridiagEigen: eigen decomposition failed", exit 1). M_ii / K_ii of a beam of 1e-300 kg/m^3 is
+// about 1e-312 s^2, below the limit of 1e-60.
+TEST(Modes, MasslessOrNegligibleMassIsRefusedOnBothPaths) {
+  const Material weightless{"air_steel", 2.1e11, 0.81e11, 0.0}, feather{"feather_steel", 2.1e11, 0.81e11, 1e-300};
+  for (int n : {2, 8}) {
+    Structure s = beam(true, n, weightless);
+    s.add_mass({n / 2, 0.0, Vec3::Zero()});
+    ModalResult r = modal_analysis(s);
+    EXPECT_EQ(r.status.code(), StatusCode::kInvalidInput) << n;
+    EXPECT_NE(r.status.message().find("no free dof has mass"), std::string::npos) << r.status.message();
+    EXPECT_TRUE(r.modes.empty());
+    r = modal_analysis(beam(true, n, feather));
+    EXPECT_EQ(r.status.code(), StatusCode::kInvalidInput) << n;
+    EXPECT_NE(r.status.message().find("the mass is negligible against the stiffness"), std::string::npos)
+        << r.status.message();
+    EXPECT_NE(r.status.message().find("check the materials' densities and the nodal masses"), std::string::npos);
+    EXPECT_TRUE(r.modes.empty());
+  }
+}
+
 }  // namespace
 }  // namespace kinestat::msa
 

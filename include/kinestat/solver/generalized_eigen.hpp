@@ -27,7 +27,9 @@ namespace kinestat::solver {
 // matrices and the FEA's lower-triangle storage both work). On petsc-mumps the call is collective,
 // A is given as K was (after FactorizeSum on summing_ranks() > 1: this rank's summand of A), Kr is
 // not read (the backend holds K), and every rank gets all the eigenpairs. kNotConverged when the
-// iteration does not converge, kInternal when it fails (with the library's message).
+// iteration does not converge or fails on the pencil (Spectra's message: a degenerate pencil is the
+// caller's input, never a bug), the factor's own status when a solve with it fails, kInternal when
+// memory runs out.
 StatusOr<std::pair<VecX, MatX>> largest_generalized_eigenpairs(const SparseMatrix& A, const SparseMatrix& Kr,
                                                                const LinearSolver& chol, int count);
 
