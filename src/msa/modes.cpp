@@ -154,6 +154,18 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
     q /= std::sqrt(q.dot(Mr * q));  // mass-normalized
     const VecX Kq = Kr * q;
     m.residual = (Kq - m.omega * m.omega * (Mr * q)).norm() / Kq.norm();
+    // A converged pair has ~1e-13; an inaccurate one is refused rather than printed (as the FEA's
+    // link modes are, at the same limit).
+    if (!(m.residual <= opt.max_residual)) {
+      res.status = Status::NotConverged(at_source(
+          s.source(),
+          fmt::format("mode {} ({:.6g} Hz) has the residual ||K q - omega^2 M q|| / ||K q|| = {:.2e}, above {:g}: the "
+                      "eigensolver did not converge to it, and its frequency would be wrong; ask for fewer modes, "
+                      "and check the model's units (stiffness and mass of very different sizes on different dofs)",
+                      k + 1, m.frequency, m.residual, opt.max_residual)));
+      res.modes.clear();
+      return res;
+    }
     const VecX u = C * q;
     // The sign is arbitrary: the largest translation component is made positive.
     double largest = 0.0;

@@ -166,6 +166,75 @@ TEST(Modes, NoDensityIsRefused) {
   EXPECT_NE(r.status.message().find("material 'air_steel' has no density"), std::string::npos) << r.status.message();
 }
 
+// The pinned column of `beam(false, 8)` scaled: every length by `length` (so omega by 1 / length,
+// exactly, for a geometrically similar Euler-Bernoulli structure with rotary inertia), its material
+// `mat`.
+Structure scaled_column(double length, const Material& mat) {
+  const int n = 8;
+  Structure s =
+      straight(2.0 * length, n, rectangle_section(0.02 * length, 0.03 * length), BeamTheory::kEulerBernoulli, mat);
+  s.add_support({0, {true, true, true, true, false, false}, Mat3::Identity()});
+  s.add_support({n, {false, true, true, false, false, false}, Mat3::Identity()});
+  return s;
+}
+
+// A 20 um column (1/omega^2 ~ 2e-14 s^2) and one of density 1e-6 kg/m^3 (~1e-14 s^2) give the
+// 2 m steel column's frequencies times 1e5 and sqrt(7850 / 1e-6). Before, Spectra's absolute tests
+// (a vector below 2.2e-16 taken for 0, Ritz values below 3.7e-11 converged to an absolute tolerance)
+// stopped it at residuals of 0.26 to 0.92: f_2 of the small column 0.6 % high, f_1 of the light one
+// 2.9 %, with exit 0. The eigensolver now works on the pencil equilibrated by K's diagonal
+// (solver/generalized_eigen.cpp). Measured: the ratios equal to 4e-14, residuals 4e-13; asserted: the
+// ratios within 1e-9 (round-off of a residual of 1e-13 is far below), residuals below 1e-8, and the
+// first frequency against the closed form within twice the 8-beam error (1.64e-5, measured here without
+// rotary inertia).
+TEST(Modes, TinyAndLightColumnsKeepTheirScaledFrequencies) {
+  ModalOptions opt;
+  opt.count = 4;
+  const ModalResult reference = modal_analysis(scaled_column(1.0, kSteel), opt);
+  ASSERT_TRUE(reference.status.ok()) << reference.status.message();
+  const Material light{"light_steel", kSteel.E, kSteel.G, 1e-6};
+  const struct {
+    const char* name;
+    double length;
+    const Material& mat;
+    double omega_ratio;
+  } cases[] = {{"20 um column", 1e-5, kSteel, 1e5}, {"density 1e-6", 1.0, light, std::sqrt(7850.0 / 1e-6)}};
+  for (const auto& c : cases) {
+    const ModalResult r = modal_analysis(scaled_column(c.length, c.mat), opt);
+    ASSERT_TRUE(r.status.ok()) << c.name << ": " << r.status.message();
+    ASSERT_EQ(r.modes.size(), reference.modes.size()) << c.name;
+    for (std::size_t k = 0; k < r.modes.size(); ++k) {
+      const double ratio = r.modes[k].omega / reference.modes[k].omega / c.omega_ratio;
+      std::printf("%s: mode %zu omega ratio / expected - 1 = %.1e, residual %.1e\n", c.name, k + 1, ratio - 1.0,
+                  r.modes[k].residual);
+      EXPECT_NEAR(ratio, 1.0, 1e-9) << c.name << " mode " << k + 1;
+      EXPECT_LT(r.modes[k].residual, 1e-8) << c.name << " mode " << k + 1;
+    }
+    ModalOptions euler = opt;
+    euler.rotary_inertia = false;
+    const ModalResult e = modal_analysis(scaled_column(c.length, c.mat), euler);
+    ASSERT_TRUE(e.status.ok()) << e.status.message();
+    const double exact = closed_form_omega(false) * c.omega_ratio;
+    const double err = e.modes[0].omega / exact - 1.0;
+    EXPECT_GT(err, 0.0) << c.name;
+    EXPECT_LT(err, 2.0 * 1.64e-5) << c.name;
+  }
+}
+
+// A mode whose residual is above ModalOptions::max_residual is refused, not printed: here a limit
+// below the converged column's 1e-13 stands for an eigensolver that did not converge.
+TEST(Modes, AModeAboveTheResidualLimitIsRefused) {
+  ModalOptions opt;
+  opt.count = 2;
+  opt.max_residual = 1e-16;
+  const ModalResult r = modal_analysis(scaled_column(1.0, kSteel), opt);
+  EXPECT_EQ(r.status.code(), StatusCode::kNotConverged);
+  EXPECT_NE(r.status.message().find("has the residual ||K q - omega^2 M q|| / ||K q|| = "), std::string::npos)
+      << r.status.message();
+  EXPECT_NE(r.status.message().find("above 1e-16"), std::string::npos) << r.status.message();
+  EXPECT_TRUE(r.modes.empty());
+}
+
 // A zero nodal mass lets a model without density past the check above, and a density of 1e-300
 // kg/m^3 is a mass in name only: both are refused before the eigensolver, on the dense path (2 beams,
 // 12 free dofs) and on the Lanczos path (8 beams, 48), whose tridiagonal solver failed on them before

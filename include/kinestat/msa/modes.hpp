@@ -34,6 +34,9 @@ struct ModalOptions {
   bool lumped = false;                      // lumped instead of consistent beam masses
   bool rotary_inertia = true;               // the cross-sections' rotary inertia in the consistent mass
   std::optional<ModalPrestress> prestress;  // none: the unstressed structure
+  // A mode whose residual (VibrationMode::residual) is above this is not returned: kNotConverged.
+  // Converged modes have ~1e-13; the default is the limit of the FEA's link modes.
+  double max_residual = 1e-6;
 };
 
 // What prestressed the structure (ModalResult::prestress).
@@ -54,10 +57,11 @@ struct VibrationMode {
 };
 
 struct ModalResult {
-  // kInvalidInput (bad model, a beam without density in a structure without nodal masses, a
-  // prestress at or beyond its case's critical load), kSingular (K singular: see
-  // `linear.singularity`), kNotConverged (the eigensolver, or the second-order solve of a prestress:
-  // its message says which), kInternal.
+  // kInvalidInput (bad model, a beam without density in a structure without nodal masses, no or a
+  // negligible mass on the free dofs, a prestress at or beyond its case's critical load), kSingular
+  // (K singular: see `linear.singularity`), kNotConverged (the eigensolver, a mode's residual above
+  // ModalOptions::max_residual, or the second-order solve of a prestress: its message says which),
+  // kInternal.
   Status status;
   // The static solve (its checks and diagnosis; load cases if any); solve_second_order's with a
   // second-order prestress.
