@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -38,19 +39,47 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
     return res;
   }
   const LoadCaseResult& r = res.linear.cases[opt.load_case];
-  double max_abs = 0.0, max_compression = 0.0;
   res.axial_force = beam_axial_forces(s, r.beam_end_forces);
-  for (double N : res.axial_force) {
-    max_abs = std::max(max_abs, std::abs(N));
-    max_compression = std::max(max_compression, -N);
+  // Which beams are compressed, against a scale that does not come from N: N is E A / L times the
+  // change of length computed from the nodes' displacements (round-off about eps (E A / L) |u|), plus
+  // what member loads put into it (about eps times the loads, which the reactions and nodal loads
+  // carry). Compression below 1e-12 of that is round-off: a cantilever loaded across its axis has
+  // -N ~ 5e-17 of it, a freely expanding heated column 2e-16; the bundled models' compressions are
+  // 4e-4 (models/five_bar.yaml) to 0.1 of it. The largest |N| is no scale: there it is itself
+  // round-off, and its 1e-12 let lambda ~ 1e13 through.
+  double u_max = 0.0, load_max = 0.0;
+  const double length = s.length_scale();
+  for (const Vec6& u : r.displacement) u_max = std::max(u_max, u.head<3>().norm());
+  for (const Vec6& f : r.reaction) load_max = std::max({load_max, f.head<3>().norm(), f.tail<3>().norm() / length});
+  for (const NodalLoad& l : lc.loads)
+    load_max = std::max({load_max, l.wrench.head<3>().norm(), l.wrench.tail<3>().norm() / length});
+  constexpr double kRoundOff = 1e-12;
+  int most_compressed = -1;  // the beam with the largest compression relative to its round-off scale
+  double largest_ratio = 0.0;
+  for (std::size_t i = 0; i < s.beams().size(); ++i) {
+    const Beam& b = s.beams()[i];
+    const double axial_stiffness = s.materials()[b.material].E * s.sections()[b.section].A / s.beam_length(b);
+    const double scale = axial_stiffness * u_max + load_max;
+    const double ratio = scale > 0.0 ? -res.axial_force[i] / scale : 0.0;
+    if (ratio > largest_ratio) {
+      largest_ratio = ratio;
+      most_compressed = static_cast<int>(i);
+    }
   }
-  // Compression below round-off of the largest axial force (1e-12) is no compression.
-  if (!(max_compression > 1e-12 * max_abs) || max_abs == 0.0) {
+  if (!(largest_ratio > kRoundOff)) {
+    const std::string roundoff =
+        most_compressed < 0
+            ? std::string()
+            : fmt::format(
+                  " (its largest compression, N = {:.3g} N in beam '{}', is {:.2g} of E A / L times the "
+                  "largest displacement plus the largest load: round-off)",
+                  res.axial_force[static_cast<std::size_t>(most_compressed)],
+                  s.beams()[static_cast<std::size_t>(most_compressed)].id, largest_ratio);
     res.status = Status::Invalid(at_source(
         lc.source.empty() ? s.source() : lc.source,
-        fmt::format("load case '{}' compresses no beam: nothing can buckle (the critical load factor is infinite); "
+        fmt::format("load case '{}' compresses no beam{}: nothing can buckle (the critical load factor is infinite); "
                     "load the structure so that some beam is in compression",
-                    lc.name)));
+                    lc.name, roundoff)));
     return res;
   }
 

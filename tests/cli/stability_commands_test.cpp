@@ -158,6 +158,18 @@ TEST(ModesCommand, NoOrNegligibleMassIsBadInputNotAnInternalFailure) {
   EXPECT_NE(r.err.find("the mass is negligible against the stiffness"), std::string::npos) << r.err;
 }
 
+// The column heated on one beam and free to expand at its roller: its axial forces are round-off
+// (N ~ -7e-12 N). Before, exit 0 with lambda_1 = 3e15.
+TEST(BucklingCommand, RoundOffCompressionIsNoCompression) {
+  const CliRun r =
+      run_cli({"buckling", column_with("heated_column.yaml", "loads:\n      - {node: n8, force: [-1000, 0, 0]}",
+                                       "member_loads:\n      - {beam: b3, type: temperature, alpha: "
+                                       "1.2e-5, dT: 30}")});
+  EXPECT_EQ(r.code, kExitBadInput) << r.out;
+  EXPECT_NE(r.err.find("load case 'axial' compresses no beam"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("Critical load factors"), std::string::npos) << r.out;
+}
+
 // The column at a density of 1e-6 kg/m^3: its frequencies are the steel column's times
 // sqrt(7850 / 1e-6) (measured to 1e-15). Before, exit 0 with f_1 2.9 % high (residual 0.82).
 TEST(ModesCommand, ALightColumnKeepsItsScaledFrequencies) {

@@ -220,6 +220,55 @@ TEST(Buckling, NoCompressionIsRefused) {
   EXPECT_NE(r.status.message().find("compresses no beam"), std::string::npos) << r.status.message();
 }
 
+// Axial forces that are round-off are no compression. A cantilever of two 20 x 40 mm beams along
+// (0.3, 0.4, 0.5) loaded at its tip by (0, 500, -400) N, perpendicular to its axis, has N ~ -6e-10 N,
+// and a pinned-roller column heated on one beam expands freely, N ~ -7e-12 N: both gave load factors
+// of 1e13 to 1e15 with exit 0, since the test compared N with the largest |N|, round-off itself.
+// Now N is compared with E A / L times the largest displacement plus the largest load (measured:
+// 5e-17 and 2e-16 of it; the threshold is 1e-12).
+TEST(Buckling, RoundOffAxialForcesAreNoCompression) {
+  Structure skew = straight(2 * std::sqrt(0.5), 2, rectangle_section(0.02, 0.04), BeamTheory::kEulerBernoulli, kSteel,
+                            false, Vec3(0.3, 0.4, 0.5));
+  skew.add_support({0, kAllDofs, Mat3::Identity()});
+  LoadCase across{.name = "across"};
+  across.loads.push_back({2, (Vec6() << 0, 500, -400, 0, 0, 0).finished()});
+  skew.add_load_case(across);
+  BucklingResult r = buckling(skew);
+  EXPECT_EQ(r.status.code(), StatusCode::kInvalidInput);
+  EXPECT_NE(r.status.message().find("load case 'across' compresses no beam"), std::string::npos) << r.status.message();
+  EXPECT_NE(r.status.message().find("round-off"), std::string::npos) << r.status.message();
+  EXPECT_TRUE(r.modes.empty());
+
+  // The column of column(kPinnedPinned, 8) heated by 30 K on beam b3 only, free to expand at the roller.
+  const double alpha = 1.2e-5, dT = 30.0;
+  auto heated = [&](bool held) {
+    Structure s = straight(2.0, 8, rectangle_section(0.02, 0.03));
+    s.add_support({0, {true, true, true, true, false, false}, Mat3::Identity()});
+    s.add_support({8, {held, true, true, false, false, false}, Mat3::Identity()});
+    LoadCase lc{.name = "heat"};
+    MemberLoad t{.beam = 3, .type = MemberLoadType::kTemperature};
+    t.thermal.alpha = alpha;
+    t.thermal.dT = dT;
+    lc.member_loads.push_back(t);
+    s.add_load_case(lc);
+    return s;
+  };
+  r = buckling(heated(false));
+  EXPECT_EQ(r.status.code(), StatusCode::kInvalidInput);
+  EXPECT_NE(r.status.message().find("load case 'heat' compresses no beam"), std::string::npos) << r.status.message();
+  // Held at both ends, the heated beam pushes on the column: N = -E A alpha dT / 8 in every beam (one
+  // beam of eight wants to lengthen), lambda_1 = P_cr / |N|, the 8-beam P_cr 3.3e-5 above Euler's.
+  r = buckling(heated(true));
+  ASSERT_TRUE(r.status.ok()) << r.status.message();
+  const Section sec = rectangle_section(0.02, 0.03);
+  const double N = kSteel.E * sec.A * alpha * dT / 8;
+  const double exact = euler_load(Ends::kPinnedPinned, kSteel.E * sec.Iz, 2.0) / N;
+  const double err = r.modes[0].load_factor / exact - 1.0;
+  std::printf("heated column held at both ends: lambda_1 relative error %.2e\n", err);
+  EXPECT_GT(err, 0.0);
+  EXPECT_LT(err, 2.0 * 3.3e-5);
+}
+
 // A pinned-pinned column made by end releases (clamped end nodes, the end beams' bending rotations
 // released there): the released beams' K_G is condensed with the static shapes of their released
 // dofs (elements/beam_element.hpp, condense_with_releases), as their elastic matrix is. That is the
