@@ -53,6 +53,33 @@ TEST(BadInput, SizesAreRefusedBeforeAllocatingNamingTheOptionThatRaisesThem) {
               kExitBadInput, {"announces 8 vertices and 1000000000 faces"});
 }
 
+// --stations is estimated before the solve: beams x load cases x stations against --max-stations
+// (default 1e6). A cantilever of 101 beams at --stations 10000 is 1.01e6 stations, refused in
+// milliseconds (2700 beams grew past 23 GB before). models/loaded_beam.yaml (1 beam, 4 load cases)
+// at --stations 11 is 44 stations: refused at --max-stations 43 with the largest --stations that
+// fits (10), solved at 44.
+TEST(BadInput, StationsAreEstimatedAgainstTheirLimit) {
+  std::string yaml = "units: SI\nnodes:\n";
+  for (int i = 0; i <= 101; ++i)
+    yaml += "  - {id: n" + std::to_string(i) + ", xyz: [" + std::to_string(i) + ", 0, 0]}\n";
+  yaml += "materials:\n  - {id: s, E: 210e9, nu: 0.3}\nsections:\n  - {id: t, type: rectangle, b: 0.02, h: 0.03}\n";
+  yaml += "beams:\n";
+  for (int i = 0; i < 101; ++i)
+    yaml += "  - {id: b" + std::to_string(i) + ", nodes: [n" + std::to_string(i) + ", n" + std::to_string(i + 1) +
+            "], material: s, section: t}\n";
+  yaml += "supports:\n  - {node: n0, fixed: all}\nload_cases:\n  - name: tip\n    loads:\n";
+  yaml += "      - {node: n101, force: [0, -10, 0]}\n";
+  expect_exit({"solve", write_temp("101_beams.yaml", yaml), "--stations", "10000", "--json", "-"}, kExitBadInput,
+              {"--stations 10000: 101 beams x 1 load case x 10000 stations: about 1.01e+06 stations",
+               "above the limit of 1e+06", "give a smaller --stations (at most 9900 here), or raise --max-stations"});
+  const std::string loaded = kSource + "/models/loaded_beam.yaml";
+  expect_exit({"solve", loaded, "--stations", "11", "--max-stations", "43", "--json", "-"}, kExitBadInput,
+              {"1 beam x 4 load cases x 11 stations: about 44 stations", "at most 10 here"});
+  const CliRun r = run_cli({"solve", loaded, "--stations", "11", "--max-stations", "44", "--json", "-", "--quiet"});
+  EXPECT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("beam_stations"), std::string::npos);
+}
+
 TEST(BadInput, OptionValuesAreCheckedNotReplacedByDefaults) {
   const std::vector<std::string> bar = {"link-stiffness", kBar, "--clamp", "x=0", "--reference", "x=200"};
   auto with = [&](std::initializer_list<std::string> extra) {
