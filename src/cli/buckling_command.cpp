@@ -69,6 +69,16 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
     msa::BucklingOptions opt;
     opt.count = args->count;
     opt.load_case = std::max(args->case_index, 0);
+    // Said here with the option's name (the library names only the index), as modes' --prestress-index.
+    const int nc = static_cast<int>(s->load_cases().size());
+    if (args->case_index >= nc && nc > 0) {
+      ctx.exit_code = report_failure(
+          ctx, "buckling",
+          Status::Invalid(fmt::format("{}: --case-index {}: the file has {} load case{}; give an index from 0 to {}, "
+                                      "or a case's name with --case",
+                                      args->file, args->case_index, nc, nc == 1 ? "" : "s", nc - 1)));
+      return;
+    }
     if (!args->case_name.empty()) {
       const StatusOr<int> k = load_case_index(*s, args->file, args->case_name, "--case");
       if (!k.ok()) {

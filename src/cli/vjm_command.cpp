@@ -118,6 +118,10 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
     auto warning = [&ctx](const std::string& w) { ctx.err << "vjm: warning: " << w << "\n"; };
     if (Status s = io::resolve_fea_springs(*vjm_model, progress, warning); !s.ok()) return bad(s);
     StatusOr<std::vector<vjm::Chain>> c = io::vjm_model_chains(*vjm_model, point);
+    // A point out of reach is the option's: named as fivebar's --point is.
+    if (!c.ok() && point && c.status().message().find("out of reach") != std::string::npos)
+      return bad(Status(c.status().code(), fmt::format("--point {:g},{:g},{:g} mm: {}", a.point[0], a.point[1],
+                                                       a.point[2], c.status().message())));
     if (!c.ok()) return bad(c.status());
     model = ModelChains{std::move(*c), vjm_model->title, ""};
   }

@@ -108,9 +108,7 @@ Status write_link_vtu(const std::string& path, const fea::TetMesh& mesh, const f
 
 Status write_link_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,
                             const fea::LinkStiffness& result, std::vector<std::string>* written) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return Status::Invalid(dir + ": cannot create the output directory: " + ec.message());
+  if (Status st = create_output_directory(dir); !st.ok()) return st;
   std::vector<PvdEntry> entries;
   for (int k = 0; k < 6; ++k) {
     const std::string file = prefix + "_" + link_load_case_name(k) + ".vtu";
@@ -159,9 +157,7 @@ Status write_link_mode_vtu(const std::string& path, const fea::TetMesh& mesh, co
 
 Status write_link_mode_vtu_files(const std::string& dir, const std::string& prefix, const fea::TetMesh& mesh,
                                  const fea::LinkStiffness& result, std::vector<std::string>* written) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return Status::Invalid(dir + ": cannot create the output directory: " + ec.message());
+  if (Status st = create_output_directory(dir); !st.ok()) return st;
   std::vector<PvdEntry> entries;
   for (int k = 0; k < static_cast<int>(result.modes.size()); ++k) {
     const std::string file = fmt::format("{}_modes_mode{}.vtu", prefix, k + 1);

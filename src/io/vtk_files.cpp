@@ -1,5 +1,8 @@
 #include "io/vtk_files.hpp"
 
+#include <filesystem>
+#include <system_error>
+
 #include <fmt/format.h>
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
@@ -59,6 +62,22 @@ void add_display_hints(vtkDataObject& data, const std::string& name, double mode
     w->InsertNextValue(0.1 * model_size / max_displacement);
     data.GetFieldData()->AddArray(w);
   }
+}
+
+Status create_output_directory(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  // A path naming a file (or /dev/null) is the usual mistake: said as such, not as "Not a directory".
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    return Status::Invalid(fmt::format(
+        "{}: exists and is not a directory; the VTK files (one per load case or mode, and a .pvd) go into a "
+        "directory: give a directory path (it is made if missing)",
+        dir));
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    return Status::Invalid(fmt::format("{}: cannot create the output directory ({}); give a directory you can write to",
+                                       dir, ec.message()));
+  return Status::Ok();
 }
 
 Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path) {

@@ -27,6 +27,10 @@ void add_display_hints(vtkDataObject& data, const std::string& name, double mode
 // `path`.
 Status write_vtk_xml(vtkXMLWriter& writer, const std::string& path);
 
+// Makes the folder the VTK files go into (with its parents) if missing. kInvalidInput naming `dir`
+// and the fix when it is an existing file or other non-folder ("give a directory") or cannot be made.
+Status create_output_directory(const std::string& dir);
+
 struct PvdEntry {
   std::string file;  // relative to the .pvd's folder
   std::string name;  // shown by ParaView

@@ -144,13 +144,7 @@ Status write_grid(vtkUnstructuredGrid* grid, const std::string& path) {
 class Collection {
  public:
   Collection(std::string dir, std::vector<std::string>* written) : dir_(std::move(dir)), written_(written) {}
-  Status create() const {
-    std::error_code ec;
-    fs::create_directories(dir_, ec);
-    if (ec || !fs::is_directory(dir_))
-      return Status::Invalid(fmt::format("{}: cannot create the output directory ({})", dir_, ec.message()));
-    return Status::Ok();
-  }
+  Status create() const { return create_output_directory(dir_); }
   Status emit(vtkUnstructuredGrid* grid, std::string file, std::string name) {
     const std::string path = (fs::path(dir_) / file).string();
     if (Status st = write_grid(grid, path); !st.ok()) return st;

@@ -128,9 +128,7 @@ Status write_orthoglide_workspace_vtk(const mechanisms::OrthoglideDesign& d, int
                              "points (n^3)", "give fewer points per joint or raise the point limit");
       !st.ok())
     return st;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) return Status::Invalid(fmt::format("{}: cannot create the output directory ({})", dir, ec.message()));
+  if (Status st = create_output_directory(dir); !st.ok()) return st;
   const std::string stem = (fs::path(dir) / fmt::format("orthoglide_s{}_", d.strategy)).string();
   const std::string joint_path = stem + "joint_workspace.vtu", cube_path = stem + "cube.vtu";
   if (Status st = write_joint_workspace(d, n, joint_path); !st.ok()) return st;

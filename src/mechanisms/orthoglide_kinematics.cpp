@@ -58,9 +58,10 @@ StatusOr<Vec3> inverse_kinematics(const OrthoglideGeometry& g, const Vec3& p, co
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     const double r2 = radicand(g, p, i);
     if (r2 < 0.0)
-      return Status::Invalid(
-          fmt::format("Orthoglide point p = {} is out of reach of chain {}: p_{}^2 + p_{}^2 exceeds L^2 = ({} m)^2",
-                      format_point(p), kAxis[i], kAxis[j], kAxis[k], g.link_length));
+      return Status::Invalid(fmt::format(
+          "Orthoglide point p = {} is out of reach of chain {}: p_{}^2 + p_{}^2 exceeds L^2 = ({:.6g} m)^2; "
+          "choose a point inside the workspace",
+          format_point(p), kAxis[i], kAxis[j], kAxis[k], g.link_length));
     rho[i] = p[i] + s[i] * std::sqrt(r2);  // eq. (3)
   }
   return rho;

@@ -53,7 +53,10 @@ TEST(BucklingCommand, CaseSelectionAndRefusals) {
   EXPECT_NE(r.err.find("no load case named 'nope'"), std::string::npos) << r.err;
   r = run_cli({"buckling", file, "--case-index", "4"});
   EXPECT_EQ(r.code, kExitBadInput);
-  EXPECT_NE(r.err.find("out of range"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--case-index 4: the file has 1 load case; give an index from 0 to 0, or a case's name with "
+                       "--case"),
+            std::string::npos)
+      << r.err;
   r = run_cli({"buckling", file, "--count", "0"});
   EXPECT_EQ(r.code, kExitBadInput);
   // The cantilever's cases bend or twist it: no beam in compression.

@@ -192,6 +192,17 @@ TEST(VjmCommand, RobotFileAtAPoint) {
   EXPECT_NE(far.err.find("not reached from home"), std::string::npos) << far.err;
 }
 
+// An Orthoglide model's point out of reach names --point, the chain and the fix.
+TEST(VjmCommand, OrthoglidePointOutOfReachNamesTheOption) {
+  const CliRun r =
+      run_cli({"vjm", std::string(KINESTAT_SOURCE_DIR) + "/models/orthoglide_puu.yaml", "--point", "500,500,500"});
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("--point 500,500,500 mm: Orthoglide point p = (0.5, 0.5, 0.5) m is out of reach of chain x: "
+                       "p_y^2 + p_z^2 exceeds L^2 = (0.3106 m)^2; choose a point inside the workspace"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
 }  // namespace kinestat::cli
 

@@ -36,6 +36,26 @@ TEST(WriteErrors, FullDiskUnderEachOutputOptionExitsWith2NamingThePath) {
   EXPECT_TRUE(std::filesystem::is_character_file("/dev/full"));  // written into, never replaced
 }
 
+// --vtk names a directory: a regular file (or /dev/null) there is refused saying so, and left as it
+// was. Before: "cannot create the output directory (Not a directory)".
+TEST(WriteErrors, VtkGivenAFileSaysToGiveADirectory) {
+  const auto file = std::filesystem::path(KINESTAT_BINARY_DIR) / "vtk_is_a_file.txt";
+  std::ofstream(file) << "keep me\n";
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"solve", kModels + "cantilever.yaml", "--quiet", "--vtk", file.string()},
+        std::vector<std::string>{"modes", kModels + "euler_column.yaml", "--quiet", "--vtk", file.string()},
+        std::vector<std::string>{"solve", kModels + "cantilever.yaml", "--quiet", "--vtk", "/dev/null"}}) {
+    const CliRun r = run_cli(args);
+    EXPECT_EQ(r.code, kExitBadInput) << args.front() << ": " << r.err;
+    EXPECT_NE(r.err.find(args.back() + ": exists and is not a directory"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("give a directory path (it is made if missing)"), std::string::npos) << r.err;
+  }
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "keep me");
+}
+
 // stdout on a full disk: the JSON (--json -) or the report is lost, so the run fails.
 TEST(WriteErrors, StdoutOnAFullDiskExitsWith2) {
   for (const auto& args : {with(kSmallMap, {"--json", "-"}), kSmallMap,
