@@ -103,7 +103,17 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->check(CLI::IsMember({"rigid", "stiff-body"}))
       ->capture_default_str();
   cmd->add_option("--stiff-ratio", args->stiff_ratio, "E of the stiff body / E of the link (dimensionless)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            // The library's range (fea::LinkStiffnessOptions), said as the option's: above 1, at most 1e12.
+            char* end = nullptr;
+            const double x = std::strtod(text.c_str(), &end);
+            return end != text.c_str() && *end == '\0' && x > 1.0 && x <= 1e12
+                       ? std::string()
+                       : "'" + text + "' is not a ratio above 1 and at most 1e12 (the stiff body's E over the link's)";
+          },
+          "RATIO"));
   cmd->add_option("--reference-point", args->reference_point,
                   "X,Y,Z in --unit: the point whose motion is reported (default: centre of the reference nodes' box)");
   cmd->add_option("--modes", args->modes,

@@ -18,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/make_mesh_3.h>
@@ -85,8 +86,10 @@ StatusOr<Surface> read_checked_surface(const std::string& path) {
   if (Status s = check_surface_file_structure(path); !s.ok()) return s;
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  if (!CGAL::IO::read_polygon_soup(path, points, polygons) || polygons.empty())
+  if (!CGAL::IO::read_polygon_soup(path, points, polygons))
     return Status::Invalid(path + ": cannot read a triangle surface (STL, OFF, OBJ or PLY) from this file");
+  if (polygons.empty())
+    return Status::Invalid(path + ": the file has no face; export the part's closed surface (STL, OFF, OBJ or PLY)");
   for (const auto& p : polygons) {
     if (p.size() != 3)
       return Status::Invalid(fmt::format("{}: a face has {} vertices; triangulate the surface", path, p.size()));
@@ -106,10 +109,17 @@ StatusOr<Surface> read_checked_surface(const std::string& path) {
   if (Status s = check_edges(path, points, polygons); !s.ok()) return s;
   Surface surface;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, surface);
-  if (PMP::does_self_intersect(surface))
-    return Status::Invalid(path + ": the surface intersects itself; repair the geometry (no overlapping solids)");
-  if (!PMP::is_outward_oriented(surface)) PMP::reverse_face_orientations(surface);
-  const double volume = PMP::volume(surface), area = PMP::area(surface);
+  // A face with no area and a flat solid are self-intersections to CGAL: said as what they are first.
+  for (const auto f : faces(surface))
+    if (PMP::is_degenerate_triangle_face(f, surface)) {
+      std::string corners;
+      for (const auto v : vertices_around_face(halfedge(f, surface), surface))
+        corners += (corners.empty() ? "" : ", ") + point_text(surface.point(v));
+      return Status::Invalid(fmt::format(
+          "{}: the triangle with corners {} has no area (they lie on one line); repair the surface", path, corners));
+    }
+  // The enclosed volume (signed by the faces' orientation, which is fixed below) and the area.
+  const double volume = std::abs(PMP::volume(surface)), area = PMP::area(surface);
   const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
   const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
   if (!(volume > 0.0 && 3.0 * volume >= kMinThicknessRatio * diagonal * area))
@@ -118,6 +128,9 @@ StatusOr<Surface> read_checked_surface(const std::string& path) {
                     "(file units): a needle or a sheet that tetrahedra cannot resolve; model it as "
                     "a beam or thicken it",
                     path, 3.0 * volume / area, diagonal));
+  if (PMP::does_self_intersect(surface))
+    return Status::Invalid(path + ": the surface intersects itself; repair the geometry (no overlapping solids)");
+  if (!PMP::is_outward_oriented(surface)) PMP::reverse_face_orientations(surface);
   return surface;
 }
 

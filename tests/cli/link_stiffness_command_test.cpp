@@ -89,6 +89,11 @@ TEST(LinkStiffnessCommand, BadInputExitsWith2AndSaysWhatToFix) {
   EXPECT_EQ(r.code, kExitBadInput);
   EXPECT_NE(r.err.find(open.string()), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("not closed"), std::string::npos) << r.err;
+  // The stiff body's ratio is the option's to refuse (the library's message named the mesh file).
+  r = run_link_stiffness(
+      {kBar, "--clamp", "x=0", "--reference", "x=200", "--model", "stiff-body", "--stiff-ratio", "0"});
+  EXPECT_EQ(r.code, kExitBadInput);
+  EXPECT_NE(r.err.find("--stiff-ratio: '0' is not a ratio above 1"), std::string::npos) << r.err;
 }
 
 // --solver: its options validated (exit 2); the PETSc backends, when built in, refuse a link that

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "kinestat/fea/link_stiffness_inputs.hpp"
@@ -84,6 +85,20 @@ TEST(SurfaceInputChecks, GeometryThatWouldOverflowOrHangTheMesherIsRefused) {
   expect_refused("huge.off", box_off(1e300, 1e300, 1e300), "is not finite or beyond 1e+09");
   // A closed needle 1e-9 thick: Mesh_3 ran for minutes protecting its edges.
   expect_refused("needle.off", box_off(100, 1e-9, 1e-9), "a needle or a sheet");
+  // A box pressed flat (its top on its bottom, two sheets of faces) and a triangle whose corners lie on
+  // one line (a bar's edge split at its middle, the bottom closed by a triangle through that point)
+  // are self-intersections to CGAL: each is named as what it is. A file with no face says so.
+  std::ifstream bar(kMeshes + "bar.off");
+  std::string flat((std::istreambuf_iterator<char>(bar)), std::istreambuf_iterator<char>());
+  for (const std::string z : {" -15\n", " 15\n"})
+    for (std::size_t at = flat.find(z); at != std::string::npos; at = flat.find(z)) flat.replace(at, z.size(), " 0\n");
+  expect_refused("flat.off", flat, "a needle or a sheet");
+  expect_refused("no_face.off", "OFF\n0 0 0\n", "the file has no face");
+  expect_refused("collinear.off",
+                 "OFF\n9 14 0\n0 -10 -15\n0 10 -15\n0 10 15\n0 -10 15\n200 -10 -15\n200 10 -15\n200 10 15\n"
+                 "200 -10 15\n100 -10 -15\n3 4 8 1\n3 8 0 1\n3 5 1 2\n3 6 2 3\n3 7 3 0\n3 0 3 2\n3 7 4 5\n"
+                 "3 1 5 4\n3 2 6 5\n3 3 7 6\n3 0 4 7\n3 2 1 0\n3 5 6 7\n3 0 8 4\n",
+                 "has no area (they lie on one line)");
   EXPECT_TRUE(check_surface_file(write_file("box.off", box_off(100, 10, 10))).ok());
 }
 
