@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <span>
 #include <sstream>
 
@@ -175,6 +176,24 @@ Status solve_link_modes(const TetMesh& mesh, const DofMap& map, const solver::Sp
   return Status::Ok();
 }
 
+// A node of a part of the mesh (elements connected through shared nodes) that holds no clamped
+// node, or -1 when every part is clamped: two separate solids in one file, say.
+int unclamped_part_node(const TetMesh& mesh, const std::vector<int>& clamped) {
+  std::vector<int> parent(static_cast<std::size_t>(mesh.num_nodes()));
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&parent](int n) {
+    while (parent[n] != n) n = parent[n] = parent[parent[n]];
+    return n;
+  };
+  for (int e = 0; e < mesh.num_elements(); ++e)
+    for (int k = 1; k < mesh.nodes_per_element; ++k) parent[root(mesh.element(e)[k])] = root(mesh.element(e)[0]);
+  std::vector<char> held(parent.size(), 0);
+  for (int n : clamped) held[root(n)] = 1;
+  for (int e = 0; e < mesh.num_elements(); ++e)
+    if (!held[root(mesh.element(e)[0])]) return mesh.element(e)[0];
+  return -1;
+}
+
 }  // namespace
 
 const char* reference_model_name(ReferenceModel m) {
@@ -261,6 +280,12 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
         "link stiffness: {} nodes are both clamped and on the reference (first at "
         "({:g}, {:g}, {:g}) m); the clamp and reference regions must not touch",
         overlap.size(), mesh.nodes[overlap[0]].x(), mesh.nodes[overlap[0]].y(), mesh.nodes[overlap[0]].z()));
+  // Said before the factorization, which would only find a free motion and blame the clamp.
+  if (const int n = unclamped_part_node(mesh, clamped); n >= 0)
+    return Status::Singular(fmt::format(
+        "link stiffness: the mesh is in separate parts and the one through ({:g}, {:g}, {:g}) m holds no clamped "
+        "node: it moves freely; mesh the link as one connected solid, or clamp every part",
+        mesh.nodes[n].x(), mesh.nodes[n].y(), mesh.nodes[n].z()));
   r.num_clamped_nodes = static_cast<int>(clamped.size());
   r.num_reference_nodes = static_cast<int>(reference_nodes.size());
   Vec3 reference_point;

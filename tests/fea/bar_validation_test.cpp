@@ -163,5 +163,19 @@ TEST(BarValidation, EmptyOrOverlappingRegionsAreInvalidInput) {
   EXPECT_NE(r.status().message().find("both clamped and on the reference"), std::string::npos);
 }
 
+// A second solid beside the bar, which the clamp does not hold, moves freely: singular, said as
+// a separate part (before, the factorization's free motion blamed the clamp region's nodes).
+TEST(BarValidation, ASeparatePartWithoutClampIsSingularAndNamed) {
+  TetMesh mesh = bar_mesh(1, false);
+  const TetMesh other = make_box_mesh(Vec3(2 * L, -b / 2, -h / 2), Vec3(3 * L, b / 2, h / 2), 10, 1, 2);
+  const int offset = mesh.num_nodes();
+  mesh.nodes.insert(mesh.nodes.end(), other.nodes.begin(), other.nodes.end());
+  for (int n : other.connectivity) mesh.connectivity.push_back(n + offset);
+  const auto r = link_stiffness(mesh, kSteel, bar_options());
+  EXPECT_EQ(r.status().code(), StatusCode::kSingular);
+  EXPECT_NE(r.status().message().find("separate parts"), std::string::npos) << r.status().message();
+  EXPECT_TRUE(link_stiffness(bar_mesh(1, false), kSteel, bar_options()).ok());
+}
+
 }  // namespace
 }  // namespace kinestat::fea
