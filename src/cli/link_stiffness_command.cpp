@@ -106,12 +106,14 @@ void register_link_stiffness_command(CLI::App& app, Context& ctx) {
       ->capture_default_str()
       ->check(CLI::Validator(
           [](const std::string& text) -> std::string {
-            // The library's range (fea::LinkStiffnessOptions), said as the option's: above 1, at most 1e12.
+            // The library's range (fea::LinkStiffnessOptions), said as the option's.
             char* end = nullptr;
             const double x = std::strtod(text.c_str(), &end);
-            return end != text.c_str() && *end == '\0' && x > 1.0 && x <= 1e12
+            return end != text.c_str() && *end == '\0' && x > 1.0 && x <= fea::kMaxStiffBodyRatio
                        ? std::string()
-                       : "'" + text + "' is not a ratio above 1 and at most 1e12 (the stiff body's E over the link's)";
+                       : fmt::format(
+                             "'{}' is not a ratio above 1 and at most {:g} (the stiff body's E over the link's)", text,
+                             fea::kMaxStiffBodyRatio);
           },
           "RATIO"));
   cmd->add_option("--reference-point", args->reference_point,

@@ -242,10 +242,9 @@ StatusOr<LinkStiffness> link_stiffness(const TetMesh& mesh, const Material& mate
   std::vector<int> reference_nodes;
   const bool stiff_body = options.reference_model == ReferenceModel::kStiffBody;
   if (stiff_body) {
-    // Above 1e12 the body's stiffness drowns the link's in double precision (and inf is no ratio).
-    if (!(options.stiff_body_ratio > 1.0 && options.stiff_body_ratio <= 1e12))
-      return Status::Invalid(fmt::format("link stiffness: stiff-body ratio {:g} must exceed 1 and be at most 1e12",
-                                         options.stiff_body_ratio));
+    if (!(options.stiff_body_ratio > 1.0 && options.stiff_body_ratio <= kMaxStiffBodyRatio))  // inf is no ratio
+      return Status::Invalid(fmt::format("link stiffness: stiff-body ratio {:g} must exceed 1 and be at most {:g}",
+                                         options.stiff_body_ratio, kMaxStiffBodyRatio));
     Material body = Material::from_E_nu("pseudo-rigid body", options.stiff_body_ratio * material.E, material.nu());
     D.push_back(elasticity_matrix(body));
     element_material.assign(mesh.num_elements(), 0);

@@ -606,10 +606,8 @@ KinematicsResult solve_posture(const RobotModel& model, const VecX& task, RobotP
     if (j.limits.empty()) continue;
     const auto [lo, hi] = j.limits[c.index];
     if (posture.q(k) < lo || posture.q(k) > hi) {
-      out.message =
-          fmt::format("{} at {:.6g} {}, outside its limits {}", model.coordinate_name(k),
-                      coordinate_is_length(j.type, c.index) ? posture.q(k) : posture.q(k) * 180.0 / M_PI,
-                      coordinate_is_length(j.type, c.index) ? "m" : "deg", limits_text(j.type, c.index, lo, hi));
+      out.message = fmt::format("{} at {}, outside its limits {}", model.coordinate_name(k),
+                                coordinate_text(j.type, c.index, posture.q(k)), limits_text(j.type, c.index, lo, hi));
       return out;
     }
   }

@@ -50,9 +50,18 @@ bool coordinate_is_length(RobotJointType t, int index) {
   return t == RobotJointType::kPrismatic || (t == RobotJointType::kCylindrical && index == 1);
 }
 
+namespace {
+// A coordinate in the unit of messages: m, or deg for an angle.
+double shown(RobotJointType t, int index, double v) { return coordinate_is_length(t, index) ? v : v * 180.0 / M_PI; }
+const char* shown_unit(RobotJointType t, int index) { return coordinate_is_length(t, index) ? "m" : "deg"; }
+}  // namespace
+
+std::string coordinate_text(RobotJointType t, int index, double value) {
+  return fmt::format("{:.6g} {}", shown(t, index, value), shown_unit(t, index));
+}
+
 std::string limits_text(RobotJointType t, int index, double lo, double hi) {
-  if (coordinate_is_length(t, index)) return fmt::format("[{:g}, {:g}] m", lo, hi);
-  return fmt::format("[{:g}, {:g}] deg", lo * 180.0 / M_PI, hi * 180.0 / M_PI);
+  return fmt::format("[{:g}, {:g}] {}", shown(t, index, lo), shown(t, index, hi), shown_unit(t, index));
 }
 
 const char* to_string(TaskCoordinate c) {

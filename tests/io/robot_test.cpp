@@ -571,8 +571,8 @@ TEST(RobotFiles, PlantedFaultsNamed) {
 }
 
 // A home drawn 1e-5 mm from the five-bar's full stretch (its inverse Jacobian's sigma_min/sigma_max
-// ~1e-5) is refused: the map's singularity measure is relative to home, and would call the whole
-// workspace regular. The bundled home (py = 150 mm) is 0.052.
+// 3.2e-5, printed by the message) is refused: the map's singularity measure is relative to home, and would call the
+// whole workspace regular. The bundled home (py = 150 mm) is 0.052.
 TEST(RobotFiles, NearlySingularHomeRefused) {
   const double stretched = std::sqrt(200.0 * 200.0 - 100.0 * 100.0);
   auto m = io::read_robot_model(robot_file("five_bar.yaml"), {{"py", stretched - 1e-5}});

@@ -36,13 +36,16 @@ namespace kinestat::fea {
 
 enum class ReferenceModel { kRigidCoupling, kStiffBody };
 
+// The largest stiff-body ratio: above it the body's stiffness drowns the link's in double precision.
+inline constexpr double kMaxStiffBodyRatio = 1e12;
+
 struct LinkStiffnessOptions {
   Region clamp;      // nodes fixed in ux, uy, uz (the link's origin)
   Region reference;  // the reference end: coupled nodes, or the pseudo-rigid body's elements
   ReferenceModel reference_model = ReferenceModel::kRigidCoupling;
   // E_body / E_link of the pseudo-rigid body. 1e4 leaves a relative compliance error of order 1e-4
   // and costs ~4 of the ~16 digits to conditioning; beyond ~1e8 the Cholesky pivot check rejects it.
-  double stiff_body_ratio = 1e4;
+  double stiff_body_ratio = 1e4;        // above 1, at most kMaxStiffBodyRatio
   std::optional<Vec3> reference_point;  // default: centre of the reference nodes' bounding box
   // Displacement and von Mises fields of the six load cases (for VTK output): 6 x (3 per node + 1
   // per element) numbers, so off unless asked for.

@@ -48,7 +48,9 @@ const char* to_string(RobotJointType t);
 int coordinate_count(RobotJointType t);
 // Whether coordinate `index` of such a joint is a length (m; else an angle, rad).
 bool coordinate_is_length(RobotJointType t, int index);
-// "[lo, hi] m" or, for an angle, "[lo, hi] deg": a joint's limits in a message.
+// A coordinate's value ("0.25 m", or "80 deg" for an angle) and its limits ("[lo, hi] m" or deg) in
+// a message.
+std::string coordinate_text(RobotJointType t, int index, double value);
 std::string limits_text(RobotJointType t, int index, double lo, double hi);
 
 // A 6x6 spring at the chain's current point (eq. (1) of Pashkevich et al. 2009: a virtual spring).
