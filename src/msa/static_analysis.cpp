@@ -18,6 +18,17 @@ namespace kinestat::msa {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+void tell(const SolveOptions& opt, const std::string& stage) {
+  if (opt.progress) opt.progress(stage);
+}
+
+// The caller's Cholesky options, telling its stage to opt.progress where they tell nobody.
+solver::LinearSolverOptions cholesky_options(const SolveOptions& opt) {
+  solver::LinearSolverOptions o = opt.cholesky;
+  if (!o.progress) o.progress = opt.progress;
+  return o;
+}
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Everything one posture needs: C, K, K_r (reduced), factorized in the workspace.
@@ -45,6 +56,7 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
                  std::unique_ptr<solver::SparseCholesky>& regularized) {
   Status st = ws.cholesky().Factorize(sys.Kr, &sol.factorization);
   if (st.ok()) {
+    tell(opt, "searching for free motions (inverse iteration on the factor)");
     auto soft = solver::lowest_modes(sys.Kr, ws.cholesky(), std::min<int>(3, sys.Kr.rows()), 6);
     if (!soft.ok()) return soft.status();
     sol.softest_mode_ratio = soft->ratios(0);
@@ -52,6 +64,7 @@ Status factorize(const Structure& s, const System& sys, Workspace& ws, const Sol
     st = Status::Singular("softest mode below the mechanism ratio");
   }
   if (st.code() != StatusCode::kSingular) return st;
+  tell(opt, "the stiffness matrix is singular: finding its free motions");
   sol.singularity = diagnose_singularity(s, sys.map, sys.Kr, sol.factorization, opt.mechanism_ratio, opt.cholesky);
   if (!sol.singularity.modes.empty()) sol.softest_mode_ratio = sol.singularity.modes.front().rayleigh_ratio;
   if (!opt.regularize) return Status::Singular(sol.singularity.message);
@@ -228,7 +241,7 @@ StatusOr<CartesianStiffness> node_stiffness(const Structure& s, const System& sy
 Workspace::Workspace(const solver::LinearSolverOptions& options) : cholesky_(solver::make_sparse_cholesky(options)) {}
 
 Solution solve(const Structure& s, const SolveOptions& options) {
-  Workspace ws(options.cholesky);
+  Workspace ws(cholesky_options(options));
   return solve(s, ws, options);
 }
 
@@ -240,6 +253,8 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   sol.structure = SolvedStructure{static_cast<int>(s.nodes().size()), static_cast<int>(s.beams().size()),
                                   static_cast<int>(s.joints().size()), static_cast<int>(s.load_cases().size())};
   const auto t0 = Clock::now();
+  tell(opt, fmt::format("assembling the stiffness matrix: {} nodes, {} beams, {} joints ({} dofs)", s.nodes().size(),
+                        s.beams().size(), s.joints().size(), s.num_dofs()));
   auto sys = build_system(s);
   sol.assembly_seconds = seconds_since(t0);
   if (!sys.ok()) {
@@ -276,6 +291,7 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
   }
   MatX Q;
   if (nc > 0) {
+    tell(opt, fmt::format("solving {} load case{} and checking equilibrium", nc, nc == 1 ? "" : "s"));
     if (Status st = chol.Solve(sys->map.C.transpose() * (F - sys->K * U0), &Q); !st.ok()) {
       sol.status = st;
       return sol;
@@ -290,6 +306,7 @@ Solution solve(const Structure& s, Workspace& ws, const SolveOptions& opt) {
     }
   }
   if (s.report_node()) {
+    tell(opt, "the report node's Cartesian stiffness");
     auto c = node_stiffness(s, *sys, chol, *s.report_node());
     if (!c.ok()) {
       sol.status = c.status();
@@ -327,7 +344,7 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
 
   // The linear solve: the first axial forces, the diagnosis of a singular K, the report node's
   // (elastic) Cartesian stiffness and the indices, all kept.
-  Workspace ws(opt.cholesky);
+  Workspace ws(cholesky_options(opt));
   sol = solve(s, ws, opt);
   if (!sol.status.ok()) return sol;
   auto sys = build_system(s);
@@ -360,6 +377,9 @@ Solution solve_second_order(const Structure& s, const SecondOrderOptions& so, co
     LoadCaseResult r;
     while (!converged && k < so.max_iterations) {
       ++k;
+      tell(opt, k == 1 ? fmt::format("load case '{}': second-order iteration 1", lc.name)
+                       : fmt::format("load case '{}': second-order iteration {} (relative change {:.2e})", lc.name, k,
+                                     change));
       const GeometricStiffness g = assemble_geometric_stiffness(s, N, so.torsion_term);
       const solver::SparseMatrix Ktr = sys->map.C.transpose() * (sys->K + g.global) * sys->map.C;
       if (Status st = chol.Factorize(Ktr, nullptr); !st.ok()) {

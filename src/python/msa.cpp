@@ -231,7 +231,9 @@ void bind_solution(py::module_& m) {
       .def_readwrite("mechanism_ratio", &SolveOptions::mechanism_ratio,
                      "a motion with u'Ku / u'Du below this is free (default 1e-13)")
       .def_readwrite("regularization", &SolveOptions::regularization)
-      .def_readwrite("max_dofs_for_global_indices", &SolveOptions::max_dofs_for_global_indices);
+      .def_readwrite("max_dofs_for_global_indices", &SolveOptions::max_dofs_for_global_indices)
+      .def_readwrite("progress", &SolveOptions::progress,
+                     "callable(stage: str) before each stage of the solve (the factorization's included), or None");
 
   py::class_<SecondOrderOptions>(m, "SecondOrderOptions")
       .def(py::init<>())

@@ -114,5 +114,55 @@ TEST(Cli, SolveWritesAlongMemberStationsOnRequest) {
   EXPECT_NE(r.err.find("--stations"), std::string::npos) << r.err;
 }
 
+// A large structure's solve tells its stages on stderr, in order, with the time since the start; a
+// small one, and --quiet, print none. The structure: a continuous beam of 8 400 nodes (50 400 dofs, the
+// threshold) on a support every 50 nodes, its file padded past 2 MB with a comment (the size from which
+// the reading is told).
+TEST(Cli, SolveOfALargeStructureTellsItsStages) {
+  const auto dir = std::filesystem::path(KINESTAT_BINARY_DIR) / "test_solve_progress";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "continuous_beam.yaml").string();
+  {
+    std::ofstream f(file);
+    f << "units: SI\n" << std::string(2100000, '#') << "\nnodes:\n";
+    constexpr int kNodes = 8400;
+    for (int i = 0; i < kNodes; ++i) f << "  - {id: n" << i << ", xyz: [" << 1e-3 * i << ", 0, 0]}\n";
+    f << "materials:\n  - {id: steel, E: 210e9, nu: 0.3}\nsections:\n  - {id: bar, type: rectangle, b: 0.02, h: "
+         "0.04}\nbeams:\n";
+    for (int i = 0; i + 1 < kNodes; ++i)
+      f << "  - {id: b" << i << ", nodes: [n" << i << ", n" << i + 1 << "], material: steel, section: bar}\n";
+    f << "supports:\n  - {node: n0, fixed: all}\n";
+    for (int i = 50; i < kNodes; i += 50) f << "  - {node: n" << i << ", fixed: [ux, uy, uz]}\n";
+    f << "load_cases:\n  - name: tip\n    loads:\n      - {node: n" << kNodes - 1
+      << ", force: [-1000, 0, -10]}\nreport: {node: n" << kNodes - 1 << "}\n";
+  }
+  const CliRun r = run_cli({"solve", file});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  std::size_t at = 0;
+  for (const std::string stage :
+       {"kinestat solve: reading", "assembling the stiffness matrix: 8400 nodes, 8399 beams, 0 joints (50400 dofs)",
+        "factorizing:", "searching for free motions", "solving 1 load case and checking equilibrium",
+        "the report node's Cartesian stiffness"}) {
+    const std::size_t found = r.err.find(stage, at);
+    ASSERT_NE(found, std::string::npos) << stage << " after " << at << " in\n" << r.err;
+    at = found;
+  }
+  EXPECT_NE(r.err.find(" s)\n"), std::string::npos) << r.err;
+  // The second-order iteration tells each of its solves of K + K_G (the axial force: 1 kN).
+  const CliRun second = run_cli({"solve", file, "--second-order"});
+  ASSERT_EQ(second.code, kExitOk) << second.err;
+  EXPECT_NE(second.err.find("load case 'tip': second-order iteration 1 ..."), std::string::npos) << second.err;
+  EXPECT_NE(second.err.find("load case 'tip': second-order iteration 2 (relative change"), std::string::npos)
+      << second.err;
+  const CliRun quiet = run_cli({"solve", file, "--quiet"});
+  ASSERT_EQ(quiet.code, kExitOk);
+  EXPECT_EQ(quiet.err, "");
+  const CliRun small = run_cli({"solve", kModels + "cantilever.yaml"});
+  ASSERT_EQ(small.code, kExitOk);
+  EXPECT_EQ(small.err.find("kinestat solve:"), std::string::npos) << small.err;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace kinestat::cli

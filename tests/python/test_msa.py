@@ -53,6 +53,19 @@ def test_cantilever_tip_deflection_PL3_over_3EI():
     assert sol.cases[0].equilibrium_error < 1e-12
 
 
+def test_solve_tells_its_stages_in_order():
+    # The stages kinestat solve prints for a large structure, told for any size to a callable.
+    s, _ = cantilever()
+    stages = []
+    options = ks.msa.SolveOptions()
+    options.progress = stages.append
+    ks.msa.solve(s, options=options)
+    assert [st.split(":")[0] for st in stages] == [
+        "assembling the stiffness matrix", "factorizing", "searching for free motions (inverse iteration on the factor)",
+        "solving 1 load case and checking equilibrium", "the report node's Cartesian stiffness"]
+    assert "2 nodes, 1 beams, 0 joints (12 dofs)" in stages[0]
+
+
 def test_arrays_shapes_and_units(source_dir):
     s = ks.io.read_structure_yaml(str(source_dir / "models/five_bar.yaml"))
     sol = ks.msa.solve(s)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -34,6 +35,10 @@ struct SolveOptions {
   double max_equilibrium_error = 1e-6;
   // Indices of the reduced global matrix need a dense eigen-decomposition: skipped above this size.
   int max_dofs_for_global_indices = 2000;
+  // Told, when set, what the solve is about to do: the assembly, the factorization (the Cholesky's
+  // own stage, where cholesky.progress is unset), the search for free motions, the load cases, the
+  // report node, each second-order iteration. For large models: the caller prints it on stderr.
+  std::function<void(const std::string& stage)> progress = nullptr;
 };
 
 // Second-order (P-Delta) analysis: how it went (Solution::second_order; docs/stability-and-modes.md).
