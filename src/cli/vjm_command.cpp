@@ -153,6 +153,21 @@ int run_vjm(const VjmArgs& a, Context& ctx) {
     StatusOr<vjm::PlatformState> state =
         displacement ? vjm::platform_equilibrium(*chains, *displacement, equilibrium_options)
                      : vjm::platform_equilibrium_under_wrench(*chains, *wrench, equilibrium_options);
+    // A load whose equilibrium is not found: how much of it is, so that the fix has a number.
+    if (!state.ok() && state.status().code() == StatusCode::kNotConverged) {
+      const vjm::LoadShare share = vjm::load_share_reached(*chains, displacement ? &*displacement : nullptr,
+                                                           wrench ? &*wrench : nullptr, equilibrium_options);
+      const char* option = displacement ? "--load" : "--wrench";
+      const char* units = displacement ? "mm and deg" : "N and N mm";
+      return bad(Status::NotConverged(
+          share.found > 0.0
+              ? fmt::format("{}. The equilibrium is found under {:.1f} % of this load and not under {:.1f} %: give a "
+                            "smaller {} (at most {:.3g} times this one), or check its units ({})",
+                            state.status().message(), 100 * share.found, 100 * share.failed, option, share.found, units)
+              : fmt::format("{}. It is not found under {:.1f} % of this load either: check the direction and the "
+                            "units ({}) of {}",
+                            state.status().message(), 100 * share.failed, units, option)));
+    }
     if (!state.ok()) return bad(state.status());
     const Vec6& t = state->displacement;
     const Vec6& F = state->wrench;

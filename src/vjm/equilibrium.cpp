@@ -321,4 +321,19 @@ StatusOr<PlatformState> platform_equilibrium_under_wrench(const std::vector<Chai
   return P;
 }
 
+LoadShare load_share_reached(const std::vector<Chain>& chains, const Vec6* displacement, const Vec6* wrench,
+                             const EquilibriumOptions& options, double resolution) {
+  const auto reached = [&](double share) {
+    return displacement ? platform_equilibrium(chains, share * *displacement, options).ok()
+                        : platform_equilibrium_under_wrench(chains, share * *wrench, options).ok();
+  };
+  LoadShare s;
+  if (!displacement == !wrench) return s;
+  while (s.failed - s.found > resolution) {
+    const double mid = 0.5 * (s.found + s.failed);
+    (reached(mid) ? s.found : s.failed) = mid;
+  }
+  return s;
+}
+
 }  // namespace kinestat::vjm

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -13,7 +14,9 @@
 #include "kinestat/cli/app.hpp"
 #include "kinestat/core/types.hpp"
 #include "kinestat/io/robot_yaml.hpp"
+#include "kinestat/io/vjm_yaml.hpp"
 #include "kinestat/mechanisms/robot_kernel.hpp"
+#include "kinestat/vjm/equilibrium.hpp"
 
 namespace kinestat::cli {
 namespace {
@@ -140,6 +143,34 @@ TEST(VjmCommand, WrenchOnVeryStiffSpringsConverges) {
   ASSERT_NE(at, std::string::npos) << r.out;
   const double dx_mm = std::stod(r.out.substr(at + 14));
   EXPECT_NEAR(dx_mm, 1000 / 3e9, 1e-4 * 1000 / 3e9) << r.out;
+}
+
+// A wrench whose equilibrium is not found (200 kN down on the 3-PUU at Q0) is exit 2 with the share of
+// it that is found, checked by the library's own solves: an equilibrium at that share of the load,
+// none at the next share printed, 1/128 apart.
+TEST(VjmCommand, AnUnreachedLoadNamesTheShareThatIsReached) {
+  const CliRun r = run_cli({"vjm", kPuu, "--wrench", "0,0,-2e5,0,0,0", "--quiet"});
+  ASSERT_EQ(r.code, kExitBadInput) << r.err;
+  const std::string key = "The equilibrium is found under ";
+  const std::size_t at = r.err.find(key);
+  ASSERT_NE(at, std::string::npos) << r.err;
+  double found = 0, failed = 0;
+  ASSERT_EQ(std::sscanf(r.err.c_str() + at + key.size(), "%lf %% of this load and not under %lf %%", &found, &failed),
+            2)
+      << r.err;
+  EXPECT_GT(found, 0.0);
+  EXPECT_NEAR(failed - found, 100.0 / 128, 0.051) << r.err;  // the printed shares are rounded to 0.1 %
+  EXPECT_NE(r.err.find("give a smaller --wrench"), std::string::npos) << r.err;
+  StatusOr<io::VjmModel> model = io::read_vjm_model_yaml(kPuu);
+  ASSERT_TRUE(model.ok()) << model.status().message();
+  StatusOr<std::vector<vjm::Chain>> chains = io::vjm_model_chains(*model, std::nullopt);
+  ASSERT_TRUE(chains.ok()) << chains.status().message();
+  const Vec6 wrench = (Vec6() << 0, 0, -2e5, 0, 0, 0).finished();
+  const vjm::LoadShare share = vjm::load_share_reached(*chains, nullptr, &wrench);
+  EXPECT_NEAR(100 * share.found, found, 0.051);
+  EXPECT_TRUE(vjm::platform_equilibrium_under_wrench(*chains, share.found * wrench).ok());
+  EXPECT_EQ(vjm::platform_equilibrium_under_wrench(*chains, share.failed * wrench).status().code(),
+            StatusCode::kNotConverged);
 }
 
 TEST(VjmCommand, BadInputExitsWith2) {

@@ -43,4 +43,18 @@ StatusOr<PlatformState> platform_equilibrium(const std::vector<Chain>& chains, c
 StatusOr<PlatformState> platform_equilibrium_under_wrench(const std::vector<Chain>& chains, const Vec6& wrench,
                                                           const EquilibriumOptions& options = {});
 
+// Where the equilibrium under a load is not found (kNotConverged): how much of that load it reaches,
+// by bisection on the load's share s in (0, 1), each share's equilibrium solved as the whole load's
+// is (platform_equilibrium of s times the displacement, or _under_wrench of s times the wrench;
+// exactly one of them given). `found`: the largest share with an equilibrium, 0 where none was found
+// down to `failed`; `failed`: the smallest share above it without one, within `resolution` of it.
+// The last load the solve reaches, not a buckling load: Newton may find equilibria past a buckling
+// load, or lose them before it, far along a large deflection.
+struct LoadShare {
+  double found = 0.0;
+  double failed = 1.0;
+};
+LoadShare load_share_reached(const std::vector<Chain>& chains, const Vec6* displacement, const Vec6* wrench,
+                             const EquilibriumOptions& options = {}, double resolution = 1.0 / 128);
+
 }  // namespace kinestat::vjm
