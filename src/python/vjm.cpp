@@ -209,6 +209,22 @@ void bind_equilibrium(py::module_& m) {
       },
       py::arg("chains"), py::arg("wrench"), py::arg("options") = EquilibriumOptions{},
       "Platform under an external wrench (N, N m about the tool point). Releases the GIL.");
+  m.def(
+      "load_share_reached",
+      [](const std::vector<Chain>& chains, const std::optional<Vec6>& displacement, const std::optional<Vec6>& wrench,
+         const EquilibriumOptions& o, double resolution) {
+        if (!displacement == !wrench)
+          check(Status::Invalid("load_share_reached: give displacement or wrench, not both"));
+        const LoadShare s = without_gil([&] {
+          return load_share_reached(chains, displacement ? &*displacement : nullptr, wrench ? &*wrench : nullptr, o,
+                                    resolution);
+        });
+        return py::make_tuple(s.found, s.failed);
+      },
+      py::arg("chains"), py::kw_only(), py::arg("displacement") = py::none(), py::arg("wrench") = py::none(),
+      py::arg("options") = EquilibriumOptions{}, py::arg("resolution") = 1.0 / 128,
+      "Where a load's equilibrium is not found: (found, failed), the largest share of the load with an equilibrium "
+      "(0: none) and the smallest above it without, within `resolution`, by bisection from rest. Releases the GIL.");
 }
 
 void bind_stiffness(py::module_& m) {

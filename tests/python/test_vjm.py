@@ -89,6 +89,19 @@ def test_loaded_mode_displacement_and_wrench_agree():
     np.testing.assert_allclose(K0.stiffness @ d, state.wrench, rtol=0.05, atol=1e-6 * np.abs(state.wrench).max())
 
 
+def test_load_share_reached_brackets_the_last_solvable_load():
+    # 200 kN down on the 3-PUU at Q0 has no equilibrium that the solve finds (kinestat vjm: exit 2).
+    chains = mech.orthoglide_chains(mech.OrthoglideStiffnessModel(), mech.OrthoglideArchitecture.PUU, [0.0, 0.0, 0.0])
+    w = np.array([0, 0, -2e5, 0, 0, 0])
+    found, failed = vjm.load_share_reached(chains, wrench=w)
+    assert 0 < found < failed < 1 and failed - found <= 1 / 128
+    assert vjm.platform_equilibrium_under_wrench(chains, found * w).report.converged
+    with pytest.raises(ks.NotConvergedError):
+        vjm.platform_equilibrium_under_wrench(chains, failed * w)
+    with pytest.raises(ks.InputError):
+        vjm.load_share_reached(chains)
+
+
 def test_model_file_matches_the_model_in_code(source_dir):
     model = ks.io.read_vjm_model_yaml(str(source_dir / "models/orthoglide_puu.yaml"))
     assert model.orthoglide is not None
