@@ -214,7 +214,7 @@ void bind_equilibrium(py::module_& m) {
       [](const std::vector<Chain>& chains, const std::optional<Vec6>& displacement, const std::optional<Vec6>& wrench,
          const EquilibriumOptions& o, double resolution) {
         if (!displacement == !wrench)
-          check(Status::Invalid("load_share_reached: give displacement or wrench, not both"));
+          check(Status::Invalid("load_share_reached: give exactly one of displacement= and wrench="));
         const LoadShare s = without_gil([&] {
           return load_share_reached(chains, displacement ? &*displacement : nullptr, wrench ? &*wrench : nullptr, o,
                                     resolution);

@@ -329,7 +329,8 @@ LoadShare load_share_reached(const std::vector<Chain>& chains, const Vec6* displ
   };
   LoadShare s;
   if (!displacement == !wrench) return s;
-  while (s.failed - s.found > resolution) {
+  const double step = resolution > 1e-9 ? resolution : 1e-9;  // a bisection that ends, NaN included
+  while (s.failed - s.found > step) {
     const double mid = 0.5 * (s.found + s.failed);
     (reached(mid) ? s.found : s.failed) = mid;
   }

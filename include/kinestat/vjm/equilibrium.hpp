@@ -47,7 +47,8 @@ StatusOr<PlatformState> platform_equilibrium_under_wrench(const std::vector<Chai
 // by bisection on the load's share s in (0, 1), each share's equilibrium solved as the whole load's
 // is (platform_equilibrium of s times the displacement, or _under_wrench of s times the wrench;
 // exactly one of them given). `found`: the largest share with an equilibrium, 0 where none was found
-// down to `failed`; `failed`: the smallest share above it without one, within `resolution` of it.
+// down to `failed`; `failed`: the smallest share above it without one, within `resolution` of it
+// (at least 1e-9).
 // The last load the solve reaches, not a buckling load: Newton may find equilibria past a buckling
 // load, or lose them before it, far along a large deflection.
 struct LoadShare {
