@@ -61,6 +61,8 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
   cmd->add_option("--vtk", args->vtk_dir, "write ParaView files (.vtu per mode + .pvd) into this folder");
   add_output_options(*cmd, args->out, "kinestat-buckling-results");
   cmd->callback([args, &ctx] {
+    const MsaProgress progress(ctx, "buckling", args->out.quiet);
+    progress.reading(args->file);
     auto s = io::read_structure_yaml(args->file);
     if (!s.ok()) {
       ctx.exit_code = report_failure(ctx, "buckling", s.status());
@@ -87,6 +89,7 @@ void register_buckling_command(CLI::App& app, Context& ctx) {
       }
       opt.load_case = *k;
     }
+    progress.set(*s, opt.solve);
     const msa::BucklingResult r = msa::buckling(*s, opt);
     if (!r.status.ok()) {
       ctx.exit_code = report_failure(ctx, "buckling", r.status);

@@ -87,8 +87,10 @@ void register_modes_command(CLI::App& app, Context& ctx) {
   add_output_options(*cmd, args->out, "kinestat-modes-results");
   cmd->callback([args, cmd, &ctx] {
     auto fail = [&](const Status& st) { ctx.exit_code = report_failure(ctx, "modes", st); };
+    const MsaProgress progress(ctx, "modes", args->out.quiet);
     std::vector<std::string> notes;
     io::Frame3ddAnalysis analysis;
+    progress.reading(args->file);
     const StatusOr<msa::Structure> s = read_structure_file(args->file, args->units, notes, analysis);
     if (!s.ok()) return fail(s.status());
     const auto& cases = s->load_cases();
@@ -159,6 +161,7 @@ void register_modes_command(CLI::App& app, Context& ctx) {
     opt.count = args->count;
     opt.lumped = args->lumped;
     if (prestress >= 0) opt.prestress = msa::ModalPrestress{prestress, second_order, {}};
+    progress.set(*s, opt.solve);
     const msa::ModalResult r = msa::modal_analysis(*s, opt);
     if (!r.status.ok()) return fail(r.status);
     std::vector<io::VtkModeShape> modes;

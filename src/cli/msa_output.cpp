@@ -1,7 +1,9 @@
 #include "cli/msa_output.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <ostream>
+#include <utility>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -11,6 +13,25 @@
 #include "kinestat/io/vtk_output.hpp"
 
 namespace kinestat::cli {
+
+MsaProgress::MsaProgress(Context& ctx, std::string command, bool quiet)
+    : ctx_(ctx), command_(std::move(command)), quiet_(quiet) {}
+
+void MsaProgress::reading(const std::string& file) const {
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, error);
+  if (!quiet_ && !error && bytes >= kProgressBytes)
+    ctx_.err << fmt::format("kinestat {}: reading {} ({:.0f} MB) ...\n", command_, file, bytes * 1e-6) << std::flush;
+}
+
+void MsaProgress::set(const msa::Structure& s, msa::SolveOptions& opt) const {
+  if (quiet_ || s.num_dofs() < kProgressDofs) return;
+  opt.progress = [&ctx = ctx_, command = command_, start = start_](const std::string& stage) {
+    const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
+    ctx.err << fmt::format("kinestat {}: {} ... ({:.1f} s)\n", command, stage, t.count()) << std::flush;
+  };
+  opt.cholesky.progress = opt.progress;
+}
 
 StatusOr<msa::Structure> read_structure_file(const std::string& file, const std::string& units,
                                              std::vector<std::string>& notes, io::Frame3ddAnalysis& analysis) {

@@ -4,6 +4,8 @@
 // and the structure file that `solve` and `modes` read.
 #pragma once
 
+#include <chrono>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -24,6 +26,27 @@ StatusOr<msa::Structure> read_structure_file(const std::string& file, const std:
                                              std::vector<std::string>& notes, io::Frame3ddAnalysis& analysis);
 // Adds the `file` argument and --units that read_structure_file takes.
 void add_structure_file_options(CLI::App& cmd, std::string& file, std::string& units);
+
+// The stages of an MSA command (solve, buckling, modes) on stderr for a large structure, each with
+// the seconds since the command started: the reading of a file of kProgressBytes or more (about a
+// second of parsing), and from kProgressDofs dofs (about a second of solving) the library's stages
+// (msa::SolveOptions::progress: assembly, factorization, ..., the eigensolver). Nothing with --quiet.
+class MsaProgress {
+ public:
+  static constexpr int kProgressDofs = 50000;
+  static constexpr std::uintmax_t kProgressBytes = 2000000;
+  MsaProgress(Context& ctx, std::string command, bool quiet);
+  // "kinestat COMMAND: reading FILE (24 MB) ..." for a large file.
+  void reading(const std::string& file) const;
+  // Sets `opt`'s progress (and its Cholesky's) to print the stages, for a large `s`.
+  void set(const msa::Structure& s, msa::SolveOptions& opt) const;
+
+ private:
+  Context& ctx_;
+  std::string command_;
+  bool quiet_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
 
 struct MsaOutputOptions {
   OutputOptions out;     // --json, --quiet

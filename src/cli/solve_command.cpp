@@ -2,9 +2,7 @@
 //                     [--json FILE|-] [--stations N [--max-stations M]] [--quiet] [--regularize]
 #include <algorithm>
 #include <cctype>
-#include <chrono>
 #include <cmath>
-#include <cstdint>
 #include <filesystem>
 #include <ostream>
 
@@ -17,11 +15,6 @@
 #include "kinestat/io/structure_yaml.hpp"
 
 namespace kinestat::cli {
-
-// From this many dofs (about a second of solving on a laptop) `solve` prints its stages on stderr,
-// and from this file size (about a second of parsing) that it reads the file.
-constexpr int kProgressDofs = 50000;
-constexpr std::uintmax_t kProgressBytes = 2000000;
 
 void register_solve_command(CLI::App& app, Context& ctx) {
   struct Args {
@@ -59,14 +52,12 @@ void register_solve_command(CLI::App& app, Context& ctx) {
                   "of memory, 0.42 GB of JSON)")
       ->check(positive_number());
   cmd->callback([args, cmd, &ctx] {
-    const auto start = std::chrono::steady_clock::now();
+    // A large structure's solve takes seconds to minutes (540 000 dofs, 24 MB of YAML: 13 s of
+    // reading and 100 s of solving on 2 cores, mostly the factorization): its stages on stderr.
+    const MsaProgress progress(ctx, "solve", args->out.out.quiet);
     std::vector<std::string> notes;
     io::Frame3ddAnalysis analysis;
-    // A large file's parse takes seconds (24 MB of YAML, 540 000 dofs: 13 s).
-    std::error_code size_error;
-    if (const auto bytes = std::filesystem::file_size(args->file, size_error);
-        !args->out.out.quiet && !size_error && bytes >= kProgressBytes)
-      ctx.err << fmt::format("kinestat solve: reading {} ({:.0f} MB) ...\n", args->file, bytes * 1e-6) << std::flush;
+    progress.reading(args->file);
     StatusOr<msa::Structure> s = read_structure_file(args->file, args->units, notes, analysis);
     if (s.ok() && analysis.modes > 0)
       notes.push_back(
@@ -125,13 +116,7 @@ void register_solve_command(CLI::App& app, Context& ctx) {
     }
     msa::SolveOptions opt;
     opt.regularize = args->regularize;
-    // A large structure's solve takes seconds to minutes (540 000 dofs: 100 s on 2 cores, mostly the
-    // factorization): its stages on stderr, with the time since the command started (reading included).
-    if (!args->out.out.quiet && s->num_dofs() >= kProgressDofs)
-      opt.progress = [&ctx, start](const std::string& stage) {
-        const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
-        ctx.err << fmt::format("kinestat solve: {} ... ({:.1f} s)\n", stage, t.count()) << std::flush;
-      };
+    progress.set(*s, opt);
     const msa::Solution sol = args->second_order ? msa::solve_second_order(*s, args->second, opt) : msa::solve(*s, opt);
     args->out.basename = std::filesystem::path(args->file).stem().string();
     ctx.exit_code = finish_msa_run("solve", *s, sol, args->out, ctx);

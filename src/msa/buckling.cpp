@@ -11,6 +11,7 @@
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
+#include "msa/solve_progress.hpp"
 
 namespace kinestat::msa {
 
@@ -97,11 +98,13 @@ BucklingResult buckling(const Structure& s, const BucklingOptions& opt) {
 
   // Solved as -K_G q = mu K q, mu = 1/lambda: the smallest positive lambdas are the largest mu
   // (solver/generalized_eigen.hpp says why this form; Euler's column: mu_2/mu_1 = 1/4, well apart).
-  auto chol = solver::make_sparse_cholesky(opt.solve.cholesky);
+  auto chol = solver::make_sparse_cholesky(cholesky_options(opt.solve));
   if (Status st = chol->Factorize(Kr, nullptr); !st.ok()) {
     res.status = st;
     return res;
   }
+  tell(opt.solve, fmt::format("the {} lowest critical load factor{} (Krylov eigensolver on the factor of K, {} dofs)",
+                              opt.count, opt.count == 1 ? "" : "s", Kr.rows()));
   const solver::SparseMatrix minus_KGr = -KGr;
   auto eig = solver::largest_generalized_eigenpairs(minus_KGr, Kr, *chol, opt.count);
   if (!eig.ok()) {

@@ -12,6 +12,7 @@
 #include "kinestat/solver/linear_solver_factory.hpp"
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
+#include "msa/solve_progress.hpp"
 
 namespace kinestat::msa {
 
@@ -98,7 +99,7 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
   for (int d = 0; d < 3; ++d) res.total_mass(d) = R.col(d).dot(MR.col(d));
 
   // M q = mu K q, mu = 1/omega^2: the lowest frequencies are the largest mu (solver/generalized_eigen.hpp).
-  auto chol = solver::make_sparse_cholesky(opt.solve.cholesky);
+  auto chol = solver::make_sparse_cholesky(cholesky_options(opt.solve));
   if (Status st = chol->Factorize(Kr, nullptr); !st.ok()) {
     // The elastic K passed the static solve's checks, so a failed K + K_G is the prestress's: by
     // Sylvester's inertia along K + lambda K_G it is positive definite exactly below the case's first
@@ -134,6 +135,8 @@ ModalResult modal_analysis(const Structure& s, const ModalOptions& opt) {
                           mass_ratio, kNegligibleMassRatio)));
     return res;
   }
+  tell(opt.solve, fmt::format("the {} lowest natural frequenc{} (Krylov eigensolver on the factor of K, {} dofs)",
+                              opt.count, opt.count == 1 ? "y" : "ies", Kr.rows()));
   auto eig = solver::largest_generalized_eigenpairs(Mr, Kr, *chol, opt.count);
   if (!eig.ok()) {
     res.status = eig.status();

@@ -13,22 +13,13 @@
 #include "msa/assembly.hpp"
 #include "msa/dof_map.hpp"
 #include "msa/singularity_diagnosis.hpp"
+#include "msa/solve_progress.hpp"
 
 namespace kinestat::msa {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-void tell(const SolveOptions& opt, const std::string& stage) {
-  if (opt.progress) opt.progress(stage);
-}
-
-// The caller's Cholesky options, telling its stage to opt.progress where they tell nobody.
-solver::LinearSolverOptions cholesky_options(const SolveOptions& opt) {
-  solver::LinearSolverOptions o = opt.cholesky;
-  if (!o.progress) o.progress = opt.progress;
-  return o;
-}
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Everything one posture needs: C, K, K_r (reduced), factorized in the workspace.
