@@ -30,7 +30,6 @@ void MsaProgress::set(const msa::Structure& s, msa::SolveOptions& opt) const {
     const std::chrono::duration<double> t = std::chrono::steady_clock::now() - start;
     ctx.err << fmt::format("kinestat {}: {} ... ({:.1f} s)\n", command, stage, t.count()) << std::flush;
   };
-  opt.cholesky.progress = opt.progress;
 }
 
 StatusOr<msa::Structure> read_structure_file(const std::string& file, const std::string& units,

@@ -38,7 +38,7 @@ class MsaProgress {
   MsaProgress(Context& ctx, std::string command, bool quiet);
   // "kinestat COMMAND: reading FILE (24 MB) ..." for a large file.
   void reading(const std::string& file) const;
-  // Sets `opt`'s progress (and its Cholesky's) to print the stages, for a large `s`.
+  // Sets `opt`'s progress to print the stages, for a large `s` (msa forwards the Cholesky's to it).
   void set(const msa::Structure& s, msa::SolveOptions& opt) const;
 
  private:
